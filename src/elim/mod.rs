@@ -1,0 +1,446 @@
+//! Elimination: Sylvester matrices, fraction-free (Bareiss) determinants,
+//! and resultants by three independent routes — the Sylvester determinant,
+//! the subresultant PRS, and (over Z) a multi-modular algorithm.
+//!
+//! Key idea: everything generic runs over any [`Ring`] with exact division,
+//! so the same code computes `Res_x(f, g)` for `f, g ∈ Z[x]`, `Q[x]` and
+//! `Z[y, z, …][x]`.  The subresultant PRS (Brown–Collins, as in Cohen,
+//! Algorithm 3.3.7) divides each pseudo-remainder by a known factor, which
+//! keeps coefficients at the size of the subresultants instead of growing
+//! exponentially as naive Euclid over Q would.
+
+pub mod groebner;
+pub mod quotient;
+
+use crate::number::Q;
+use crate::number::modular::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};
+use crate::poly::mpoly::{MPoly, NVARS, QMPoly, ZMPoly};
+use crate::poly::zpoly::{rem_mod_in_place, reduce_mod};
+use crate::poly::{Ring, UPoly, ZPoly};
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+
+/// The Sylvester matrix of `f` (degree m) and `g` (degree n): `n` shifted
+/// rows of the coefficients of `f` followed by `m` rows of `g`, highest
+/// powers first.  Its determinant is `Res(f, g)`.
+pub fn sylvester_matrix<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> Vec<Vec<R>> {
+    let m = f.degree().unwrap_or(0);
+    let n = g.degree().unwrap_or(0);
+    let size = m + n;
+    let mut rows = Vec::with_capacity(size);
+    for (p, count, deg) in [(f, n, m), (g, m, n)] {
+        for i in 0..count {
+            let mut row = vec![R::rzero(); size];
+            for k in 0..=deg {
+                row[i + k] = p.coeff(deg - k);
+            }
+            rows.push(row);
+        }
+    }
+    rows
+}
+
+/// Determinant by Bareiss' fraction-free elimination (exact divisions by the
+/// previous pivot only), with row pivoting.  `O(n³)` ring operations.
+///
+/// ```
+/// use quadsect::elim::bareiss_determinant;
+/// use num_bigint::BigInt;
+/// let m = vec![vec![BigInt::from(2), BigInt::from(1)], vec![BigInt::from(7), BigInt::from(4)]];
+/// assert_eq!(bareiss_determinant(m), BigInt::from(1));
+/// ```
+pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
+    let n = m.len();
+    if n == 0 {
+        return R::rone();
+    }
+    let mut sign = false;
+    let mut prev = R::rone();
+    for k in 0..n - 1 {
+        if m[k][k].ris_zero() {
+            match (k + 1..n).find(|&i| !m[i][k].ris_zero()) {
+                Some(p) => {
+                    m.swap(k, p);
+                    sign = !sign;
+                }
+                None => return R::rzero(),
+            }
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let t = m[i][j].rmul(&m[k][k]).rsub(&m[i][k].rmul(&m[k][j]));
+                m[i][j] = t
+                    .div_exact(&prev)
+                    .expect("Bareiss division is exact in an integral domain");
+            }
+            m[i][k] = R::rzero();
+        }
+        prev = m[k][k].clone();
+    }
+    let d = m[n - 1][n - 1].clone();
+    if sign { d.rneg() } else { d }
+}
+
+/// `Res(f, g)` as the Bareiss determinant of the Sylvester matrix.
+/// The resultant with a zero polynomial is 0.
+pub fn resultant_sylvester<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
+    if f.is_zero() || g.is_zero() {
+        return R::rzero();
+    }
+    bareiss_determinant(sylvester_matrix(f, g))
+}
+
+/// `Res(f, g)` by the subresultant PRS (Cohen, Algorithm 3.3.7, without the
+/// content step so that it runs over any ring with exact division).
+///
+/// ```
+/// use quadsect::elim::resultant_subresultant;
+/// use quadsect::poly::ZPoly;
+/// use num_bigint::BigInt;
+/// // Res(x^2 - 1, x - 2) = f(2) = 3
+/// let f = ZPoly::from_i64s(&[-1, 0, 1]);
+/// let g = ZPoly::from_i64s(&[-2, 1]);
+/// assert_eq!(resultant_subresultant(&f, &g), BigInt::from(3));
+/// ```
+pub fn resultant_subresultant<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
+    if f.is_zero() || g.is_zero() {
+        return R::rzero();
+    }
+    let (mut a, mut b) = (f.clone(), g.clone());
+    let mut neg = false;
+    if a.degree() < b.degree() {
+        std::mem::swap(&mut a, &mut b);
+        let (da, db) = (a.degree().unwrap_or(0), b.degree().unwrap_or(0));
+        if da % 2 == 1 && db % 2 == 1 {
+            neg = true;
+        }
+    }
+    let signed = |x: R, neg: bool| if neg { x.rneg() } else { x };
+    if b.degree() == Some(0) {
+        return signed(b.lc().rpow(a.degree().unwrap_or(0) as u32), neg);
+    }
+    let mut gg = R::rone();
+    let mut h = R::rone();
+    loop {
+        let da = a.degree().unwrap_or(0);
+        let db = b.degree().unwrap_or(0);
+        let delta = da - db;
+        if da % 2 == 1 && db % 2 == 1 {
+            neg = !neg;
+        }
+        let r = a.pseudo_rem(&b);
+        a = b;
+        if r.is_zero() {
+            return R::rzero();
+        }
+        let divisor = gg.rmul(&h.rpow(delta as u32));
+        b = r
+            .div_exact_scalar(&divisor)
+            .expect("subresultant division is exact");
+        gg = a.lc();
+        h = match delta {
+            0 => h,
+            1 => gg.clone(),
+            _ => gg
+                .rpow(delta as u32)
+                .div_exact(&h.rpow(delta as u32 - 1))
+                .expect("subresultant h update is exact"),
+        };
+        if b.degree() == Some(0) {
+            let d_a = a.degree().unwrap_or(0) as u32;
+            let lb = b.lc();
+            let res = if d_a == 0 {
+                R::rone()
+            } else {
+                lb.rpow(d_a)
+                    .div_exact(&h.rpow(d_a - 1))
+                    .expect("final subresultant division is exact")
+            };
+            return signed(res, neg);
+        }
+    }
+}
+
+/// `Res(f, g)` over Z by the multi-modular method: Hadamard's bound
+/// `|Res| <= ‖f‖₂^n ‖g‖₂^m` fixes the number of 62-bit primes in advance;
+/// each modular resultant is computed by Euclid's algorithm and the result
+/// is reconstructed by the CRT.  Deterministic and exact.
+pub fn resultant_modular(f: &ZPoly, g: &ZPoly) -> BigInt {
+    let (Some(m), Some(n)) = (f.degree(), g.degree()) else {
+        return BigInt::zero();
+    };
+    if m == 0 {
+        return num_traits::pow(f.lc(), n);
+    }
+    if n == 0 {
+        return num_traits::pow(g.lc(), m);
+    }
+    let bound = (n as u64) * log2_norm2_ceil(f.coeffs()) + (m as u64) * log2_norm2_ceil(g.coeffs());
+    let fd: Vec<Digits> = f.coeffs().iter().map(Digits::new).collect();
+    let gd: Vec<Digits> = g.coeffs().iter().map(Digits::new).collect();
+    let mut crt = Crt::new();
+    let mut i = 0;
+    while crt.modulus_bits() <= bound + 1 {
+        let md = Modulus::new(nth_prime(i));
+        i += 1;
+        let a: Vec<u64> = fd.iter().map(|d| d.reduce(&md)).collect();
+        let b: Vec<u64> = gd.iter().map(|d| d.reduce(&md)).collect();
+        if a[m] == 0 || b[n] == 0 {
+            continue; // the degree would drop modulo this prime
+        }
+        crt.push(&md, resultant_mod_p(a, b, &md));
+    }
+    crt.symmetric()
+}
+
+/// Resultant modulo a prime of two polynomials with non-zero leading
+/// coefficients (Montgomery form, ascending), by Euclid:
+/// `Res(a, b) = (-1)^(deg a·deg b) lc(b)^(deg a - deg r) Res(b, r)`.
+pub fn resultant_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, m: &Modulus) -> u64 {
+    let mut res = m.one;
+    loop {
+        let da = a.len() - 1;
+        let db = b.len() - 1;
+        if db == 0 {
+            return m.mul(res, m.pow(b[0], da as u64));
+        }
+        let lb = b[db];
+        rem_mod_in_place(&mut a, &b, m);
+        if a.is_empty() {
+            return 0;
+        }
+        let dr = a.len() - 1;
+        res = m.mul(res, m.pow(lb, (da - dr) as u64));
+        if da % 2 == 1 && db % 2 == 1 {
+            res = m.neg(res);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+}
+
+/// The resultant of two univariate integer polynomials, by the fastest
+/// exact route (multi-modular).
+pub fn resultant_z(f: &ZPoly, g: &ZPoly) -> BigInt {
+    resultant_modular(f, g)
+}
+
+/// `Res_v(f, g)` of multivariate rational polynomials with respect to the
+/// variable `v`; the result does not contain `v`.
+///
+/// Rational coefficients are cleared first (`Res(c·F, d·G) = cⁿ dᵐ Res(F,
+/// G)`); univariate inputs use the multi-modular algorithm, bivariate ones
+/// evaluation/interpolation modulo primes, and others the subresultant PRS
+/// over Z[other variables].
+///
+/// ```
+/// use quadsect::elim::resultant_mpoly;
+/// use quadsect::poly::parse_poly;
+/// use quadsect::poly::mpoly::X;
+/// let f = parse_poly("x^2 + y^2 - 1").unwrap();
+/// let g = parse_poly("x - y").unwrap();
+/// assert_eq!(resultant_mpoly(&f, &g, X).to_string_canonical(), "2*y^2 - 1");
+/// ```
+pub fn resultant_mpoly(f: &QMPoly, g: &QMPoly, v: usize) -> QMPoly {
+    if f.is_zero() || g.is_zero() {
+        return MPoly::zero();
+    }
+    let m = f.degree_in(v).unwrap_or(0);
+    let n = g.degree_in(v).unwrap_or(0);
+    let (fz, cf) = f.to_primitive_z();
+    let (gz, cg) = g.to_primitive_z();
+    let r = resultant_zmpoly(&fz, &gz, v);
+    let k = num_traits::pow(cf, n as usize) * num_traits::pow(cg, m as usize);
+    r.to_q().scale(&k)
+}
+
+/// `Res_v(f, g)` for integer multivariate polynomials.
+pub fn resultant_zmpoly(f: &ZMPoly, g: &ZMPoly, v: usize) -> ZMPoly {
+    if f.is_zero() || g.is_zero() {
+        return MPoly::zero();
+    }
+    let mut others: Vec<usize> = f.vars();
+    others.extend(g.vars());
+    others.sort();
+    others.dedup();
+    others.retain(|&w| w != v);
+    match others.len() {
+        0 => {
+            let fu = f.to_univariate(v).unwrap_or_else(ZPoly::zero);
+            let gu = g.to_univariate(v).unwrap_or_else(ZPoly::zero);
+            MPoly::constant(resultant_modular(&fu, &gu))
+        }
+        1 => resultant_bivariate_modular(f, g, v, others[0]),
+        _ => {
+            let fu = f.to_upoly(v);
+            let gu = g.to_upoly(v);
+            resultant_subresultant(&fu, &gu)
+        }
+    }
+}
+
+/// `Res_v(f, g)` for `f, g ∈ Z[v, w]` by evaluation at `w = 0, 1, 2, …`
+/// and Newton interpolation modulo primes, then the CRT.  The bound on the
+/// coefficients is `‖f‖₁ⁿ ‖g‖₁ᵐ` (row sums of the Sylvester matrix), and
+/// the degree in `w` is at most `n·deg_w f + m·deg_w g`.
+pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -> ZMPoly {
+    let m = f.degree_in(v).unwrap_or(0) as usize;
+    let n = g.degree_in(v).unwrap_or(0) as usize;
+    if m == 0 && n == 0 {
+        return MPoly::constant(BigInt::one());
+    }
+    let dw = n * f.degree_in(w).unwrap_or(0) as usize + m * g.degree_in(w).unwrap_or(0) as usize;
+    let l1 = |p: &ZMPoly| -> u64 {
+        let s: BigInt = p.terms().iter().map(|(_, c)| c.abs()).sum();
+        s.bits()
+    };
+    let bound = (n as u64) * l1(f) + (m as u64) * l1(g);
+    // coefficient grids: fc[i][j] = coefficient of v^i w^j
+    let grid = |p: &ZMPoly, dv: usize| -> Vec<Vec<(usize, Digits)>> {
+        let mut rows: Vec<Vec<(usize, Digits)>> = vec![Vec::new(); dv + 1];
+        for (e, c) in p.terms() {
+            rows[e[v] as usize].push((e[w] as usize, Digits::new(c)));
+        }
+        rows
+    };
+    let fg = grid(f, m);
+    let gg = grid(g, n);
+    let mut crts: Vec<Crt> = vec![Crt::new(); dw + 1];
+    let mut pi = 0;
+    loop {
+        if crts[0].modulus_bits() > bound + 1 {
+            break;
+        }
+        let md = Modulus::new(nth_prime(pi));
+        pi += 1;
+        let red = |rows: &Vec<Vec<(usize, Digits)>>| -> Vec<Vec<u64>> {
+            rows.iter()
+                .map(|r| {
+                    let mut c = vec![0u64; r.iter().map(|(j, _)| j + 1).max().unwrap_or(0)];
+                    for (j, d) in r {
+                        c[*j] = d.reduce(&md);
+                    }
+                    c
+                })
+                .collect()
+        };
+        let fr = red(&fg);
+        let gr = red(&gg);
+        if fr[m].iter().all(|&c| c == 0) || gr[n].iter().all(|&c| c == 0) {
+            continue;
+        }
+        let eval = |c: &Vec<u64>, x: u64| -> u64 {
+            let mut acc = 0;
+            for &ci in c.iter().rev() {
+                acc = md.add(md.mul(acc, x), ci);
+            }
+            acc
+        };
+        let mut xs = Vec::with_capacity(dw + 1);
+        let mut ys = Vec::with_capacity(dw + 1);
+        let mut k = 0u64;
+        while xs.len() <= dw {
+            let x = md.to_mont(k);
+            k += 1;
+            let a: Vec<u64> = fr.iter().map(|c| eval(c, x)).collect();
+            let b: Vec<u64> = gr.iter().map(|c| eval(c, x)).collect();
+            if a[m] == 0 || b[n] == 0 {
+                continue;
+            }
+            let r = if m == 0 {
+                md.pow(a[0], n as u64)
+            } else if n == 0 {
+                md.pow(b[0], m as u64)
+            } else {
+                resultant_mod_p(a, b, &md)
+            };
+            xs.push(x);
+            ys.push(r);
+        }
+        let coeffs = interpolate_mod(&xs, &ys, &md);
+        for (i, c) in coeffs.iter().enumerate() {
+            crts[i].push(&md, *c);
+        }
+    }
+    MPoly::from_terms(crts.iter().enumerate().map(|(i, c)| {
+        let mut e = [0u32; NVARS];
+        e[w] = i as u32;
+        (e, c.symmetric())
+    }))
+}
+
+/// Newton interpolation modulo a prime: the coefficients (ascending,
+/// Montgomery form) of the polynomial of degree `< xs.len()` through the
+/// points.
+fn interpolate_mod(xs: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> {
+    let n = xs.len();
+    // divided differences
+    let mut dd = ys.to_vec();
+    for j in 1..n {
+        for i in (j..n).rev() {
+            let num = m.sub(dd[i], dd[i - 1]);
+            let den = m.sub(xs[i], xs[i - j]);
+            dd[i] = m.mul(num, m.inv(den).expect("distinct points"));
+        }
+    }
+    // expand Newton form from the top
+    let mut c = vec![0u64; n];
+    for i in (0..n).rev() {
+        // c := c·(x - xs[i]) + dd[i]
+        for k in (1..n).rev() {
+            c[k] = m.sub(c[k - 1], m.mul(c[k], xs[i]));
+        }
+        c[0] = m.sub(dd[i], m.mul(c[0], xs[i]));
+        // (the loop above computed c·x - c·xs[i] with the old c shifted)
+    }
+    c
+}
+
+/// Univariate resultant of rational polynomials given as multivariate
+/// constants (convenience for the CLI): returns the exact rational value.
+pub fn resultant_q_univariate(f: &UPoly<Q>, g: &UPoly<Q>) -> Q {
+    let v = 0;
+    let fm = MPoly::from_univariate(f, v);
+    let gm = MPoly::from_univariate(g, v);
+    resultant_mpoly(&fm, &gm, v).constant_term()
+}
+
+/// Reduction helper re-exported for the modular algorithms of other layers.
+pub fn reduce_zpoly_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
+    reduce_mod(p, m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::poly::parse_poly;
+    use crate::poly::mpoly::{X, Y};
+
+    #[test]
+    fn three_routes_agree_on_small_cases() {
+        let f = ZPoly::from_i64s(&[3, -2, 0, 5, 7]);
+        let g = ZPoly::from_i64s(&[1, 0, 3, -1]);
+        let a = resultant_sylvester(&f, &g);
+        let b = resultant_subresultant(&f, &g);
+        let c = resultant_modular(&f, &g);
+        assert_eq!(a, b);
+        assert_eq!(a, c);
+        // antisymmetry: Res(g, f) = (-1)^(4·3) Res(f, g)
+        assert_eq!(resultant_modular(&g, &f), c);
+        let h = ZPoly::from_i64s(&[1, 1]);
+        assert_eq!(resultant_subresultant(&(&f * &h), &(&g * &h)), BigInt::zero());
+        assert_eq!(resultant_modular(&(&f * &h), &(&g * &h)), BigInt::zero());
+    }
+
+    #[test]
+    fn bivariate_matches_generic() {
+        let f = parse_poly("x^3*y - 2*x*y^2 + 3*x - y^3 + 7").unwrap();
+        let g = parse_poly("2*x^2*y^2 - x + 5*y - 1").unwrap();
+        let (fz, _) = f.to_primitive_z();
+        let (gz, _) = g.to_primitive_z();
+        let a = resultant_bivariate_modular(&fz, &gz, X, Y);
+        let b = resultant_subresultant(&fz.to_upoly(X), &gz.to_upoly(X));
+        let c = resultant_sylvester(&fz.to_upoly(X), &gz.to_upoly(X));
+        assert_eq!(a, b);
+        assert_eq!(a, c);
+    }
+}

@@ -1,0 +1,141 @@
+//! The `quadsect` command line: argument parsing and dispatch only.
+
+use clap::{Parser, Subcommand};
+use quadsect::error::Error;
+use std::io::{IsTerminal, Write};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "quadsect",
+    version,
+    about = "Exact decisions on how two surfaces meet: ellipsoid vs algebraic surface, and natural quadrics",
+    long_about = None
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Reproduce the papers' examples side by side with what they printed.
+    Examples {
+        /// Machine-readable output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Real roots of a univariate polynomial: counts and isolating intervals.
+    Roots {
+        /// The polynomial, e.g. "x^3 - 2x".
+        expr: String,
+        /// JSON output (SPEC §5).
+        #[arg(long)]
+        json: bool,
+    },
+    /// The resultant of two polynomials with respect to a variable.
+    Resultant {
+        /// First polynomial.
+        f: String,
+        /// Second polynomial.
+        g: String,
+        /// Variable to eliminate (x, y, z or u).
+        #[arg(long)]
+        var: String,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Ellipsoid vs algebraic surface: intersect, touch or separated (exact, with certificate).
+    Tangent {
+        /// The ellipsoid E, e.g. "x^2+y^2+z^2-25".
+        #[arg(long)]
+        ellipsoid: String,
+        /// The surface S, e.g. "(x-9)^2/9+y^2/4+z^2/16-1".
+        #[arg(long)]
+        surface: String,
+        /// JSON output (SPEC §3).
+        #[arg(long)]
+        json: bool,
+    },
+    /// JSON lines in (file or - for stdin), one JSON answer line out per input line.
+    Batch {
+        /// Input file; standard input when absent or "-".
+        file: Option<String>,
+    },
+}
+
+fn emit(json: bool, v: serde_json::Value, human: String) {
+    let mut out = std::io::stdout().lock();
+    let _ = if json {
+        writeln!(out, "{v}")
+    } else {
+        write!(out, "{human}")
+    };
+}
+
+fn run(cli: Cli) -> Result<(), Error> {
+    match cli.command {
+        Command::Examples { json } => {
+            let r = quadsect::examples::run_all();
+            emit(json, quadsect::examples::to_json(&r), quadsect::examples::to_human(&r));
+        }
+        Command::Roots { expr, json } => {
+            let r = quadsect::ops::roots(&expr)?;
+            emit(json, quadsect::report::roots_json(&r), quadsect::report::roots_human(&r));
+        }
+        Command::Resultant { f, g, var, json } => {
+            let r = quadsect::ops::resultant(&f, &g, &var)?;
+            emit(
+                json,
+                quadsect::report::resultant_json(&r),
+                quadsect::report::resultant_human(&r),
+            );
+        }
+        Command::Tangent {
+            ellipsoid,
+            surface,
+            json,
+        } => {
+            let r = quadsect::tangent::decide_str(&ellipsoid, &surface)?;
+            emit(
+                json,
+                quadsect::report::tangent_json(&r),
+                quadsect::report::tangent_human(&r),
+            );
+        }
+        Command::Batch { file } => {
+            let progress = std::io::stderr().is_terminal();
+            let out = std::io::BufWriter::new(std::io::stdout().lock());
+            let res = match file.as_deref() {
+                None | Some("-") => {
+                    quadsect::batch::run_batch(std::io::stdin().lock(), out, progress)
+                }
+                Some(path) => {
+                    let f = std::fs::File::open(path).map_err(|e| {
+                        Error::input("io", format!("cannot open batch file {path}: {e}"))
+                    })?;
+                    quadsect::batch::run_batch(std::io::BufReader::new(f), out, progress)
+                }
+            };
+            res.map_err(|e| Error::input("io", format!("batch I/O error: {e}")))?;
+        }
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    // panics are internal failures: report them in one line, exit status 1
+    std::panic::set_hook(Box::new(|info| {
+        eprintln!("internal error: {info}");
+    }));
+    let cli = Cli::parse();
+    match std::panic::catch_unwind(|| run(cli)) {
+        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(Err(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code() as u8)
+        }
+        Err(_) => ExitCode::from(1),
+    }
+}

@@ -1,0 +1,231 @@
+//! Exact scalars: parsing of exact numbers, rational helpers, the quadratic
+//! field elements `a + b√d` ([`QSqrt`]), word-size modular arithmetic for the
+//! multi-modular algorithms, and decimal approximations for printing.
+//!
+//! Key idea: every number that enters quadsect is an exact rational.  A
+//! decimal such as `1.77777777777` is `177777777777/10^11`, never a float.
+//! Floats appear only in printed approximations, and those are computed from
+//! the exact value by integer arithmetic ([`approx_decimal`]).
+
+pub mod modular;
+mod parse;
+pub mod qsqrt;
+
+pub use parse::{NumberError, parse_rational, scan_number};
+pub use qsqrt::QSqrt;
+
+use num_bigint::{BigInt, Sign};
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+/// Exact rational numbers (the coefficient field of every input).
+pub type Q = BigRational;
+/// Arbitrary-precision integers.
+pub type Z = BigInt;
+
+/// The rational `n/d` from small integers.
+///
+/// ```
+/// let q = quadsect::number::q(6, 4);
+/// assert_eq!(quadsect::number::fmt_q(&q), "3/2");
+/// ```
+pub fn q(n: i64, d: i64) -> Q {
+    Q::new(BigInt::from(n), BigInt::from(d))
+}
+
+/// The integer `n` as a rational.
+pub fn qi(n: i64) -> Q {
+    Q::from_integer(BigInt::from(n))
+}
+
+/// Prints a rational as `a` or `a/b` (lowest terms, sign on the numerator).
+pub fn fmt_q(x: &Q) -> String {
+    if x.denom().is_one() {
+        x.numer().to_string()
+    } else {
+        format!("{}/{}", x.numer(), x.denom())
+    }
+}
+
+/// The exact sign of a rational: -1, 0 or 1.
+pub fn sign_q(x: &Q) -> i32 {
+    sign_z(x.numer())
+}
+
+/// The exact sign of an integer: -1, 0 or 1.
+pub fn sign_z(x: &Z) -> i32 {
+    match x.sign() {
+        Sign::Minus => -1,
+        Sign::NoSign => 0,
+        Sign::Plus => 1,
+    }
+}
+
+/// `floor(log2 |x|)` for a non-zero rational, computed exactly.
+pub fn floor_log2_q(x: &Q) -> i64 {
+    debug_assert!(!x.is_zero());
+    let n = x.numer().abs();
+    let d = x.denom().clone();
+    let mut e = n.bits() as i64 - d.bits() as i64;
+    // 2^e <= n/d < 2^(e+1) after at most one correction in each direction
+    loop {
+        let lhs_ge = if e >= 0 {
+            n >= (&d << (e as usize))
+        } else {
+            (&n << ((-e) as usize)) >= d
+        };
+        if !lhs_ge {
+            e -= 1;
+            continue;
+        }
+        let next_ge = if e + 1 >= 0 {
+            n >= (&d << ((e + 1) as usize))
+        } else {
+            (&n << ((-(e + 1)) as usize)) >= d
+        };
+        if next_ge {
+            e += 1;
+            continue;
+        }
+        return e;
+    }
+}
+
+/// A decimal approximation of `x` with `digits` significant digits, rounded
+/// to nearest, computed exactly with integers (no floating point).
+///
+/// Plain notation is used for moderate exponents, scientific otherwise.
+///
+/// ```
+/// use quadsect::number::{approx_decimal, q};
+/// assert_eq!(approx_decimal(&q(7, 9), 5), "0.77778");
+/// assert_eq!(approx_decimal(&q(-1233, 112), 6), "-11.0089");
+/// ```
+pub fn approx_decimal(x: &Q, digits: usize) -> String {
+    let digits = digits.max(1);
+    if x.is_zero() {
+        return "0".to_string();
+    }
+    let neg = x.is_negative();
+    let ax = x.abs();
+    // e10 = floor(log10 |x|): estimate from log2, then correct exactly.
+    let l2 = floor_log2_q(&ax);
+    let mut e10 = ((l2 as f64) * std::f64::consts::LOG10_2).floor() as i64;
+    let ten = BigInt::from(10);
+    let pow10 = |e: i64| -> Q {
+        if e >= 0 {
+            Q::from_integer(num_traits::pow(ten.clone(), e as usize))
+        } else {
+            Q::new(BigInt::one(), num_traits::pow(ten.clone(), (-e) as usize))
+        }
+    };
+    while pow10(e10) > ax {
+        e10 -= 1;
+    }
+    while pow10(e10 + 1) <= ax {
+        e10 += 1;
+    }
+    // scaled = |x| * 10^(digits-1-e10), rounded to an integer with `digits` digits
+    let scaled = &ax * pow10(digits as i64 - 1 - e10);
+    let (qt, r) = scaled.numer().div_rem(scaled.denom());
+    let mut m = qt;
+    if (&r << 1usize) >= *scaled.denom() {
+        m += 1;
+    }
+    if m.to_string().len() > digits {
+        // rounding carried into a new digit (e.g. 9.99 -> 10.0)
+        m /= 10;
+        e10 += 1;
+    }
+    let s = m.to_string();
+    let s = format!("{:0<width$}", s, width = digits);
+    let sign = if neg { "-" } else { "" };
+    if (-6..=20).contains(&e10) {
+        if e10 >= 0 {
+            let int_len = (e10 + 1) as usize;
+            if int_len >= s.len() {
+                let mut t = s.clone();
+                t.push_str(&"0".repeat(int_len - s.len()));
+                format!("{sign}{t}")
+            } else {
+                let frac = s[int_len..].trim_end_matches('0');
+                if frac.is_empty() {
+                    format!("{sign}{}", &s[..int_len])
+                } else {
+                    format!("{sign}{}.{}", &s[..int_len], frac)
+                }
+            }
+        } else {
+            let zeros = "0".repeat((-e10 - 1) as usize);
+            let frac = s.trim_end_matches('0');
+            format!("{sign}0.{zeros}{frac}")
+        }
+    } else {
+        let frac = s[1..].trim_end_matches('0');
+        if frac.is_empty() {
+            format!("{sign}{}e{}", &s[..1], e10)
+        } else {
+            format!("{sign}{}.{}e{}", &s[..1], frac, e10)
+        }
+    }
+}
+
+/// Least common multiple of the denominators of a list of rationals.
+pub fn denom_lcm<'a>(xs: impl IntoIterator<Item = &'a Q>) -> Z {
+    xs.into_iter()
+        .fold(Z::one(), |acc, x| acc.lcm(x.denom()))
+}
+
+/// Integer square root test: `Some(r)` with `r*r == x` when `x >= 0` is a
+/// perfect square.
+pub fn exact_sqrt_z(x: &Z) -> Option<Z> {
+    if x.is_negative() {
+        return None;
+    }
+    let r = x.sqrt();
+    if &(&r * &r) == x { Some(r) } else { None }
+}
+
+/// Rational square root test: `Some(r)` with `r >= 0`, `r*r == x`.
+pub fn exact_sqrt_q(x: &Q) -> Option<Q> {
+    let n = exact_sqrt_z(x.numer())?;
+    let d = exact_sqrt_z(x.denom())?;
+    Some(Q::new(n, d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn approx_rounds_and_carries() {
+        assert_eq!(approx_decimal(&q(2, 3), 3), "0.667");
+        assert_eq!(approx_decimal(&q(999, 1000), 2), "1");
+        assert_eq!(approx_decimal(&q(187, 9), 20), "20.777777777777777778");
+        assert_eq!(approx_decimal(&q(1, 3_000_000_000), 3), "3.33e-10");
+        assert_eq!(approx_decimal(&qi(-5), 4), "-5");
+        assert_eq!(approx_decimal(&q(1, 8), 20), "0.125");
+        assert_eq!(
+            approx_decimal(&Q::from_integer(num_traits::pow(BigInt::from(10), 30)), 3),
+            "1e30"
+        );
+    }
+
+    #[test]
+    fn floor_log2_is_exact() {
+        assert_eq!(floor_log2_q(&q(1, 1)), 0);
+        assert_eq!(floor_log2_q(&q(3, 1)), 1);
+        assert_eq!(floor_log2_q(&q(4, 1)), 2);
+        assert_eq!(floor_log2_q(&q(1, 3)), -2);
+        assert_eq!(floor_log2_q(&q(1, 4)), -2);
+        assert_eq!(floor_log2_q(&q(-7, 2)), 1);
+    }
+
+    #[test]
+    fn sqrt_tests() {
+        assert_eq!(exact_sqrt_q(&q(9, 4)), Some(q(3, 2)));
+        assert_eq!(exact_sqrt_q(&q(2, 1)), None);
+        assert_eq!(exact_sqrt_q(&q(-4, 1)), None);
+    }
+}

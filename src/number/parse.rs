@@ -1,0 +1,230 @@
+//! Exact parsing of numbers: integers, rationals, decimals and scientific
+//! decimals, all to exact rationals (never through `f64`).
+
+use super::Q;
+use num_bigint::BigInt;
+use num_traits::{Num, Zero};
+use std::fmt;
+
+/// Longest run of digits accepted in one literal (a documented size limit:
+/// longer literals are rejected instead of making the parser slow).
+pub const MAX_DIGITS: usize = 100_000;
+/// Largest decimal exponent accepted in scientific notation (`1e100000`).
+pub const MAX_EXPONENT: i64 = 100_000;
+
+/// A number that could not be read: what went wrong and at which column
+/// (1-based, counted in characters of the input).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NumberError {
+    /// Human-readable description of the problem.
+    pub message: String,
+    /// 1-based column of the offending character.
+    pub column: usize,
+}
+
+impl fmt::Display for NumberError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} at column {}", self.message, self.column)
+    }
+}
+
+impl std::error::Error for NumberError {}
+
+fn err(message: impl Into<String>, pos: usize) -> NumberError {
+    NumberError {
+        message: message.into(),
+        column: pos + 1,
+    }
+}
+
+fn digits_to_int(d: &[u8]) -> BigInt {
+    if d.is_empty() {
+        return BigInt::zero();
+    }
+    // the bytes are ASCII digits, checked by the caller
+    let s = std::str::from_utf8(d).unwrap_or("0");
+    BigInt::from_str_radix(s, 10).unwrap_or_default()
+}
+
+/// Reads one unsigned number literal starting at byte `pos` of `s`:
+/// `digits [ . digits ] [ (e|E) [+|-] digits ]` or `. digits …`.
+/// Returns the exact value and the byte position just after the literal.
+///
+/// An `e` is taken as an exponent only when digits follow it (with an
+/// optional sign), so `2e` is the number 2 followed by `e`.
+pub fn scan_number(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
+    let mut i = pos;
+    let start_int = i;
+    while i < s.len() && s[i].is_ascii_digit() {
+        i += 1;
+    }
+    let int_part = &s[start_int..i];
+    let mut frac_part: &[u8] = &[];
+    if i < s.len() && s[i] == b'.' {
+        let fs = i + 1;
+        let mut j = fs;
+        while j < s.len() && s[j].is_ascii_digit() {
+            j += 1;
+        }
+        frac_part = &s[fs..j];
+        if int_part.is_empty() && frac_part.is_empty() {
+            return Err(err("a lone '.' is not a number", i));
+        }
+        if frac_part.is_empty() {
+            return Err(err("a decimal point must be followed by digits", i));
+        }
+        i = j;
+    }
+    if int_part.is_empty() && frac_part.is_empty() {
+        return Err(err("expected a number", pos));
+    }
+    if int_part.len() + frac_part.len() > MAX_DIGITS {
+        return Err(err(
+            format!("number literal has more than {MAX_DIGITS} digits (size limit)"),
+            pos,
+        ));
+    }
+    let mut exp: i64 = 0;
+    if i < s.len() && (s[i] == b'e' || s[i] == b'E') {
+        let mut j = i + 1;
+        let mut neg = false;
+        if j < s.len() && (s[j] == b'+' || s[j] == b'-') {
+            neg = s[j] == b'-';
+            j += 1;
+        }
+        let es = j;
+        while j < s.len() && s[j].is_ascii_digit() {
+            j += 1;
+        }
+        if j > es {
+            let ed = &s[es..j];
+            if ed.len() > 7 {
+                return Err(err(
+                    format!("exponent too large (limit {MAX_EXPONENT})"),
+                    es,
+                ));
+            }
+            let v: i64 = std::str::from_utf8(ed)
+                .ok()
+                .and_then(|t| t.parse().ok())
+                .unwrap_or(i64::MAX);
+            if v > MAX_EXPONENT {
+                return Err(err(
+                    format!("exponent too large (limit {MAX_EXPONENT})"),
+                    es,
+                ));
+            }
+            exp = if neg { -v } else { v };
+            i = j;
+        } else if j > i + 1 {
+            // "1e+" or "1e-" without digits
+            return Err(err("exponent sign must be followed by digits", j));
+        }
+    }
+    let mut all = Vec::with_capacity(int_part.len() + frac_part.len());
+    all.extend_from_slice(int_part);
+    all.extend_from_slice(frac_part);
+    let mantissa = digits_to_int(&all);
+    let e = exp - frac_part.len() as i64;
+    let ten = BigInt::from(10);
+    let value = if e >= 0 {
+        Q::from_integer(mantissa * num_traits::pow(ten, e as usize))
+    } else {
+        Q::new(mantissa, num_traits::pow(ten, (-e) as usize))
+    };
+    Ok((value, i))
+}
+
+/// Parses a complete exact number: an optional sign, a literal (integer,
+/// decimal or scientific) and optionally `/` and a second literal.
+///
+/// ```
+/// use quadsect::number::{parse_rational, q};
+/// assert_eq!(parse_rational("-7/9").unwrap(), q(-7, 9));
+/// assert_eq!(parse_rational("1.77777777777").unwrap(), q(177777777777, 100000000000));
+/// assert_eq!(parse_rational("2.5E3").unwrap(), q(2500, 1));
+/// assert_eq!(parse_rational("1e-2").unwrap(), q(1, 100));
+/// assert!(parse_rational("1/0").is_err());
+/// ```
+pub fn parse_rational(text: &str) -> Result<Q, NumberError> {
+    let s = text.as_bytes();
+    let mut i = 0;
+    while i < s.len() && s[i].is_ascii_whitespace() {
+        i += 1;
+    }
+    if i == s.len() {
+        return Err(err("expected a number, found nothing", i));
+    }
+    let mut neg = false;
+    if s[i] == b'+' || s[i] == b'-' {
+        neg = s[i] == b'-';
+        i += 1;
+    }
+    if i < s.len() && !(s[i].is_ascii_digit() || s[i] == b'.') {
+        return Err(err(
+            format!("unexpected '{}' in a number", char_at(text, i)),
+            i,
+        ));
+    }
+    let (mut v, mut j) = scan_number(s, i)?;
+    while j < s.len() && s[j].is_ascii_whitespace() {
+        j += 1;
+    }
+    if j < s.len() && s[j] == b'/' {
+        let mut k = j + 1;
+        while k < s.len() && s[k].is_ascii_whitespace() {
+            k += 1;
+        }
+        if k < s.len() && !(s[k].is_ascii_digit() || s[k] == b'.') {
+            return Err(err("expected a denominator after '/'", k));
+        }
+        let (d, k2) = scan_number(s, k)?;
+        if d.is_zero() {
+            return Err(err("division by zero", k));
+        }
+        v /= d;
+        j = k2;
+        while j < s.len() && s[j].is_ascii_whitespace() {
+            j += 1;
+        }
+    }
+    if j < s.len() {
+        return Err(err(
+            format!("unexpected '{}' after the number", char_at(text, j)),
+            j,
+        ));
+    }
+    Ok(if neg { -v } else { v })
+}
+
+fn char_at(text: &str, byte: usize) -> char {
+    text.get(byte..)
+        .and_then(|t| t.chars().next())
+        .unwrap_or('?')
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::q;
+
+    #[test]
+    fn literals() {
+        assert_eq!(parse_rational("12").unwrap(), q(12, 1));
+        assert_eq!(parse_rational(" -12 ").unwrap(), q(-12, 1));
+        assert_eq!(parse_rational(".5").unwrap(), q(1, 2));
+        assert_eq!(parse_rational("1e3").unwrap(), q(1000, 1));
+        assert_eq!(parse_rational("1.5e-1").unwrap(), q(3, 20));
+        assert_eq!(parse_rational("3/6").unwrap(), q(1, 2));
+        assert_eq!(parse_rational("0.1/0.3").unwrap(), q(1, 3));
+    }
+
+    #[test]
+    fn bad_literals() {
+        for bad in ["", "-", "1.", "abc", "1/", "1/x", "1e", "1e-", "2 3", "1/0.0", "--1"] {
+            assert!(parse_rational(bad).is_err(), "{bad:?} should fail");
+        }
+        assert_eq!(parse_rational("1e").unwrap_err().column, 2);
+        assert!(parse_rational("1e9999999").is_err());
+    }
+}

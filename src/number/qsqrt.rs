@@ -1,0 +1,275 @@
+//! Numbers `a + b√d` with rational `a`, `b` and a rational radicand `d >= 0`:
+//! the quadratic field Q(√d), with exact sign and comparison.
+//!
+//! These are the numbers the natural-quadric classification needs where a
+//! construction takes one square root (the two lines of a degenerate conic,
+//! the tangent planes through a line) and the witness points of the tangent
+//! point method (`z = ±√c`).  Signs are decided by squaring, never by floats:
+//! `sign(a + b√d)` is the sign of `a` and `b` when they agree, otherwise the
+//! sign of whichever of `a²` and `b²d` is larger.
+
+use super::{Q, approx_decimal, exact_sqrt_q, fmt_q, sign_q};
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
+use std::fmt;
+
+/// An element `a + b√d` of Q(√d).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct QSqrt {
+    /// Rational part.
+    pub a: Q,
+    /// Coefficient of √d.
+    pub b: Q,
+    /// Radicand, `d >= 0`.  When `d` is a rational square the value is folded
+    /// into `a` and `b` is zero.
+    pub d: Q,
+}
+
+impl QSqrt {
+    /// The rational `a` (with `b = 0`, `d = 0`).
+    pub fn rational(a: Q) -> Self {
+        QSqrt {
+            a,
+            b: Q::zero(),
+            d: Q::zero(),
+        }
+    }
+
+    /// `a + b√d`, folding `√d` into the rational part when `d` is a square.
+    /// Panics (debug) on negative `d`; callers check the sign first.
+    pub fn new(a: Q, b: Q, d: Q) -> Self {
+        debug_assert!(!d.is_negative(), "negative radicand");
+        if b.is_zero() || d.is_zero() {
+            return QSqrt::rational(a);
+        }
+        if let Some(r) = exact_sqrt_q(&d) {
+            return QSqrt::rational(a + b * r);
+        }
+        QSqrt { a, b, d }
+    }
+
+    /// `√d` itself.
+    pub fn sqrt(d: Q) -> Self {
+        QSqrt::new(Q::zero(), Q::one(), d)
+    }
+
+    /// True when the value is rational (`b = 0`).
+    pub fn is_rational(&self) -> bool {
+        self.b.is_zero()
+    }
+
+    /// True when the value is exactly zero.
+    pub fn is_zero(&self) -> bool {
+        self.a.is_zero() && self.b.is_zero()
+    }
+
+    /// The exact sign: -1, 0 or 1.
+    pub fn sign(&self) -> i32 {
+        let sa = sign_q(&self.a);
+        let sb = sign_q(&self.b);
+        if sb == 0 {
+            return sa;
+        }
+        if sa == 0 || sa == sb {
+            return sb;
+        }
+        // opposite signs: compare a^2 with b^2 d
+        let a2 = &self.a * &self.a;
+        let b2d = &self.b * &self.b * &self.d;
+        match a2.cmp(&b2d) {
+            Ordering::Greater => sa,
+            Ordering::Less => sb,
+            Ordering::Equal => 0,
+        }
+    }
+
+    fn radicand_with(&self, other: &QSqrt) -> Q {
+        if self.b.is_zero() {
+            other.d.clone()
+        } else {
+            debug_assert!(
+                other.b.is_zero() || other.d == self.d,
+                "mixing different radicands"
+            );
+            self.d.clone()
+        }
+    }
+
+    /// Sum (both operands must live in the same field Q(√d)).
+    pub fn add(&self, o: &QSqrt) -> QSqrt {
+        let d = self.radicand_with(o);
+        QSqrt::new(&self.a + &o.a, &self.b + &o.b, d)
+    }
+
+    /// Difference.
+    pub fn sub(&self, o: &QSqrt) -> QSqrt {
+        let d = self.radicand_with(o);
+        QSqrt::new(&self.a - &o.a, &self.b - &o.b, d)
+    }
+
+    /// Product.
+    pub fn mul(&self, o: &QSqrt) -> QSqrt {
+        let d = self.radicand_with(o);
+        let a = &self.a * &o.a + &self.b * &o.b * &d;
+        let b = &self.a * &o.b + &self.b * &o.a;
+        QSqrt::new(a, b, d)
+    }
+
+    /// Product with a rational.
+    pub fn scale(&self, k: &Q) -> QSqrt {
+        QSqrt::new(&self.a * k, &self.b * k, self.d.clone())
+    }
+
+    /// Negation.
+    pub fn neg(&self) -> QSqrt {
+        QSqrt::new(-&self.a, -&self.b, self.d.clone())
+    }
+
+    /// Conjugate `a - b√d`.
+    pub fn conj(&self) -> QSqrt {
+        QSqrt::new(self.a.clone(), -&self.b, self.d.clone())
+    }
+
+    /// Norm `a² - b²d` (a rational).
+    pub fn norm(&self) -> Q {
+        &self.a * &self.a - &self.b * &self.b * &self.d
+    }
+
+    /// Inverse; `None` for zero.
+    pub fn inv(&self) -> Option<QSqrt> {
+        if self.is_zero() {
+            return None;
+        }
+        let n = self.norm();
+        // n != 0 since √d is irrational when b != 0
+        Some(QSqrt::new(&self.a / &n, -&self.b / &n, self.d.clone()))
+    }
+
+    /// Quotient; `None` when dividing by zero.
+    pub fn div(&self, o: &QSqrt) -> Option<QSqrt> {
+        Some(self.mul(&o.inv()?))
+    }
+
+    /// Exact comparison of two elements of the same field.
+    pub fn cmp_exact(&self, o: &QSqrt) -> Ordering {
+        match self.sub(o).sign() {
+            -1 => Ordering::Less,
+            0 => Ordering::Equal,
+            _ => Ordering::Greater,
+        }
+    }
+
+    /// A rational within `2^-bits` of the value (exact integer square root).
+    pub fn to_rational_approx(&self, bits: u32) -> Q {
+        if self.b.is_zero() {
+            return self.a.clone();
+        }
+        // √d ≈ isqrt(num·den·4^k) / (den·2^k), error < 1/(den·2^k)
+        let k = bits as usize + 8 + (self.b.numer().bits() as usize);
+        let nd = self.d.numer() * self.d.denom();
+        let s = (nd << (2 * k)).sqrt();
+        let root = Q::new(s, self.d.denom() << k);
+        &self.a + &self.b * root
+    }
+
+    /// Decimal approximation with `digits` significant digits.
+    pub fn approx(&self, digits: usize) -> String {
+        approx_decimal(&self.to_rational_approx(4 * digits as u32 + 64), digits)
+    }
+
+    /// Square root of a non-negative rational in the field Q(√d), if it lies
+    /// there: `√x` for rational `x`, either rational or `b·√d` with `x/d` a
+    /// rational square.
+    pub fn sqrt_of_rational_in(x: &Q, d: &Q) -> Option<QSqrt> {
+        if x.is_negative() {
+            return None;
+        }
+        if let Some(r) = exact_sqrt_q(x) {
+            return Some(QSqrt::rational(r));
+        }
+        if d.is_zero() {
+            return None;
+        }
+        let ratio = x / d;
+        exact_sqrt_q(&ratio).map(|r| QSqrt::new(Q::zero(), r, d.clone()))
+    }
+
+    /// Canonical radicand: a square-free integer `d'` with `√d = c·√d'`.
+    /// Only the square part found by trial division of small primes and an
+    /// exact square test is removed; the result is still exact.
+    pub fn normalized(&self) -> QSqrt {
+        if self.b.is_zero() {
+            return self.clone();
+        }
+        // √(n/m) = √(n·m)/m
+        let nm = self.d.numer() * self.d.denom();
+        let mut rad = nm.clone();
+        let mut out = BigInt::one();
+        let mut p = BigInt::from(2u32);
+        let mut tries = 0;
+        while tries < 200 && &p * &p <= rad {
+            let p2 = &p * &p;
+            while (&rad % &p2).is_zero() {
+                rad /= &p2;
+                out *= &p;
+            }
+            p += 1u32;
+            tries += 1;
+        }
+        let coef = Q::new(out, self.d.denom().clone());
+        QSqrt::new(self.a.clone(), &self.b * coef, Q::from_integer(rad))
+    }
+}
+
+impl fmt::Display for QSqrt {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.b.is_zero() {
+            return write!(f, "{}", fmt_q(&self.a));
+        }
+        let rad = format!("√({})", fmt_q(&self.d));
+        let bpart = if self.b.is_one() {
+            rad
+        } else if self.b == -Q::one() {
+            format!("-{rad}")
+        } else {
+            format!("{}·{rad}", fmt_q(&self.b))
+        };
+        if self.a.is_zero() {
+            write!(f, "{bpart}")
+        } else if bpart.starts_with('-') {
+            write!(f, "{} - {}", fmt_q(&self.a), &bpart[1..])
+        } else {
+            write!(f, "{} + {}", fmt_q(&self.a), bpart)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::{q, qi};
+
+    #[test]
+    fn sign_and_compare() {
+        // 1 - √2 < 0, 3 - √2·2 > 0 (9 > 8), 3 - 2√(9/4) = 0
+        assert_eq!(QSqrt::new(qi(1), qi(-1), qi(2)).sign(), -1);
+        assert_eq!(QSqrt::new(qi(3), qi(-2), qi(2)).sign(), 1);
+        assert_eq!(QSqrt::new(qi(3), qi(-2), q(9, 4)).sign(), 0);
+        let s2 = QSqrt::sqrt(qi(2));
+        let x = s2.mul(&s2);
+        assert_eq!(x, QSqrt::rational(qi(2)));
+        assert_eq!(s2.cmp_exact(&QSqrt::rational(q(141421, 100000))), Ordering::Greater);
+        assert_eq!(s2.cmp_exact(&QSqrt::rational(q(141422, 100000))), Ordering::Less);
+        let inv = s2.inv().unwrap();
+        assert_eq!(inv.mul(&s2), QSqrt::rational(qi(1)));
+        assert_eq!(s2.approx(10), "1.414213562");
+    }
+
+    #[test]
+    fn normalize_radicand() {
+        let x = QSqrt::new(qi(0), qi(1), q(8, 9)).normalized();
+        assert_eq!(x.d, qi(2));
+        assert_eq!(x.b, q(2, 3));
+    }
+}

@@ -1,0 +1,98 @@
+//! The operations behind the CLI, as library functions: text in, exact
+//! result out.  The CLI (`main.rs`) only parses arguments and prints what
+//! these return through [`crate::report`].
+
+use crate::elim::resultant_mpoly;
+use crate::error::Error;
+use crate::poly::mpoly::{QMPoly, VAR_NAMES, var_index};
+use crate::poly::{ZPoly, parse_poly};
+use crate::roots::{RootReport, analyze_roots};
+
+/// The result of `quadsect roots`.
+#[derive(Clone, Debug)]
+pub struct RootsResult {
+    /// The polynomial as parsed.
+    pub poly: QMPoly,
+    /// Its variable (`None` for a constant).
+    pub variable: Option<&'static str>,
+    /// The primitive integer polynomial with the same roots.
+    pub integer_poly: ZPoly,
+    /// The root summary.
+    pub report: RootReport,
+}
+
+/// Parses a univariate expression and analyses its real roots.
+///
+/// ```
+/// let r = quadsect::ops::roots("x^3 - 2x").unwrap();
+/// assert_eq!(r.report.distinct_real, 3);
+/// assert!(quadsect::ops::roots("x*y").is_err());
+/// ```
+pub fn roots(expr: &str) -> Result<RootsResult, Error> {
+    let p = parse_poly(expr)?;
+    let vars = p.vars();
+    if vars.len() > 1 {
+        let names: Vec<&str> = vars.iter().map(|&v| VAR_NAMES[v]).collect();
+        return Err(Error::input(
+            "not-univariate",
+            format!(
+                "roots needs a univariate polynomial, but the expression has the variables {}",
+                names.join(", ")
+            ),
+        ));
+    }
+    if p.is_zero() {
+        return Err(Error::input(
+            "zero-polynomial",
+            "the zero polynomial has every number as a root; roots needs a non-zero polynomial",
+        ));
+    }
+    let v = vars.first().copied().unwrap_or(0);
+    let uq = p
+        .to_univariate(v)
+        .ok_or_else(|| Error::Internal("univariate conversion failed".into()))?;
+    let (z, _) = ZPoly::from_q(&uq);
+    let report = analyze_roots(&z);
+    Ok(RootsResult {
+        variable: vars.first().map(|&v| VAR_NAMES[v]),
+        poly: p,
+        integer_poly: z,
+        report,
+    })
+}
+
+/// The result of `quadsect resultant`.
+#[derive(Clone, Debug)]
+pub struct ResultantResult {
+    /// `Res_var(f, g)`.
+    pub resultant: QMPoly,
+    /// Its total degree (-1 for the zero polynomial).
+    pub degree: i64,
+}
+
+/// `Res_var(f, g)` of two parsed expressions.
+///
+/// ```
+/// let r = quadsect::ops::resultant("x^2 + y^2 - 1", "x - y", "x").unwrap();
+/// assert_eq!(r.resultant.to_string_canonical(), "2*y^2 - 1");
+/// assert_eq!(r.degree, 2);
+/// ```
+pub fn resultant(f: &str, g: &str, var: &str) -> Result<ResultantResult, Error> {
+    let v = match var_index(var.trim()) {
+        Some(v) if v <= 3 => v,
+        _ => {
+            return Err(Error::input(
+                "input",
+                format!("unknown variable '{var}' for --var (use x, y, z or u)"),
+            ));
+        }
+    };
+    let fp = parse_poly(f).map_err(|e| Error::from(e).context("in F"))?;
+    let gp = parse_poly(g).map_err(|e| Error::from(e).context("in G"))?;
+    let r = resultant_mpoly(&fp, &gp, v);
+    let degree = r.total_degree().map(|d| d as i64).unwrap_or(-1);
+    Ok(ResultantResult {
+        resultant: r,
+        degree,
+    })
+}

@@ -1,0 +1,21 @@
+//! Polynomials: dense univariate over any ring ([`UPoly`], with the Z/Q
+//! algorithms in [`zpoly`]), sparse multivariate ([`MPoly`]), the expression
+//! parser ([`parse_poly`]) and the canonical printer
+//! ([`MPoly::to_string_canonical`]).
+//!
+//! Key idea: one generic dense type serves Z[x], Q[x] and the recursive
+//! representation R[y][x] used in elimination; the [`Ring`] trait supplies
+//! exact division, which is all the fraction-free algorithms need.
+
+pub mod extension;
+pub mod mpoly;
+pub mod parse;
+pub mod ring;
+pub mod upoly;
+pub mod zpoly;
+
+pub use mpoly::{MPoly, QMPoly, ZMPoly};
+pub use parse::{Limits, ParseError, parse_poly, parse_poly_with};
+pub use ring::Ring;
+pub use upoly::UPoly;
+pub use zpoly::{QPoly, ZPoly};

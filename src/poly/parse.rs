@@ -1,0 +1,501 @@
+//! The polynomial expression parser (SPEC §1).
+//!
+//! Grammar (whitespace is free):
+//!
+//! ```text
+//! expr    := term (('+' | '-') term)*
+//! term    := unary (('*' | '/') unary | implicit)*
+//! implicit:= a variable or '(' directly after a factor: 2x, 3(x-1), (x+1)(x-1), x y
+//! unary   := ('+' | '-') unary | power
+//! power   := primary ('^' integer-literal)?
+//! primary := number | 'x' | 'y' | 'z' | 'u' | '(' expr ')'
+//! ```
+//!
+//! Numbers are exact (integers, decimals, scientific).  `/` divides only by
+//! a non-zero constant; `^` takes a non-negative integer literal.  Every
+//! error names the problem and the 1-based column.  Documented size limits
+//! keep hostile inputs from hanging: see [`Limits`].
+
+use super::mpoly::{MPoly, NVARS, QMPoly};
+use crate::number::{Q, scan_number};
+use num_traits::{One, Zero};
+use std::fmt;
+
+/// Size limits of the parser.  Inputs beyond them are rejected with a clear
+/// error instead of exhausting time or memory.
+#[derive(Clone, Copy, Debug)]
+pub struct Limits {
+    /// Longest accepted expression, in bytes.
+    pub max_input_bytes: usize,
+    /// Deepest bracket / unary-sign nesting.
+    pub max_depth: usize,
+    /// Largest total degree of any intermediate polynomial.
+    pub max_degree: u32,
+    /// Most terms in any intermediate polynomial.
+    pub max_terms: usize,
+    /// Largest number of term products in one multiplication.
+    pub max_work: usize,
+    /// Largest bit size of a coefficient produced by `^` on a constant.
+    pub max_coeff_bits: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_input_bytes: 1 << 20,
+            max_depth: 100,
+            max_degree: 10_000,
+            max_terms: 200_000,
+            max_work: 20_000_000,
+            max_coeff_bits: 1_000_000,
+        }
+    }
+}
+
+/// A parse error: the problem and the 1-based column where it was found.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParseError {
+    /// What is wrong.
+    pub message: String,
+    /// 1-based column (in characters).
+    pub column: usize,
+}
+
+impl fmt::Display for ParseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} at column {}", self.message, self.column)
+    }
+}
+
+impl std::error::Error for ParseError {}
+
+/// Parses a polynomial expression with the default [`Limits`].
+///
+/// ```
+/// use quadsect::poly::parse_poly;
+/// let p = parse_poly("2x^2 - 3(x-1) + y/4").unwrap();
+/// assert_eq!(p.to_string_canonical(), "2*x^2 - 3*x + 1/4*y + 3");
+/// let e = parse_poly("(x + 1))").unwrap_err();
+/// assert_eq!(e.to_string(), "unexpected ')' at column 8");
+/// ```
+pub fn parse_poly(text: &str) -> Result<QMPoly, ParseError> {
+    parse_poly_with(text, &Limits::default())
+}
+
+/// Parses a polynomial expression with explicit limits.
+pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError> {
+    if text.len() > limits.max_input_bytes {
+        return Err(ParseError {
+            message: format!(
+                "expression is {} bytes long; the limit is {} bytes",
+                text.len(),
+                limits.max_input_bytes
+            ),
+            column: 1,
+        });
+    }
+    let mut p = Parser {
+        text,
+        s: text.as_bytes(),
+        pos: 0,
+        depth: 0,
+        limits,
+    };
+    p.skip_ws();
+    if p.pos == p.s.len() {
+        return Err(p.err_at("empty expression", 0));
+    }
+    let v = p.expr()?;
+    p.skip_ws();
+    if p.pos < p.s.len() {
+        let c = p.current_char();
+        return Err(p.err_at(&format!("unexpected '{c}'"), p.pos));
+    }
+    Ok(v)
+}
+
+struct Parser<'a> {
+    text: &'a str,
+    s: &'a [u8],
+    pos: usize,
+    depth: usize,
+    limits: &'a Limits,
+}
+
+fn variable(c: u8) -> Option<usize> {
+    match c {
+        b'x' => Some(0),
+        b'y' => Some(1),
+        b'z' => Some(2),
+        b'u' => Some(3),
+        _ => None,
+    }
+}
+
+impl Parser<'_> {
+    fn err_at(&self, msg: &str, byte: usize) -> ParseError {
+        let byte = byte.min(self.text.len());
+        let mut b = byte;
+        while !self.text.is_char_boundary(b) {
+            b -= 1;
+        }
+        ParseError {
+            message: msg.to_string(),
+            column: self.text[..b].chars().count() + 1,
+        }
+    }
+
+    fn current_char(&self) -> char {
+        let mut b = self.pos;
+        while !self.text.is_char_boundary(b) {
+            b -= 1;
+        }
+        self.text[b..].chars().next().unwrap_or('?')
+    }
+
+    fn skip_ws(&mut self) {
+        while self.pos < self.s.len() && self.s[self.pos].is_ascii_whitespace() {
+            self.pos += 1;
+        }
+    }
+
+    fn peek(&mut self) -> Option<u8> {
+        self.skip_ws();
+        self.s.get(self.pos).copied()
+    }
+
+    fn enter(&mut self) -> Result<(), ParseError> {
+        self.depth += 1;
+        if self.depth > self.limits.max_depth {
+            return Err(self.err_at(
+                &format!(
+                    "expression nested too deeply (limit {} levels)",
+                    self.limits.max_depth
+                ),
+                self.pos,
+            ));
+        }
+        Ok(())
+    }
+
+    fn check_size(&self, p: &QMPoly, at: usize) -> Result<(), ParseError> {
+        if p.len() > self.limits.max_terms {
+            return Err(self.err_at(
+                &format!(
+                    "expression too large: more than {} terms",
+                    self.limits.max_terms
+                ),
+                at,
+            ));
+        }
+        Ok(())
+    }
+
+    fn multiply(&self, a: &QMPoly, b: &QMPoly, at: usize) -> Result<QMPoly, ParseError> {
+        if a.len().saturating_mul(b.len()) > self.limits.max_work {
+            return Err(self.err_at(
+                &format!(
+                    "expression too large: a product of {} by {} terms (limit {} term products)",
+                    a.len(),
+                    b.len(),
+                    self.limits.max_work
+                ),
+                at,
+            ));
+        }
+        let da = a.total_degree().unwrap_or(0);
+        let db = b.total_degree().unwrap_or(0);
+        if da + db > self.limits.max_degree {
+            return Err(self.err_at(
+                &format!(
+                    "degree {} exceeds the limit {}",
+                    da + db,
+                    self.limits.max_degree
+                ),
+                at,
+            ));
+        }
+        let r = a * b;
+        self.check_size(&r, at)?;
+        Ok(r)
+    }
+
+    fn expr(&mut self) -> Result<QMPoly, ParseError> {
+        let mut acc = self.term()?;
+        loop {
+            match self.peek() {
+                Some(b'+') => {
+                    self.pos += 1;
+                    let t = self.term()?;
+                    acc = &acc + &t;
+                }
+                Some(b'-') => {
+                    self.pos += 1;
+                    let t = self.term()?;
+                    acc = &acc - &t;
+                }
+                _ => return Ok(acc),
+            }
+            self.check_size(&acc, self.pos)?;
+        }
+    }
+
+    fn term(&mut self) -> Result<QMPoly, ParseError> {
+        let mut acc = self.unary()?;
+        loop {
+            match self.peek() {
+                Some(b'*') => {
+                    let at = self.pos;
+                    self.pos += 1;
+                    let f = self.unary()?;
+                    acc = self.multiply(&acc, &f, at)?;
+                }
+                Some(b'/') => {
+                    let at = self.pos;
+                    self.pos += 1;
+                    let f = self.unary()?;
+                    if !f.is_constant() {
+                        return Err(self.err_at(
+                            "division by a non-constant expression ('/' divides only by a number)",
+                            at,
+                        ));
+                    }
+                    let c = f.constant_term();
+                    if c.is_zero() {
+                        return Err(self.err_at("division by zero", at));
+                    }
+                    let inv = Q::one() / c;
+                    acc = acc.scale(&inv);
+                }
+                Some(c) if variable(c).is_some() || c == b'(' => {
+                    let at = self.pos;
+                    let f = self.power()?;
+                    acc = self.multiply(&acc, &f, at)?;
+                }
+                Some(c) if c.is_ascii_digit() || c == b'.' => {
+                    return Err(self.err_at(
+                        "a number cannot follow a factor without an operator (write '*')",
+                        self.pos,
+                    ));
+                }
+                Some(c) if c.is_ascii_alphabetic() => {
+                    let ch = self.current_char();
+                    return Err(self.err_at(
+                        &format!("unknown variable '{ch}' (variables are x, y, z, u)"),
+                        self.pos,
+                    ));
+                }
+                _ => return Ok(acc),
+            }
+        }
+    }
+
+    fn unary(&mut self) -> Result<QMPoly, ParseError> {
+        match self.peek() {
+            Some(b'-') => {
+                self.pos += 1;
+                self.enter()?;
+                let v = self.unary()?;
+                self.depth -= 1;
+                Ok(-v)
+            }
+            Some(b'+') => {
+                self.pos += 1;
+                self.enter()?;
+                let v = self.unary()?;
+                self.depth -= 1;
+                Ok(v)
+            }
+            _ => self.power(),
+        }
+    }
+
+    fn power(&mut self) -> Result<QMPoly, ParseError> {
+        let base_at = self.pos;
+        let base = self.primary()?;
+        if self.peek() != Some(b'^') {
+            return Ok(base);
+        }
+        let caret = self.pos;
+        self.pos += 1;
+        self.skip_ws();
+        let start = self.pos;
+        while self.pos < self.s.len() && self.s[self.pos].is_ascii_digit() {
+            self.pos += 1;
+        }
+        if start == self.pos {
+            let what = if self.pos < self.s.len() {
+                format!("'{}'", self.current_char())
+            } else {
+                "the end of the expression".to_string()
+            };
+            return Err(self.err_at(
+                &format!("exponent must be a non-negative integer literal, found {what}"),
+                start,
+            ));
+        }
+        if self.pos < self.s.len() && (self.s[self.pos] == b'.' || self.s[self.pos] == b'e' || self.s[self.pos] == b'E') && self.s.get(self.pos + 1).is_some_and(|c| c.is_ascii_digit()) {
+            return Err(self.err_at(
+                "exponent must be a non-negative integer literal",
+                start,
+            ));
+        }
+        let digits = &self.text[start..self.pos];
+        let e: u64 = if digits.len() > 12 {
+            u64::MAX
+        } else {
+            digits.parse().unwrap_or(u64::MAX)
+        };
+        let _ = base_at;
+        if base.is_constant() {
+            let c = base.constant_term();
+            if c.is_zero() || c.is_one() || c == -Q::one() {
+                let v = if e == 0 {
+                    Q::one()
+                } else if c.is_zero() {
+                    Q::zero()
+                } else if c.is_one() || e % 2 == 0 {
+                    Q::one()
+                } else {
+                    -Q::one()
+                };
+                return Ok(MPoly::constant(v));
+            }
+            let bits = c.numer().bits().max(c.denom().bits());
+            if (bits as u128) * (e as u128) > self.limits.max_coeff_bits as u128 {
+                return Err(self.err_at(
+                    &format!(
+                        "exponent {digits} makes a number of more than {} bits (size limit)",
+                        self.limits.max_coeff_bits
+                    ),
+                    caret,
+                ));
+            }
+            return Ok(MPoly::constant(num_traits::pow(c, e as usize)));
+        }
+        let d = base.total_degree().unwrap_or(0) as u128;
+        if d * (e as u128) > self.limits.max_degree as u128 {
+            return Err(self.err_at(
+                &format!(
+                    "exponent {digits} gives degree {} above the limit {}",
+                    d * e as u128,
+                    self.limits.max_degree
+                ),
+                caret,
+            ));
+        }
+        // repeated squaring with the size checks of `multiply`
+        let mut r = MPoly::constant(Q::one());
+        let mut b = base;
+        let mut k = e;
+        while k > 0 {
+            if k & 1 == 1 {
+                r = self.multiply(&r, &b, caret)?;
+            }
+            k >>= 1;
+            if k > 0 {
+                b = self.multiply(&b, &b, caret)?;
+            }
+        }
+        Ok(r)
+    }
+
+    fn primary(&mut self) -> Result<QMPoly, ParseError> {
+        let Some(c) = self.peek() else {
+            return Err(self.err_at("unexpected end of expression", self.pos));
+        };
+        if c.is_ascii_digit() || c == b'.' {
+            let (v, end) = scan_number(self.s, self.pos).map_err(|e| ParseError {
+                message: e.message,
+                column: self.err_at("", e.column - 1).column,
+            })?;
+            self.pos = end;
+            return Ok(MPoly::constant(v));
+        }
+        if let Some(v) = variable(c) {
+            self.pos += 1;
+            return Ok(MPoly::var(v));
+        }
+        if c == b'(' {
+            let open = self.pos;
+            self.pos += 1;
+            self.enter()?;
+            let v = self.expr()?;
+            self.depth -= 1;
+            if self.peek() != Some(b')') {
+                if self.pos >= self.s.len() {
+                    return Err(self.err_at("unclosed '(' (opened here)", open));
+                }
+                let ch = self.current_char();
+                return Err(self.err_at(&format!("expected ')' but found '{ch}'"), self.pos));
+            }
+            self.pos += 1;
+            return Ok(v);
+        }
+        if c.is_ascii_alphabetic() {
+            let ch = self.current_char();
+            return Err(self.err_at(
+                &format!("unknown variable '{ch}' (variables are x, y, z, u)"),
+                self.pos,
+            ));
+        }
+        let ch = self.current_char();
+        Err(self.err_at(&format!("unexpected '{ch}'"), self.pos))
+    }
+}
+
+/// Variables occurring in a parsed polynomial, by name.
+pub fn var_names(p: &QMPoly) -> Vec<&'static str> {
+    p.vars()
+        .into_iter()
+        .filter(|&v| v < NVARS)
+        .map(|v| super::mpoly::VAR_NAMES[v])
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn s(t: &str) -> String {
+        parse_poly(t).unwrap().to_string_canonical()
+    }
+
+    #[test]
+    fn accepts_the_spec_syntax() {
+        assert_eq!(s("2x^2"), "2*x^2");
+        assert_eq!(s("3(x-1)"), "3*x - 3");
+        assert_eq!(s("-x^2"), "-x^2");
+        assert_eq!(s("(x^2-2)^3 (x-1/3)"), "x^7 - 1/3*x^6 - 6*x^5 + 2*x^4 + 12*x^3 - 4*x^2 - 8*x + 8/3");
+        assert_eq!(s("1.5x + 1e-2"), "3/2*x + 1/100");
+        assert_eq!(s("x y z"), "x*y*z");
+        assert_eq!(s("(x-9)^2/9 + y^2/4 + z^2/16 - 1"), "1/9*x^2 + 1/4*y^2 + 1/16*z^2 - 2*x + 8");
+        assert_eq!(s("x - x"), "0");
+        assert_eq!(s("2^10"), "1024");
+        assert_eq!(s("u^2 - 2u"), "u^2 - 2*u");
+    }
+
+    #[test]
+    fn errors_name_problem_and_column() {
+        let cases = [
+            ("x + ", "unexpected end of expression", 5),
+            ("(x + 1", "unclosed '(' (opened here)", 1),
+            ("x^-1", "exponent must be a non-negative integer literal, found '-'", 3),
+            ("x^1.5", "exponent must be a non-negative integer literal", 3),
+            ("1/(x-1)", "division by a non-constant expression ('/' divides only by a number)", 2),
+            ("x/0", "division by zero", 2),
+            ("x + w", "unknown variable 'w' (variables are x, y, z, u)", 5),
+            ("x 2", "a number cannot follow a factor without an operator (write '*')", 3),
+            ("", "empty expression", 1),
+        ];
+        for (t, msg, col) in cases {
+            let e = parse_poly(t).unwrap_err();
+            assert_eq!((e.message.as_str(), e.column), (msg, col), "input {t:?}");
+        }
+        assert!(parse_poly("x^100000000").is_err());
+        assert!(parse_poly("(x+y+z+u+1)^400").is_err());
+        assert!(parse_poly("10^100000000").is_err());
+        let deep = "(".repeat(100_000) + "x" + &")".repeat(100_000);
+        assert!(parse_poly(&deep).is_err());
+    }
+}

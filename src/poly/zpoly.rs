@@ -1,0 +1,532 @@
+//! Univariate polynomials over Z ([`ZPoly`]) and Q ([`QPoly`]): content and
+//! primitive part, gcd, square-free part and factorisation (Yun), exact
+//! evaluation and signs at rationals, Taylor shifts, reversal and root
+//! bounds.
+//!
+//! Key idea (STYLE, "performance habits"): computations run over Z on
+//! primitive polynomials; a polynomial over Q is a rational constant times a
+//! primitive integer polynomial, and rationals appear only at the edges.
+
+use super::upoly::UPoly;
+use crate::number::modular::{Digits, Modulus, primes};
+use crate::number::{Q, sign_z};
+use num_bigint::{BigInt, Sign};
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+
+/// Polynomials with integer coefficients.
+pub type ZPoly = UPoly<BigInt>;
+/// Polynomials with rational coefficients.
+pub type QPoly = UPoly<Q>;
+
+impl UPoly<BigInt> {
+    /// The content: the non-negative gcd of the coefficients (0 for zero).
+    pub fn content(&self) -> BigInt {
+        let mut g = BigInt::zero();
+        for c in self.coeffs().iter().rev() {
+            g = g.gcd(c);
+            if g.is_one() {
+                break;
+            }
+        }
+        g
+    }
+
+    /// The primitive part, normalised to a positive leading coefficient.
+    ///
+    /// ```
+    /// use quadsect::poly::ZPoly;
+    /// let p = ZPoly::from_i64s(&[4, -6, -2]);
+    /// assert_eq!(p.primitive_part(), ZPoly::from_i64s(&[-2, 3, 1]));
+    /// ```
+    pub fn primitive_part(&self) -> ZPoly {
+        if self.is_zero() {
+            return ZPoly::zero();
+        }
+        let mut g = self.content();
+        if self.lc().is_negative() {
+            g = -g;
+        }
+        if g.is_one() {
+            return self.clone();
+        }
+        ZPoly::new(self.coeffs().iter().map(|c| c / &g).collect())
+    }
+
+    /// Converts to a polynomial over Q.
+    pub fn to_q(&self) -> QPoly {
+        self.map(|c| Q::from_integer(c.clone()))
+    }
+
+    /// Writes a rational polynomial as `k · P` with `P` primitive in Z[x] and
+    /// positive leading coefficient; returns `(P, k)`.  Zero gives `(0, 0)`.
+    pub fn from_q(p: &QPoly) -> (ZPoly, Q) {
+        if p.is_zero() {
+            return (ZPoly::zero(), Q::zero());
+        }
+        let l = crate::number::denom_lcm(p.coeffs());
+        let z = ZPoly::new(
+            p.coeffs()
+                .iter()
+                .map(|c| c.numer() * (&l / c.denom()))
+                .collect(),
+        );
+        let pp = z.primitive_part();
+        let k = Q::new(z.lc(), l) / Q::from_integer(pp.lc());
+        (pp, k)
+    }
+
+    /// Exact value at a rational point.
+    pub fn eval_q(&self, x: &Q) -> Q {
+        let (num, den) = self.eval_homogeneous(x.numer(), x.denom());
+        Q::new(num, den)
+    }
+
+    /// `(Σ c_i n^i d^(N-i), d^N)` for `x = n/d`: the value times `d^N`, exact
+    /// in integers.
+    pub fn eval_homogeneous(&self, n: &BigInt, d: &BigInt) -> (BigInt, BigInt) {
+        let c = self.coeffs();
+        if c.is_empty() {
+            return (BigInt::zero(), BigInt::one());
+        }
+        let mut acc = c[c.len() - 1].clone();
+        let mut dpow = BigInt::one();
+        for ci in c.iter().rev().skip(1) {
+            dpow *= d;
+            acc *= n;
+            if !ci.is_zero() {
+                acc += ci * &dpow;
+            }
+        }
+        (acc, dpow)
+    }
+
+    /// Exact sign (-1, 0, 1) of the value at a rational point.
+    pub fn sign_at(&self, x: &Q) -> i32 {
+        // the denominator of a BigRational is positive, so d^N > 0
+        sign_z(&self.eval_homogeneous(x.numer(), x.denom()).0)
+    }
+
+    /// Sign of the value at the dyadic point `m / 2^k`.
+    pub fn sign_at_dyadic(&self, m: &BigInt, k: u64) -> i32 {
+        let c = self.coeffs();
+        if c.is_empty() {
+            return 0;
+        }
+        let mut acc = c[c.len() - 1].clone();
+        let mut sh = 0u64;
+        for ci in c.iter().rev().skip(1) {
+            sh += k;
+            acc *= m;
+            if !ci.is_zero() {
+                acc += ci << (sh as usize);
+            }
+        }
+        sign_z(&acc)
+    }
+
+    /// `x^n p(1/x)`: the coefficients reversed.
+    pub fn reversed(&self) -> ZPoly {
+        let mut c = self.coeffs().to_vec();
+        c.reverse();
+        ZPoly::new(c)
+    }
+
+    /// `p(-x)`.
+    pub fn neg_x(&self) -> ZPoly {
+        ZPoly::new(
+            self.coeffs()
+                .iter()
+                .enumerate()
+                .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
+                .collect(),
+        )
+    }
+
+    /// `p(x + a)` (Taylor shift), `O(n²)` additions and multiplications.
+    pub fn taylor_shift(&self, a: &BigInt) -> ZPoly {
+        let mut c = self.coeffs().to_vec();
+        if a.is_one() {
+            taylor_shift_one(&mut c);
+        } else if !a.is_zero() {
+            let n = c.len();
+            for i in 0..n.saturating_sub(1) {
+                for j in (i..n - 1).rev() {
+                    let (lo, hi) = c.split_at_mut(j + 1);
+                    lo[j] += &hi[0] * a;
+                }
+            }
+        }
+        ZPoly::new(c)
+    }
+
+    /// `2^(k·n) p(x / 2^k)` for `k >= 0` or `p(2^(-k) x)` for `k < 0`,
+    /// always an integer polynomial with the same roots scaled by `2^k`.
+    pub fn scale_roots_pow2(&self, k: i64) -> ZPoly {
+        let c = self.coeffs();
+        let n = c.len();
+        if n == 0 {
+            return ZPoly::zero();
+        }
+        let out = c
+            .iter()
+            .enumerate()
+            .map(|(i, ci)| {
+                if k >= 0 {
+                    ci << ((k as usize) * (n - 1 - i))
+                } else {
+                    ci << (((-k) as usize) * i)
+                }
+            })
+            .collect();
+        ZPoly::new(out)
+    }
+
+    /// An integer `k` with every complex root `|z| < 2^k` (Fujiwara's bound
+    /// in powers of two).  `None` for constants.
+    pub fn root_bound_log2(&self) -> Option<i64> {
+        let n = self.degree().filter(|&d| d > 0)?;
+        let c = self.coeffs();
+        let bn = c[n].bits() as i64;
+        let mut best = i64::MIN;
+        for i in 1..=n {
+            let a = &c[n - i];
+            if a.is_zero() {
+                continue;
+            }
+            // |a/c_n| < 2^(bits(a) - bits(c_n) + 1); the last term has a /2
+            let mut t = a.bits() as i64 - bn + 1;
+            if i == n {
+                t -= 1;
+            }
+            let e = t.div_euclid(i as i64) + if t.rem_euclid(i as i64) != 0 { 1 } else { 0 };
+            best = best.max(e);
+        }
+        if best == i64::MIN {
+            // p = c x^n: all roots are 0
+            return Some(-1);
+        }
+        Some(best + 1)
+    }
+
+    /// Multiplicity of the root 0 (the number of trailing zero coefficients).
+    pub fn zero_root_multiplicity(&self) -> usize {
+        self.coeffs().iter().take_while(|c| c.is_zero()).count()
+    }
+
+    /// Divides out `x^k` for the multiplicity `k` of the root 0.
+    pub fn strip_zero_roots(&self) -> ZPoly {
+        let k = self.zero_root_multiplicity();
+        ZPoly::new(self.coeffs()[k..].to_vec())
+    }
+
+    /// Greatest common divisor, primitive with positive leading coefficient
+    /// (`gcd(0, 0) = 0`).  A modular test first detects the frequent coprime
+    /// case; otherwise the primitive PRS is used.
+    ///
+    /// ```
+    /// use quadsect::poly::ZPoly;
+    /// let a = ZPoly::from_i64s(&[-1, 0, 1]); // x^2 - 1
+    /// let b = ZPoly::from_i64s(&[1, 2, 1]);  // (x + 1)^2
+    /// assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1, 1]));
+    /// ```
+    pub fn gcd(&self, o: &ZPoly) -> ZPoly {
+        if self.is_zero() {
+            return o.primitive_part();
+        }
+        if o.is_zero() {
+            return self.primitive_part();
+        }
+        let (mut a, mut b) = (self.primitive_part(), o.primitive_part());
+        if a.degree() < b.degree() {
+            std::mem::swap(&mut a, &mut b);
+        }
+        if b.degree() == Some(0) {
+            return ZPoly::constant(BigInt::one());
+        }
+        if coprime_mod_p(&a, &b) {
+            return ZPoly::constant(BigInt::one());
+        }
+        while !b.is_zero() {
+            let r = a.pseudo_rem(&b);
+            a = b;
+            b = r.primitive_part();
+            if b.degree() == Some(0) {
+                return ZPoly::constant(BigInt::one());
+            }
+        }
+        a.primitive_part()
+    }
+
+    /// Exact division over Q of primitive integer polynomials whose quotient
+    /// is known to be integral (Gauss' lemma), e.g. `p / gcd(p, q)`.
+    /// Panics if the division is not exact.
+    pub fn div_exact_z(&self, b: &ZPoly) -> ZPoly {
+        self.div_exact(b)
+            .expect("division by a factor must be exact over Z")
+    }
+
+    /// The square-free part `p / gcd(p, p')`, primitive.
+    pub fn squarefree_part(&self) -> ZPoly {
+        if self.degree().unwrap_or(0) == 0 {
+            return self.primitive_part();
+        }
+        let p = self.primitive_part();
+        let g = p.gcd(&p.derivative());
+        if g.degree() == Some(0) {
+            p
+        } else {
+            p.div_exact_z(&g).primitive_part()
+        }
+    }
+
+    /// Square-free factorisation (Yun): `pp(p) = ∏ f_i^i` with the `f_i`
+    /// square-free, pairwise coprime and primitive; returns the non-constant
+    /// `(f_i, i)`.
+    ///
+    /// ```
+    /// use quadsect::poly::ZPoly;
+    /// // (x - 1)^2 (x + 2)
+    /// let p = ZPoly::from_i64s(&[2, -3, 0, 1]);
+    /// let f = p.squarefree_decomposition();
+    /// assert_eq!(f, vec![(ZPoly::from_i64s(&[2, 1]), 1), (ZPoly::from_i64s(&[-1, 1]), 2)]);
+    /// ```
+    pub fn squarefree_decomposition(&self) -> Vec<(ZPoly, u32)> {
+        let a = self.primitive_part();
+        if a.degree().unwrap_or(0) == 0 {
+            return vec![];
+        }
+        let b = a.derivative();
+        let c = a.gcd(&b);
+        let mut w = a.div_exact_z(&c);
+        let mut y = b.div_exact_z(&c);
+        let mut z = &y - &w.derivative();
+        let mut out = Vec::new();
+        let mut i = 1;
+        while w.degree().unwrap_or(0) > 0 {
+            let g = w.gcd(&z);
+            if g.degree().unwrap_or(0) > 0 {
+                out.push((g.clone(), i));
+            }
+            w = w.div_exact_z(&g);
+            y = z.div_exact_z(&g);
+            z = &y - &w.derivative();
+            i += 1;
+        }
+        out
+    }
+
+    /// Division with remainder over Q: `(q, r)` with `self = q·b + r`.
+    pub fn divrem_q(&self, b: &ZPoly) -> (QPoly, QPoly) {
+        let (q, r) = self.pseudo_divrem(b);
+        let k = match (self.degree(), b.degree()) {
+            (Some(da), Some(db)) if da >= db => b.lc().pow((da - db + 1) as u32),
+            _ => BigInt::one(),
+        };
+        let kq = Q::from_integer(k);
+        (
+            q.to_q().map(|c| c / &kq),
+            r.to_q().map(|c| c / &kq),
+        )
+    }
+}
+
+/// In-place Taylor shift by one, `p(x) -> p(x + 1)`, on ascending
+/// coefficients: `n(n+1)/2` big additions, no multiplications.
+pub fn taylor_shift_one(c: &mut [BigInt]) {
+    let n = c.len();
+    for i in 0..n.saturating_sub(1) {
+        for j in (i..n - 1).rev() {
+            let (lo, hi) = c.split_at_mut(j + 1);
+            lo[j] += &hi[0];
+        }
+    }
+}
+
+/// Reduction of an integer polynomial modulo a prime (Montgomery form).
+pub fn reduce_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
+    p.coeffs()
+        .iter()
+        .map(|c| Digits::new(c).reduce(m))
+        .collect()
+}
+
+/// Degree of gcd(a, b) modulo the prime `m.n`, with `a`, `b` as Montgomery
+/// residues (ascending, possibly with leading zeros).
+pub fn gcd_degree_mod(a: &[u64], b: &[u64], m: &Modulus) -> Option<usize> {
+    let mut a: Vec<u64> = a.to_vec();
+    let mut b: Vec<u64> = b.to_vec();
+    trim(&mut a);
+    trim(&mut b);
+    if a.is_empty() && b.is_empty() {
+        return None;
+    }
+    while !b.is_empty() {
+        rem_mod_in_place(&mut a, &b, m);
+        std::mem::swap(&mut a, &mut b);
+    }
+    Some(a.len() - 1)
+}
+
+fn trim(a: &mut Vec<u64>) {
+    while a.last() == Some(&0) {
+        a.pop();
+    }
+}
+
+/// `a := a mod b` over Z/p (Montgomery form), `b` non-zero and trimmed.
+pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Modulus) {
+    let db = b.len() - 1;
+    let inv = m.inv(b[db]).expect("leading coefficient is non-zero");
+    while a.len() > db {
+        let k = a.len() - 1 - db;
+        let t = m.mul(a[a.len() - 1], inv);
+        if t != 0 {
+            for j in 0..db {
+                a[k + j] = m.sub(a[k + j], m.mul(t, b[j]));
+            }
+        }
+        a.pop();
+        trim(a);
+    }
+}
+
+/// True when `a` and `b` are certainly coprime over Q: their gcd modulo a
+/// prime not dividing both leading coefficients is constant.  (`false` means
+/// "unknown"; a modular gcd can only be too large, never too small, when the
+/// degrees are preserved.)
+fn coprime_mod_p(a: &ZPoly, b: &ZPoly) -> bool {
+    for p in primes(2) {
+        let m = Modulus::new(p);
+        let ra = reduce_mod(a, &m);
+        let rb = reduce_mod(b, &m);
+        if ra.last() == Some(&0) || rb.last() == Some(&0) {
+            continue;
+        }
+        return gcd_degree_mod(&ra, &rb, &m) == Some(0);
+    }
+    false
+}
+
+/// Sign of a big integer as `Sign`.
+pub fn sign_of(x: &BigInt) -> Sign {
+    x.sign()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::q;
+
+    #[test]
+    fn gcd_and_squarefree() {
+        let a = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
+        let b = ZPoly::from_i64s(&[-1, 3]); // 3x - 1
+        let p = &a.pow(3) * &b;
+        assert_eq!(p.gcd(&p.derivative()), a.pow(2));
+        assert_eq!(p.squarefree_part(), &a * &b);
+        let d = p.squarefree_decomposition();
+        assert_eq!(d, vec![(b.clone(), 1), (a.clone(), 3)]);
+        assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1]));
+    }
+
+    #[test]
+    fn evaluation_and_shifts() {
+        let p = ZPoly::from_i64s(&[-2, 0, 1]);
+        assert_eq!(p.eval_q(&q(3, 2)), q(1, 4));
+        assert_eq!(p.sign_at(&q(7, 5)), -1);
+        assert_eq!(p.sign_at(&q(3, 2)), 1);
+        assert_eq!(p.sign_at_dyadic(&BigInt::from(3), 1), 1);
+        assert_eq!(p.taylor_shift(&BigInt::from(1)), ZPoly::from_i64s(&[-1, 2, 1]));
+        assert_eq!(p.taylor_shift(&BigInt::from(-2)), ZPoly::from_i64s(&[2, -4, 1]));
+        assert_eq!(p.neg_x(), p);
+        assert_eq!(p.reversed(), ZPoly::from_i64s(&[1, 0, -2]));
+        // roots ±√2 < 2^k
+        let k = p.root_bound_log2().unwrap();
+        assert!(k >= 1);
+        assert_eq!(p.scale_roots_pow2(1), ZPoly::from_i64s(&[-8, 0, 1]));
+    }
+
+    #[test]
+    fn from_q_normalises() {
+        let p = QPoly::new(vec![q(-1, 2), q(0, 1), q(-3, 4)]);
+        let (z, k) = ZPoly::from_q(&p);
+        assert_eq!(z, ZPoly::from_i64s(&[2, 0, 3]));
+        assert_eq!(z.to_q().map(|c| c * &k), p);
+    }
+}
+
+impl UPoly<Q> {
+    /// Division with remainder over the field Q: `(q, r)` with
+    /// `self = q·b + r`, `deg r < deg b`.  Panics if `b` is zero.
+    pub fn divrem(&self, b: &QPoly) -> (QPoly, QPoly) {
+        let db = b.degree().expect("division by the zero polynomial");
+        let Some(da) = self.degree() else {
+            return (QPoly::zero(), QPoly::zero());
+        };
+        if da < db {
+            return (QPoly::zero(), self.clone());
+        }
+        let inv = Q::one() / b.lc();
+        let mut r: Vec<Q> = self.coeffs().to_vec();
+        let mut q = vec![Q::zero(); da - db + 1];
+        for k in (0..=da - db).rev() {
+            let t = &r[k + db] * &inv;
+            if !t.is_zero() {
+                for (j, bj) in b.coeffs().iter().enumerate() {
+                    r[k + j] -= &t * bj;
+                }
+            }
+            q[k] = t;
+        }
+        r.truncate(db);
+        (QPoly::new(q), QPoly::new(r))
+    }
+
+    /// Remainder modulo `b`.
+    pub fn rem(&self, b: &QPoly) -> QPoly {
+        self.divrem(b).1
+    }
+
+    /// Monic version (zero stays zero).
+    pub fn monic(&self) -> QPoly {
+        if self.is_zero() {
+            return QPoly::zero();
+        }
+        let inv = Q::one() / self.lc();
+        self.map(|c| c * &inv)
+    }
+
+    /// Extended gcd over Q: `(g, s, t)` with `g = s·self + t·b`, `g` monic.
+    pub fn gcdext(&self, b: &QPoly) -> (QPoly, QPoly, QPoly) {
+        let (mut r0, mut r1) = (self.clone(), b.clone());
+        let (mut s0, mut s1) = (QPoly::constant(Q::one()), QPoly::zero());
+        let (mut t0, mut t1) = (QPoly::zero(), QPoly::constant(Q::one()));
+        while !r1.is_zero() {
+            let (q, r) = r0.divrem(&r1);
+            r0 = std::mem::replace(&mut r1, r);
+            let s2 = &s0 - &(&q * &s1);
+            s0 = std::mem::replace(&mut s1, s2);
+            let t2 = &t0 - &(&q * &t1);
+            t0 = std::mem::replace(&mut t1, t2);
+        }
+        if r0.is_zero() {
+            return (r0, s0, t0);
+        }
+        let inv = Q::one() / r0.lc();
+        (
+            r0.map(|c| c * &inv),
+            s0.map(|c| c * &inv),
+            t0.map(|c| c * &inv),
+        )
+    }
+
+    /// Exact value at a rational point.
+    pub fn eval_rational(&self, x: &Q) -> Q {
+        let mut acc = Q::zero();
+        for c in self.coeffs().iter().rev() {
+            acc = acc * x + c;
+        }
+        acc
+    }
+}

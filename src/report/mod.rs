@@ -1,0 +1,8 @@
+//! Output: JSON values (SPEC field names) and human-readable text.  This is
+//! the only layer that formats results; the computations return plain data.
+
+mod kernel;
+mod tangent;
+
+pub use kernel::{alg_json, resultant_human, resultant_json, roots_human, roots_json, table};
+pub use tangent::{alg_json_in, qsqrt_json, tangent_human, tangent_json, upoly_string};

@@ -1,0 +1,26 @@
+//! Real roots of univariate integer polynomials: Sturm sequences
+//! ([`SturmSequence`]), Descartes' rule of signs and VCA isolation
+//! ([`isolate_real_roots`]), refinement, real algebraic numbers
+//! ([`RealAlg`]) with exact comparison and sign queries, and the root
+//! summary behind `quadsect roots` ([`analyze_roots`]).
+//!
+//! Key idea: two independent exact counters — Sturm's theorem and Descartes
+//! bisection — must agree (the property tests check it), and zero is always
+//! decided exactly (gcds and exact evaluation at rationals).
+
+mod algebraic;
+mod enclose;
+mod isolate;
+mod rational;
+mod report;
+mod sturm;
+
+pub use algebraic::{RealAlg, has_root_in_open};
+pub use enclose::{eval_interval, eval_q, eval_ratio_interval, eval_xyz, value_at, value_polynomial};
+pub use isolate::{
+    RootInterval, bisect_once, descartes_bounds, isolate_real_roots, isolate_squarefree, refine,
+    sign_variations,
+};
+pub use rational::{rational_roots, simplest_rational_in, split_cubic};
+pub use report::{RealRoot, RootReport, analyze_roots};
+pub use sturm::{Point, SturmSequence, count_real_roots_in};

@@ -1,0 +1,174 @@
+//! Sturm sequences: exact counts of distinct real roots in any interval.
+//!
+//! For a square-free `p`, the sequence `p0 = p, p1 = p', p_{i+1} =
+//! -rem(p_{i-1}, p_i)` (each term may be scaled by a positive constant, so
+//! it is computed with primitive pseudo-remainders over Z) satisfies
+//! `#{roots in (a, b]} = V(a) - V(b)` where `V` counts sign variations
+//! (zeros dropped).  The half-open form holds at roots too because a
+//! square-free `p` changes sign at each root.
+
+use crate::number::Q;
+use crate::poly::ZPoly;
+use num_bigint::BigInt;
+use num_traits::{Signed, Zero};
+
+/// The Sturm sequence of the square-free part of a polynomial.
+#[derive(Clone, Debug)]
+pub struct SturmSequence {
+    seq: Vec<ZPoly>,
+}
+
+/// A point of the extended real line where a Sturm sequence is evaluated.
+#[derive(Clone, Debug)]
+pub enum Point {
+    /// −∞.
+    NegInf,
+    /// A rational number.
+    At(Q),
+    /// +∞.
+    PosInf,
+}
+
+impl SturmSequence {
+    /// Builds the sequence for the square-free part of `p` (non-constant or
+    /// constant; the zero polynomial gives an empty sequence).
+    pub fn new(p: &ZPoly) -> SturmSequence {
+        if p.is_zero() {
+            return SturmSequence { seq: vec![] };
+        }
+        let p0 = p.squarefree_part();
+        let mut seq = vec![p0.clone()];
+        let p1 = p0.derivative().primitive_part();
+        if p1.is_zero() {
+            return SturmSequence { seq };
+        }
+        seq.push(p1);
+        loop {
+            let n = seq.len();
+            let (a, b) = (&seq[n - 2], &seq[n - 1]);
+            if b.degree() == Some(0) {
+                break;
+            }
+            let r = a.pseudo_rem(b);
+            if r.is_zero() {
+                break;
+            }
+            // prem = lc(b)^(δ+1)·a mod b; we need a positive multiple of -(a mod b)
+            let delta = a.degree().unwrap_or(0) - b.degree().unwrap_or(0);
+            let factor_negative = b.lc().is_negative() && delta % 2 == 0;
+            let pp = r.primitive_part();
+            // primitive_part makes lc > 0; restore the sign of r first
+            let r_sign_pos = r.lc().is_positive();
+            let mut next = if r_sign_pos { pp } else { -pp };
+            // next has the sign of prem; Sturm wants sign of -(a mod b)
+            if !factor_negative {
+                next = -next;
+            }
+            seq.push(next);
+        }
+        SturmSequence { seq }
+    }
+
+    /// The polynomials of the sequence.
+    pub fn polys(&self) -> &[ZPoly] {
+        &self.seq
+    }
+
+    /// Number of sign variations at a point.
+    pub fn variations(&self, x: &Point) -> usize {
+        let mut last = 0i32;
+        let mut v = 0;
+        for p in &self.seq {
+            let s = match x {
+                Point::At(q) => p.sign_at(q),
+                Point::PosInf => sign_lc(p, false),
+                Point::NegInf => sign_lc(p, true),
+            };
+            if s != 0 {
+                if last != 0 && s != last {
+                    v += 1;
+                }
+                last = s;
+            }
+        }
+        v
+    }
+
+    /// Number of distinct real roots in `(a, b]` (`a < b`).
+    pub fn count_in(&self, a: &Point, b: &Point) -> usize {
+        self.variations(a).saturating_sub(self.variations(b))
+    }
+
+    /// Number of distinct real roots.
+    pub fn count_all(&self) -> usize {
+        self.count_in(&Point::NegInf, &Point::PosInf)
+    }
+
+    /// Number of distinct positive roots (in `(0, ∞)`).
+    pub fn count_positive(&self) -> usize {
+        self.count_in(&Point::At(Q::zero()), &Point::PosInf)
+    }
+
+    /// Number of distinct negative roots (in `(−∞, 0)`).
+    pub fn count_negative(&self) -> usize {
+        let c = self.count_in(&Point::NegInf, &Point::At(Q::zero()));
+        if self.has_root_at_zero() { c - 1 } else { c }
+    }
+
+    /// True when 0 is a root.
+    pub fn has_root_at_zero(&self) -> bool {
+        self.seq
+            .first()
+            .is_some_and(|p| p.coeffs().first().is_some_and(|c| c.is_zero()))
+    }
+}
+
+fn sign_lc(p: &ZPoly, at_neg_inf: bool) -> i32 {
+    let lc: BigInt = p.lc();
+    let s = if lc.is_positive() {
+        1
+    } else if lc.is_negative() {
+        -1
+    } else {
+        0
+    };
+    if at_neg_inf && p.degree().unwrap_or(0) % 2 == 1 { -s } else { s }
+}
+
+/// Number of distinct real roots of `p` in `(a, b]`, by a Sturm sequence.
+///
+/// ```
+/// use quadsect::roots::count_real_roots_in;
+/// use quadsect::poly::ZPoly;
+/// use quadsect::number::q;
+/// let p = ZPoly::from_i64s(&[0, -2, 0, 1]); // x^3 - 2x
+/// assert_eq!(count_real_roots_in(&p, &q(-2, 1), &q(0, 1)), 2); // -√2 and 0
+/// ```
+pub fn count_real_roots_in(p: &ZPoly, a: &Q, b: &Q) -> usize {
+    SturmSequence::new(p).count_in(&Point::At(a.clone()), &Point::At(b.clone()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::q;
+
+    #[test]
+    fn counts() {
+        // (x-1)(x-2)(x+3)(x^2+1)
+        let p = &(&ZPoly::from_i64s(&[-1, 1]) * &ZPoly::from_i64s(&[-2, 1]))
+            * &(&ZPoly::from_i64s(&[3, 1]) * &ZPoly::from_i64s(&[1, 0, 1]));
+        let s = SturmSequence::new(&p);
+        assert_eq!(s.count_all(), 3);
+        assert_eq!(s.count_positive(), 2);
+        assert_eq!(s.count_negative(), 1);
+        assert_eq!(s.count_in(&Point::At(q(1, 1)), &Point::At(q(2, 1))), 1);
+        assert_eq!(s.count_in(&Point::At(q(0, 1)), &Point::At(q(1, 1))), 1);
+        let z = SturmSequence::new(&ZPoly::from_i64s(&[0, -2, 0, 1]));
+        assert_eq!((z.count_positive(), z.count_negative(), z.has_root_at_zero()), (1, 1, true));
+        // negative leading coefficients and a multiple root
+        let m = ZPoly::from_i64s(&[0, 0, 1, -1]).scale(&BigInt::from(-3)); // -3x^2(1-x)... 
+        let sm = SturmSequence::new(&m);
+        assert_eq!(sm.count_all(), 2);
+    }
+}

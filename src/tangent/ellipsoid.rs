@@ -1,0 +1,238 @@
+//! Quadrics as matrices, and the validation of the ellipsoid E (SPEC §2):
+//! degree 2, definite quadratic part, non-empty and not a single point.
+
+use crate::error::Error;
+use crate::number::Q;
+use crate::poly::QMPoly;
+use crate::poly::mpoly::{MPoly, NVARS};
+use num_traits::{Signed, Zero};
+
+/// A polynomial of degree ≤ 2 in x, y, z written as
+/// `q(p) = pᵀ A p + 2 bᵀ p + c` with `A` symmetric.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QuadricForm {
+    /// Symmetric matrix of the quadratic part.
+    pub a: [[Q; 3]; 3],
+    /// Half the linear part.
+    pub b: [Q; 3],
+    /// Constant term.
+    pub c: Q,
+}
+
+fn zero3() -> [Q; 3] {
+    std::array::from_fn(|_| Q::zero())
+}
+
+impl QuadricForm {
+    /// Reads a polynomial of total degree ≤ 2 in x, y, z; `None` otherwise.
+    pub fn from_poly(p: &QMPoly) -> Option<QuadricForm> {
+        if p.total_degree().unwrap_or(0) > 2 || p.vars().iter().any(|&v| v > 2) {
+            return None;
+        }
+        let mut a: [[Q; 3]; 3] = std::array::from_fn(|_| zero3());
+        let mut b = zero3();
+        let mut c = Q::zero();
+        let two = Q::from_integer(2.into());
+        for (e, k) in p.terms() {
+            let idx: Vec<usize> = (0..3).flat_map(|v| std::iter::repeat_n(v, e[v] as usize)).collect();
+            match idx.as_slice() {
+                [] => c = k.clone(),
+                [i] => b[*i] = k / &two,
+                [i, j] if i == j => a[*i][*i] = k.clone(),
+                [i, j] => {
+                    a[*i][*j] = k / &two;
+                    a[*j][*i] = k / &two;
+                }
+                _ => return None,
+            }
+        }
+        Some(QuadricForm { a, b, c })
+    }
+
+    /// Back to a polynomial.
+    pub fn to_poly(&self) -> QMPoly {
+        let mut terms = Vec::new();
+        let two = Q::from_integer(2.into());
+        for i in 0..3 {
+            for j in i..3 {
+                let mut e = [0u32; NVARS];
+                e[i] += 1;
+                e[j] += 1;
+                let k = if i == j { self.a[i][i].clone() } else { &self.a[i][j] * &two };
+                terms.push((e, k));
+            }
+            let mut e = [0u32; NVARS];
+            e[i] = 1;
+            terms.push((e, &self.b[i] * &two));
+        }
+        terms.push(([0; NVARS], self.c.clone()));
+        MPoly::from_terms(terms)
+    }
+
+    /// Exact value at a rational point.
+    pub fn eval(&self, p: &[Q; 3]) -> Q {
+        let mut s = self.c.clone();
+        for i in 0..3 {
+            s += &self.b[i] * &p[i] * Q::from_integer(2.into());
+            for j in 0..3 {
+                s += &self.a[i][j] * &p[i] * &p[j];
+            }
+        }
+        s
+    }
+
+    /// `A p + b` (half the gradient).
+    pub fn half_gradient(&self, p: &[Q; 3]) -> [Q; 3] {
+        std::array::from_fn(|i| {
+            let mut s = self.b[i].clone();
+            for j in 0..3 {
+                s += &self.a[i][j] * &p[j];
+            }
+            s
+        })
+    }
+
+    /// Leading principal minors `(a00, a00 a11 - a01², det A)`.
+    pub fn principal_minors(&self) -> (Q, Q, Q) {
+        let a = &self.a;
+        let m1 = a[0][0].clone();
+        let m2 = &a[0][0] * &a[1][1] - &a[0][1] * &a[1][0];
+        (m1, m2, det3(a))
+    }
+
+    /// The negated form.
+    pub fn neg(&self) -> QuadricForm {
+        QuadricForm {
+            a: std::array::from_fn(|i| std::array::from_fn(|j| -&self.a[i][j])),
+            b: std::array::from_fn(|i| -&self.b[i]),
+            c: -&self.c,
+        }
+    }
+
+    /// The quadratic part is positive definite.
+    pub fn is_positive_definite(&self) -> bool {
+        let (m1, m2, m3) = self.principal_minors();
+        m1.is_positive() && m2.is_positive() && m3.is_positive()
+    }
+}
+
+/// Determinant of a 3×3 rational matrix.
+pub fn det3(a: &[[Q; 3]; 3]) -> Q {
+    &a[0][0] * (&a[1][1] * &a[2][2] - &a[1][2] * &a[2][1])
+        - &a[0][1] * (&a[1][0] * &a[2][2] - &a[1][2] * &a[2][0])
+        + &a[0][2] * (&a[1][0] * &a[2][1] - &a[1][1] * &a[2][0])
+}
+
+/// Inverse of an invertible 3×3 rational matrix.
+pub fn inv3(a: &[[Q; 3]; 3]) -> Option<[[Q; 3]; 3]> {
+    let d = det3(a);
+    if d.is_zero() {
+        return None;
+    }
+    let cof = |i: usize, j: usize| -> Q {
+        let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
+        let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
+        let m = &a[r[0]][c[0]] * &a[r[1]][c[1]] - &a[r[0]][c[1]] * &a[r[1]][c[0]];
+        if (i + j) % 2 == 0 { m } else { -m }
+    };
+    // inverse = adj / det, adj[i][j] = cof(j, i)
+    Some(std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i) / &d)))
+}
+
+/// A validated ellipsoid `E(p) = pᵀ A p + 2 bᵀ p + c` with `A` positive
+/// definite and `E(centre) < 0` (the input is negated when its quadratic
+/// part is negative definite; the zero set is the same).
+#[derive(Clone, Debug)]
+pub struct Ellipsoid {
+    /// The equation, oriented so that E < 0 inside.
+    pub poly: QMPoly,
+    /// Its matrices.
+    pub form: QuadricForm,
+    /// Centre `-A⁻¹ b`.
+    pub center: [Q; 3],
+    /// `E(centre) < 0`.
+    pub center_value: Q,
+    /// True when the input was negated.
+    pub negated: bool,
+}
+
+impl Ellipsoid {
+    /// Validates `p` as an ellipsoid, with a clear error otherwise.
+    ///
+    /// ```
+    /// use quadsect::poly::parse_poly;
+    /// use quadsect::tangent::Ellipsoid;
+    /// assert!(Ellipsoid::new(&parse_poly("x^2 + y^2 + z^2 - 25").unwrap()).is_ok());
+    /// let e = Ellipsoid::new(&parse_poly("x^2 + y^2 - z^2 - 1").unwrap()).unwrap_err();
+    /// assert!(e.to_string().contains("not definite"));
+    /// ```
+    pub fn new(p: &QMPoly) -> Result<Ellipsoid, Error> {
+        if p.vars().iter().any(|&v| v > 2) {
+            return Err(Error::input(
+                "not-an-ellipsoid",
+                "the ellipsoid must be a polynomial in x, y, z only",
+            ));
+        }
+        let deg = p.total_degree().unwrap_or(0);
+        if deg != 2 {
+            return Err(Error::input(
+                "not-an-ellipsoid",
+                format!("an ellipsoid has total degree 2, this polynomial has degree {deg}"),
+            ));
+        }
+        let mut form = QuadricForm::from_poly(p)
+            .ok_or_else(|| Error::Internal("degree-2 polynomial without a quadric form".into()))?;
+        let (m1, m2, m3) = form.principal_minors();
+        let negated;
+        if m1.is_positive() && m2.is_positive() && m3.is_positive() {
+            negated = false;
+        } else if m1.is_negative() && m2.is_positive() && m3.is_negative() {
+            negated = true;
+            form = form.neg();
+        } else if m3.is_zero() {
+            return Err(Error::input(
+                "not-an-ellipsoid",
+                "the quadratic part is singular (det = 0): a paraboloid, cylinder or plane pair, not an ellipsoid",
+            ));
+        } else {
+            return Err(Error::input(
+                "not-an-ellipsoid",
+                "the quadratic part is not definite: a hyperboloid or cone, not an ellipsoid",
+            ));
+        }
+        let inv = inv3(&form.a).ok_or_else(|| Error::Internal("definite matrix not invertible".into()))?;
+        let center: [Q; 3] = std::array::from_fn(|i| {
+            let mut s = Q::zero();
+            for j in 0..3 {
+                s -= &inv[i][j] * &form.b[j];
+            }
+            s
+        });
+        let center_value = form.eval(&center);
+        if center_value.is_zero() {
+            return Err(Error::input(
+                "not-an-ellipsoid",
+                format!(
+                    "the zero set is a single point ({}, {}, {}), not an ellipsoid",
+                    crate::number::fmt_q(&center[0]),
+                    crate::number::fmt_q(&center[1]),
+                    crate::number::fmt_q(&center[2])
+                ),
+            ));
+        }
+        if center_value.is_positive() {
+            return Err(Error::input(
+                "not-an-ellipsoid",
+                "the zero set is empty (an imaginary ellipsoid: the polynomial never vanishes on real points)",
+            ));
+        }
+        let poly = if negated { -p } else { p.clone() };
+        Ok(Ellipsoid {
+            poly,
+            form,
+            center,
+            center_value,
+            negated,
+        })
+    }
+}

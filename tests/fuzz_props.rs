@@ -1,0 +1,45 @@
+//! Fuzzing of the text inputs with proptest (the libFuzzer targets in
+//! `fuzz/` need nightly): parsers and batch lines never panic, and what
+//! parses prints back to itself.
+
+use proptest::prelude::*;
+use quadsect::batch::answer_line;
+use quadsect::number::parse_rational;
+use quadsect::poly::parse_poly;
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, .. ProptestConfig::default() })]
+
+    /// Arbitrary Unicode text: no panic; a successful parse round-trips.
+    #[test]
+    fn parse_poly_never_panics(s in "\\PC{0,60}") {
+        let _ = parse_rational(&s);
+        if let Ok(p) = parse_poly(&s) {
+            prop_assert_eq!(parse_poly(&p.to_string_canonical()).unwrap(), p);
+        }
+    }
+
+    /// Text built from the grammar's own alphabet reaches deep into the parser.
+    #[test]
+    fn parse_poly_grammar_alphabet(s in "[-+*/^() xyzu0-9.eE]{0,80}") {
+        if let Ok(p) = parse_poly(&s) {
+            prop_assert_eq!(parse_poly(&p.to_string_canonical()).unwrap(), p);
+        }
+    }
+
+    /// Any batch line gives exactly one answer object with `ok`.
+    #[test]
+    fn batch_line_always_answers(s in "\\PC{0,80}") {
+        let v = answer_line(&s);
+        prop_assert!(v.get("ok").and_then(|b| b.as_bool()).is_some());
+    }
+
+    /// Well-formed JSON with random fields still answers.
+    #[test]
+    fn batch_json_fields(op in "(roots|resultant|tangent|natural|bogus)", a in "[-+*/^() xyzu0-9]{0,20}", b in "[-+*/^() xyzu0-9]{0,20}") {
+        let line = serde_json::json!({"id": 1, "op": op, "poly": a, "f": a, "g": b, "var": "x",
+            "ellipsoid": a, "surface": b, "a": a, "b": b}).to_string();
+        let v = answer_line(&line);
+        prop_assert_eq!(v.get("id").cloned(), Some(serde_json::json!(1)));
+    }
+}
