@@ -42,6 +42,7 @@ import json
 import os
 import random
 import sys
+import time
 from decimal import Decimal, localcontext
 
 import sympy
@@ -69,6 +70,10 @@ SIG_DIGITS = 60
 
 # --------------------------------------------------------------------------
 # formatting
+
+
+def log(msg):
+    print(msg, file=sys.stderr, flush=True)
 
 
 def fmt_rat(c):
@@ -288,7 +293,9 @@ def root_cases():
             poly_str = poly_to_str(expand(expr), [x] if expand(expr).free_symbols else [])
         # round trip through the string
         assert expand(parse_back(poly_str) - expr) == 0, cid
+        t0 = time.time()
         data = sympy_root_data(expr)
+        log("roots %-36s %6.2fs" % (cid, time.time() - t0))
         case = {"id": cid, "poly": poly_str}
         case.update(data)
         cases.append(case)
@@ -421,9 +428,11 @@ def resultant_cases():
             g_str = poly_to_str(g)
         assert expand(parse_back(f_str) - f) == 0, cid
         assert expand(parse_back(g_str) - g) == 0, cid
+        t0 = time.time()
         r = expand(resultant(f, g, v))
         assert v not in r.free_symbols
-        check_resultant(f, g, v, r)
+        how = check_resultant(f, g, v, r)
+        log("resultant %-32s %6.2fs (%s)" % (cid, time.time() - t0, how))
         r_str = poly_to_str(r)
         assert expand(parse_back(r_str) - r) == 0
         cases.append({"id": cid, "f": f_str, "g": g_str, "var": var, "resultant": r_str})

@@ -16,12 +16,9 @@ fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error
 }
 
 fn str_field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, Error> {
-    field(obj, name)?.as_str().ok_or_else(|| {
-        Error::input(
-            "bad-field",
-            format!("field \"{name}\" must be a string"),
-        )
-    })
+    field(obj, name)?
+        .as_str()
+        .ok_or_else(|| Error::input("bad-field", format!("field \"{name}\" must be a string")))
 }
 
 /// Runs one operation given as a JSON object (`op` and its arguments) and
@@ -42,8 +39,23 @@ pub fn run_op(obj: &Map<String, Value>) -> Result<Value, Error> {
             Ok(crate::report::resultant_json(&r))
         }
         "tangent" => {
-            let r = crate::tangent::decide_str(str_field(obj, "ellipsoid")?, str_field(obj, "surface")?)?;
+            let r = crate::tangent::decide_str(
+                str_field(obj, "ellipsoid")?,
+                str_field(obj, "surface")?,
+            )?;
             Ok(crate::report::tangent_json(&r))
+        }
+        "natural" => {
+            let q = |name: &str| -> Result<crate::natural::Natural, Error> {
+                let v = field(obj, name)?;
+                match v {
+                    Value::String(s) => crate::natural::parse_natural(s),
+                    other => crate::natural::types::from_json(other),
+                }
+                .map_err(|e| e.context(&format!("in \"{name}\"")))
+            };
+            let r = crate::natural::classify(&q("a")?, &q("b")?)?;
+            Ok(crate::report::natural_json(&r))
         }
         other => Err(Error::input(
             "unknown-op",
@@ -81,7 +93,9 @@ pub fn answer_line(line: &str) -> Value {
     };
     match result {
         Ok(v) => json!({"id": id, "ok": true, "result": v}),
-        Err(e) => json!({"id": id, "ok": false, "error": {"kind": e.kind(), "message": e.message()}}),
+        Err(e) => {
+            json!({"id": id, "ok": false, "error": {"kind": e.kind(), "message": e.message()}})
+        }
     }
 }
 
@@ -99,7 +113,11 @@ pub fn panic_message(p: &Box<dyn std::any::Any + Send>) -> String {
 /// Reads JSON lines from `input` and writes one answer line per input line
 /// to `out`, in order, processing chunks in parallel.  `progress` shows a
 /// spinner with the count of lines on stderr.  Returns the number of lines.
-pub fn run_batch(input: impl BufRead, mut out: impl Write, progress: bool) -> std::io::Result<usize> {
+pub fn run_batch(
+    input: impl BufRead,
+    mut out: impl Write,
+    progress: bool,
+) -> std::io::Result<usize> {
     use rayon::prelude::*;
     let bar = if progress {
         let b = indicatif::ProgressBar::new_spinner();

@@ -25,8 +25,14 @@ pub struct ExampleResult {
 fn kernel_examples() -> Vec<ExampleResult> {
     let mut out = Vec::new();
     for (expr, title) in [
-        ("x^3 - 2x", "three simple roots: one negative, one positive, one at 0"),
-        ("(x^2-2)^3 (x-1/3)", "multiple roots: ±√2 with multiplicity 3 and 1/3"),
+        (
+            "x^3 - 2x",
+            "three simple roots: one negative, one positive, one at 0",
+        ),
+        (
+            "(x^2-2)^3 (x-1/3)",
+            "multiple roots: ±√2 with multiplicity 3 and 1/3",
+        ),
     ] {
         if let Ok(r) = crate::ops::roots(expr) {
             out.push(ExampleResult {
@@ -71,7 +77,10 @@ pub fn to_json(r: &[ExampleResult]) -> Value {
 pub fn to_human(r: &[ExampleResult]) -> String {
     let mut s = String::new();
     for e in r {
-        s.push_str(&format!("=== {} — {}\n$ {}\n", e.source, e.title, e.command));
+        s.push_str(&format!(
+            "=== {} — {}\n$ {}\n",
+            e.source, e.title, e.command
+        ));
         s.push_str(&indent(&e.ours));
         if !e.paper.is_empty() {
             s.push_str("  paper printed:\n");

@@ -5,6 +5,7 @@ pub mod batch;
 pub mod elim;
 pub mod error;
 pub mod examples;
+pub mod natural;
 pub mod number;
 pub mod ops;
 pub mod poly;

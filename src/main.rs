@@ -58,6 +58,16 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
+    Natural {
+        /// First quadric: JSON or short syntax, e.g. "cone vertex=0,0,0 axis=1,0,0 tan2=1/3".
+        a: String,
+        /// Second quadric.
+        b: String,
+        /// JSON output (SPEC §4).
+        #[arg(long)]
+        json: bool,
+    },
     /// JSON lines in (file or - for stdin), one JSON answer line out per input line.
     Batch {
         /// Input file; standard input when absent or "-".
@@ -78,11 +88,19 @@ fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Examples { json } => {
             let r = quadsect::examples::run_all();
-            emit(json, quadsect::examples::to_json(&r), quadsect::examples::to_human(&r));
+            emit(
+                json,
+                quadsect::examples::to_json(&r),
+                quadsect::examples::to_human(&r),
+            );
         }
         Command::Roots { expr, json } => {
             let r = quadsect::ops::roots(&expr)?;
-            emit(json, quadsect::report::roots_json(&r), quadsect::report::roots_human(&r));
+            emit(
+                json,
+                quadsect::report::roots_json(&r),
+                quadsect::report::roots_human(&r),
+            );
         }
         Command::Resultant { f, g, var, json } => {
             let r = quadsect::ops::resultant(&f, &g, &var)?;
@@ -102,6 +120,14 @@ fn run(cli: Cli) -> Result<(), Error> {
                 json,
                 quadsect::report::tangent_json(&r),
                 quadsect::report::tangent_human(&r),
+            );
+        }
+        Command::Natural { a, b, json } => {
+            let r = quadsect::natural::classify_str(&a, &b)?;
+            emit(
+                json,
+                quadsect::report::natural_json(&r),
+                quadsect::report::natural_human(&r),
             );
         }
         Command::Batch { file } => {

@@ -55,7 +55,10 @@ fn check_isolation(p: &ZPoly) {
             assert_eq!(sq.sign_at(&r.lo), 0, "exact root is not a root");
         } else {
             assert!(r.lo < r.hi);
-            assert!(sq.sign_at(&r.lo) * sq.sign_at(&r.hi) < 0, "no sign change on {r:?}");
+            assert!(
+                sq.sign_at(&r.lo) * sq.sign_at(&r.hi) < 0,
+                "no sign change on {r:?}"
+            );
         }
     }
 }
@@ -214,10 +217,17 @@ fn sign_of_detects_zero_exactly() {
     let roots = RealAlg::roots_of(&p);
     assert_eq!(roots.len(), 3);
     let q = ZPoly::from_i64s(&[-2, 0, 1]);
-    assert_eq!(roots.iter().map(|r| r.sign_of(&q)).collect::<Vec<_>>(), vec![0, 0, 1]);
+    assert_eq!(
+        roots.iter().map(|r| r.sign_of(&q)).collect::<Vec<_>>(),
+        vec![0, 0, 1]
+    );
     // a number 10^-40 away from √2 is not √2
     let big = num_traits::pow(BigInt::from(10), 40);
-    let near = ZPoly::new(vec![-(BigInt::from(2) * &big * &big + BigInt::one()), BigInt::zero(), &big * &big]);
+    let near = ZPoly::new(vec![
+        -(BigInt::from(2) * &big * &big + BigInt::one()),
+        BigInt::zero(),
+        &big * &big,
+    ]);
     let r = RealAlg::roots_of(&near);
     assert!(r[1].sign_of(&q).is_positive());
     let s2 = &roots[1];

@@ -165,11 +165,22 @@ impl GPoly {
 }
 
 /// `k1·a − k2·(m·b)` for sorted term lists (k1, k2 integers), sorted.
-fn lin_comb(a: &[(Mono, BigInt)], k1: &BigInt, b: &[(Mono, BigInt)], m: &Mono, k2: &BigInt, ord: MonoOrder) -> Vec<(Mono, BigInt)> {
+fn lin_comb(
+    a: &[(Mono, BigInt)],
+    k1: &BigInt,
+    b: &[(Mono, BigInt)],
+    m: &Mono,
+    k2: &BigInt,
+    ord: MonoOrder,
+) -> Vec<(Mono, BigInt)> {
     let mut out = Vec::with_capacity(a.len() + b.len());
     let (mut i, mut j) = (0, 0);
     while i < a.len() || j < b.len() {
-        let bm = if j < b.len() { Some(mono_mul(&b[j].0, m)) } else { None };
+        let bm = if j < b.len() {
+            Some(mono_mul(&b[j].0, m))
+        } else {
+            None
+        };
         let c = match (i < a.len(), &bm) {
             (true, Some(bm)) => cmp_mono(&a[i].0, bm, ord),
             (true, None) => Ordering::Greater,
@@ -318,7 +329,11 @@ pub fn groebner(input: Vec<GPoly>, nvars: usize, ord: MonoOrder) -> GroebnerBasi
         let mf = mono_div(&pr.lcm, f.lm());
         let mg = mono_div(&pr.lcm, g.lm());
         // S = (b/h)·mf·f − (a/h)·mg·g
-        let fm: Vec<(Mono, BigInt)> = f.terms.iter().map(|(m, c)| (mono_mul(m, &mf), c.clone())).collect();
+        let fm: Vec<(Mono, BigInt)> = f
+            .terms
+            .iter()
+            .map(|(m, c)| (mono_mul(m, &mf), c.clone()))
+            .collect();
         let s = lin_comb(&fm, &(b / &h), &g.terms, &mg, &(a / &h), ord);
         let mut sp = GPoly { terms: s };
         sp.make_primitive();
@@ -352,7 +367,10 @@ pub fn groebner(input: Vec<GPoly>, nvars: usize, ord: MonoOrder) -> GroebnerBasi
     // reduced basis: tail-reduce each element by the others
     let mut reduced = Vec::with_capacity(min.len());
     for i in 0..min.len() {
-        let others: Vec<&GPoly> = (0..min.len()).filter(|&j| j != i).map(|j| &min[j]).collect();
+        let others: Vec<&GPoly> = (0..min.len())
+            .filter(|&j| j != i)
+            .map(|j| &min[j])
+            .collect();
         let (r, _) = reduce_full(&min[i], &others, ord);
         reduced.push(r);
     }
@@ -383,7 +401,8 @@ fn update(polys: &mut Vec<GPoly>, active: &mut Vec<usize>, pairs: &mut Vec<Pair>
     while let Some(p) = c.pop() {
         let pm = polys[p.i].lm();
         if coprime(pm, &hm)
-            || (!c.iter().any(|q| divides(&q.lcm, &p.lcm)) && !d.iter().any(|q| divides(&q.lcm, &p.lcm)))
+            || (!c.iter().any(|q| divides(&q.lcm, &p.lcm))
+                && !d.iter().any(|q| divides(&q.lcm, &p.lcm)))
         {
             d.push(p);
         }
@@ -406,7 +425,9 @@ fn update(polys: &mut Vec<GPoly>, active: &mut Vec<usize>, pairs: &mut Vec<Pair>
 impl GroebnerBasis {
     /// True when the ideal is the whole ring (no common zero).
     pub fn is_unit(&self) -> bool {
-        self.polys.len() == 1 && self.polys[0].terms.len() == 1 && self.polys[0].terms[0].0 == [0; GV]
+        self.polys.len() == 1
+            && self.polys[0].terms.len() == 1
+            && self.polys[0].terms[0].0 == [0; GV]
     }
 
     /// True when the ideal has finitely many complex zeros: every variable
@@ -472,8 +493,11 @@ impl GroebnerBasis {
                 let h = a.gcd(b);
                 let mf = mono_div(&l, f.lm());
                 let mg = mono_div(&l, g.lm());
-                let fm: Vec<(Mono, BigInt)> =
-                    f.terms.iter().map(|(m, c)| (mono_mul(m, &mf), c.clone())).collect();
+                let fm: Vec<(Mono, BigInt)> = f
+                    .terms
+                    .iter()
+                    .map(|(m, c)| (mono_mul(m, &mf), c.clone()))
+                    .collect();
                 let s = GPoly {
                     terms: lin_comb(&fm, &(b / &h), &g.terms, &mg, &(a / &h), self.order),
                 };
@@ -490,7 +514,11 @@ impl GroebnerBasis {
     pub fn eliminated(&self, from: usize) -> Vec<GPoly> {
         self.polys
             .iter()
-            .filter(|g| g.terms.iter().all(|(m, _)| m[..from].iter().all(|&e| e == 0)))
+            .filter(|g| {
+                g.terms
+                    .iter()
+                    .all(|(m, _)| m[..from].iter().all(|&e| e == 0))
+            })
             .cloned()
             .collect()
     }

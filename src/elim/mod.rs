@@ -15,7 +15,7 @@ pub mod quotient;
 use crate::number::Q;
 use crate::number::modular::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};
 use crate::poly::mpoly::{MPoly, NVARS, QMPoly, ZMPoly};
-use crate::poly::zpoly::{rem_mod_in_place, reduce_mod};
+use crate::poly::zpoly::{reduce_mod, rem_mod_in_place};
 use crate::poly::{Ring, UPoly, ZPoly};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -412,8 +412,8 @@ pub fn reduce_zpoly_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::poly::parse_poly;
     use crate::poly::mpoly::{X, Y};
+    use crate::poly::parse_poly;
 
     #[test]
     fn three_routes_agree_on_small_cases() {
@@ -427,7 +427,10 @@ mod tests {
         // antisymmetry: Res(g, f) = (-1)^(4·3) Res(f, g)
         assert_eq!(resultant_modular(&g, &f), c);
         let h = ZPoly::from_i64s(&[1, 1]);
-        assert_eq!(resultant_subresultant(&(&f * &h), &(&g * &h)), BigInt::zero());
+        assert_eq!(
+            resultant_subresultant(&(&f * &h), &(&g * &h)),
+            BigInt::zero()
+        );
         assert_eq!(resultant_modular(&(&f * &h), &(&g * &h)), BigInt::zero());
     }
 

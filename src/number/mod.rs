@@ -173,8 +173,7 @@ pub fn approx_decimal(x: &Q, digits: usize) -> String {
 
 /// Least common multiple of the denominators of a list of rationals.
 pub fn denom_lcm<'a>(xs: impl IntoIterator<Item = &'a Q>) -> Z {
-    xs.into_iter()
-        .fold(Z::one(), |acc, x| acc.lcm(x.denom()))
+    xs.into_iter().fold(Z::one(), |acc, x| acc.lcm(x.denom()))
 }
 
 /// Integer square root test: `Some(r)` with `r*r == x` when `x >= 0` is a

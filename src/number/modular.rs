@@ -313,7 +313,12 @@ mod tests {
     #[test]
     fn miller_rabin_small() {
         let ps: Vec<u64> = (1..60).filter(|&n| is_prime_u64(n)).collect();
-        assert_eq!(ps, vec![2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59]);
+        assert_eq!(
+            ps,
+            vec![
+                2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59
+            ]
+        );
         assert!(!is_prime_u64(3215031751)); // strong pseudoprime to bases 2,3,5,7
     }
 }

@@ -221,7 +221,9 @@ mod tests {
 
     #[test]
     fn bad_literals() {
-        for bad in ["", "-", "1.", "abc", "1/", "1/x", "1e", "1e-", "2 3", "1/0.0", "--1"] {
+        for bad in [
+            "", "-", "1.", "abc", "1/", "1/x", "1e", "1e-", "2 3", "1/0.0", "--1",
+        ] {
             assert!(parse_rational(bad).is_err(), "{bad:?} should fail");
         }
         assert_eq!(parse_rational("1e").unwrap_err().column, 2);

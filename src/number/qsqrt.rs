@@ -259,8 +259,14 @@ mod tests {
         let s2 = QSqrt::sqrt(qi(2));
         let x = s2.mul(&s2);
         assert_eq!(x, QSqrt::rational(qi(2)));
-        assert_eq!(s2.cmp_exact(&QSqrt::rational(q(141421, 100000))), Ordering::Greater);
-        assert_eq!(s2.cmp_exact(&QSqrt::rational(q(141422, 100000))), Ordering::Less);
+        assert_eq!(
+            s2.cmp_exact(&QSqrt::rational(q(141421, 100000))),
+            Ordering::Greater
+        );
+        assert_eq!(
+            s2.cmp_exact(&QSqrt::rational(q(141422, 100000))),
+            Ordering::Less
+        );
         let inv = s2.inv().unwrap();
         assert_eq!(inv.mul(&s2), QSqrt::rational(qi(1)));
         assert_eq!(s2.approx(10), "1.414213562");

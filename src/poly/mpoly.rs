@@ -108,7 +108,9 @@ impl<C: Ring> MPoly<C> {
         if c.ris_zero() {
             MPoly::zero()
         } else {
-            MPoly { terms: vec![(e, c)] }
+            MPoly {
+                terms: vec![(e, c)],
+            }
         }
     }
 
@@ -237,7 +239,11 @@ impl<C: Ring> MPoly<C> {
                 out.push(a[i].clone());
                 i += 1;
             } else if i == a.len() || b[j].0 > a[i].0 {
-                let c = if negate { b[j].1.rneg() } else { b[j].1.clone() };
+                let c = if negate {
+                    b[j].1.rneg()
+                } else {
+                    b[j].1.clone()
+                };
                 out.push((b[j].0, c));
                 j += 1;
             } else {

@@ -334,11 +334,11 @@ impl Parser<'_> {
                 start,
             ));
         }
-        if self.pos < self.s.len() && (self.s[self.pos] == b'.' || self.s[self.pos] == b'e' || self.s[self.pos] == b'E') && self.s.get(self.pos + 1).is_some_and(|c| c.is_ascii_digit()) {
-            return Err(self.err_at(
-                "exponent must be a non-negative integer literal",
-                start,
-            ));
+        if self.pos < self.s.len()
+            && (self.s[self.pos] == b'.' || self.s[self.pos] == b'e' || self.s[self.pos] == b'E')
+            && self.s.get(self.pos + 1).is_some_and(|c| c.is_ascii_digit())
+        {
+            return Err(self.err_at("exponent must be a non-negative integer literal", start));
         }
         let digits = &self.text[start..self.pos];
         let e: u64 = if digits.len() > 12 {
@@ -466,10 +466,16 @@ mod tests {
         assert_eq!(s("2x^2"), "2*x^2");
         assert_eq!(s("3(x-1)"), "3*x - 3");
         assert_eq!(s("-x^2"), "-x^2");
-        assert_eq!(s("(x^2-2)^3 (x-1/3)"), "x^7 - 1/3*x^6 - 6*x^5 + 2*x^4 + 12*x^3 - 4*x^2 - 8*x + 8/3");
+        assert_eq!(
+            s("(x^2-2)^3 (x-1/3)"),
+            "x^7 - 1/3*x^6 - 6*x^5 + 2*x^4 + 12*x^3 - 4*x^2 - 8*x + 8/3"
+        );
         assert_eq!(s("1.5x + 1e-2"), "3/2*x + 1/100");
         assert_eq!(s("x y z"), "x*y*z");
-        assert_eq!(s("(x-9)^2/9 + y^2/4 + z^2/16 - 1"), "1/9*x^2 + 1/4*y^2 + 1/16*z^2 - 2*x + 8");
+        assert_eq!(
+            s("(x-9)^2/9 + y^2/4 + z^2/16 - 1"),
+            "1/9*x^2 + 1/4*y^2 + 1/16*z^2 - 2*x + 8"
+        );
         assert_eq!(s("x - x"), "0");
         assert_eq!(s("2^10"), "1024");
         assert_eq!(s("u^2 - 2u"), "u^2 - 2*u");
@@ -480,12 +486,32 @@ mod tests {
         let cases = [
             ("x + ", "unexpected end of expression", 5),
             ("(x + 1", "unclosed '(' (opened here)", 1),
-            ("x^-1", "exponent must be a non-negative integer literal, found '-'", 3),
-            ("x^1.5", "exponent must be a non-negative integer literal", 3),
-            ("1/(x-1)", "division by a non-constant expression ('/' divides only by a number)", 2),
+            (
+                "x^-1",
+                "exponent must be a non-negative integer literal, found '-'",
+                3,
+            ),
+            (
+                "x^1.5",
+                "exponent must be a non-negative integer literal",
+                3,
+            ),
+            (
+                "1/(x-1)",
+                "division by a non-constant expression ('/' divides only by a number)",
+                2,
+            ),
             ("x/0", "division by zero", 2),
-            ("x + w", "unknown variable 'w' (variables are x, y, z, u)", 5),
-            ("x 2", "a number cannot follow a factor without an operator (write '*')", 3),
+            (
+                "x + w",
+                "unknown variable 'w' (variables are x, y, z, u)",
+                5,
+            ),
+            (
+                "x 2",
+                "a number cannot follow a factor without an operator (write '*')",
+                3,
+            ),
             ("", "empty expression", 1),
         ];
         for (t, msg, col) in cases {

@@ -136,6 +136,10 @@ impl Ring for BigRational {
         *self -= o;
     }
     fn div_exact(&self, o: &Self) -> Option<Self> {
-        if Zero::is_zero(o) { None } else { Some(self / o) }
+        if Zero::is_zero(o) {
+            None
+        } else {
+            Some(self / o)
+        }
     }
 }

@@ -324,10 +324,7 @@ impl UPoly<BigInt> {
             _ => BigInt::one(),
         };
         let kq = Q::from_integer(k);
-        (
-            q.to_q().map(|c| c / &kq),
-            r.to_q().map(|c| c / &kq),
-        )
+        (q.to_q().map(|c| c / &kq), r.to_q().map(|c| c / &kq))
     }
 }
 
@@ -437,8 +434,14 @@ mod tests {
         assert_eq!(p.sign_at(&q(7, 5)), -1);
         assert_eq!(p.sign_at(&q(3, 2)), 1);
         assert_eq!(p.sign_at_dyadic(&BigInt::from(3), 1), 1);
-        assert_eq!(p.taylor_shift(&BigInt::from(1)), ZPoly::from_i64s(&[-1, 2, 1]));
-        assert_eq!(p.taylor_shift(&BigInt::from(-2)), ZPoly::from_i64s(&[2, -4, 1]));
+        assert_eq!(
+            p.taylor_shift(&BigInt::from(1)),
+            ZPoly::from_i64s(&[-1, 2, 1])
+        );
+        assert_eq!(
+            p.taylor_shift(&BigInt::from(-2)),
+            ZPoly::from_i64s(&[2, -4, 1])
+        );
         assert_eq!(p.neg_x(), p);
         assert_eq!(p.reversed(), ZPoly::from_i64s(&[1, 0, -2]));
         // roots ±√2 < 2^k

@@ -2,7 +2,9 @@
 //! the only layer that formats results; the computations return plain data.
 
 mod kernel;
+mod natural;
 mod tangent;
 
 pub use kernel::{alg_json, resultant_human, resultant_json, roots_human, roots_json, table};
+pub use natural::{natural_human, natural_json};
 pub use tangent::{alg_json_in, qsqrt_json, tangent_human, tangent_json, upoly_string};

@@ -126,11 +126,21 @@ pub fn tangent_json(r: &TangentReport) -> Value {
     if let Value::Object(m) = &mut cert {
         m.insert(
             "critical_values".into(),
-            Value::Array(c.critical_values.iter().map(crate::report::alg_json).collect()),
+            Value::Array(
+                c.critical_values
+                    .iter()
+                    .map(crate::report::alg_json)
+                    .collect(),
+            ),
         );
         m.insert(
             "nonreal_point_values".into(),
-            Value::Array(c.nonreal_point_values.iter().map(crate::report::alg_json).collect()),
+            Value::Array(
+                c.nonreal_point_values
+                    .iter()
+                    .map(crate::report::alg_json)
+                    .collect(),
+            ),
         );
         m.insert("witness_negative".into(), witness_json(&c.negative_witness));
         m.insert("witness_positive".into(), witness_json(&c.positive_witness));
@@ -170,7 +180,12 @@ fn alg_human(a: &RealAlg) -> String {
 
 fn point_human(w: &WitnessPoint) -> String {
     let c: Vec<String> = w.coords.iter().map(|x| x.to_string()).collect();
-    format!("({})  S = {} ≈ {}", c.join(", "), w.value, w.value.approx(12))
+    format!(
+        "({})  S = {} ≈ {}",
+        c.join(", "),
+        w.value,
+        w.value.approx(12)
+    )
 }
 
 /// `quadsect tangent` for people: the verdict in one line, then min/max with
@@ -186,7 +201,12 @@ pub fn tangent_human(r: &TangentReport) -> String {
         .containment
         .map(|c| format!(", {}", c.as_str()))
         .unwrap_or_default();
-    s.push_str(&format!("verdict   {}{}{}\n", r.verdict.as_str(), side, cont));
+    s.push_str(&format!(
+        "verdict   {}{}{}\n",
+        r.verdict.as_str(),
+        side,
+        cont
+    ));
     if let Some(reason) = &r.reason {
         s.push_str(&format!("reason    {reason}\n"));
     }
@@ -225,7 +245,11 @@ pub fn tangent_human(r: &TangentReport) -> String {
     let vals: Vec<String> = c.critical_values.iter().map(|v| v.approx(12)).collect();
     s.push_str(&format!("  real critical values {}\n", vals.join(", ")));
     if !c.nonreal_point_values.is_empty() {
-        let v: Vec<String> = c.nonreal_point_values.iter().map(|v| v.approx(12)).collect();
+        let v: Vec<String> = c
+            .nonreal_point_values
+            .iter()
+            .map(|v| v.approx(12))
+            .collect();
         s.push_str(&format!(
             "  roots of D(u) at non-real critical points (not attained): {}\n",
             v.join(", ")

@@ -299,7 +299,11 @@ impl RealAlg {
     /// Interval `[lo, hi]` strings and the defining polynomial, for output.
     pub fn describe(&self) -> (String, [String; 2], String) {
         let (lo, hi) = self.interval();
-        (self.poly_string(), [fmt_q(&lo), fmt_q(&hi)], self.approx(20))
+        (
+            self.poly_string(),
+            [fmt_q(&lo), fmt_q(&hi)],
+            self.approx(20),
+        )
     }
 }
 

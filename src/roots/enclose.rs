@@ -117,7 +117,9 @@ pub fn value_at(alpha: &RealAlg, num: &QPoly, den: &QPoly) -> Option<RealAlg> {
         }
         let (lo, hi) = a.interval();
         if let Some((vl, vh)) = eval_ratio_interval(num, den, &lo, &hi) {
-            let hits: Vec<usize> = (0..ivs.len()).filter(|&j| meets(&ivs[j], &vl, &vh)).collect();
+            let hits: Vec<usize> = (0..ivs.len())
+                .filter(|&j| meets(&ivs[j], &vl, &vh))
+                .collect();
             if hits.len() == 1 {
                 return Some(RealAlg::from_interval(&r, &ivs[hits[0]]).simplify());
             }

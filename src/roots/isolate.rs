@@ -60,7 +60,10 @@ pub fn sign_variations(c: &[BigInt]) -> usize {
 /// multiplicity) with the same parity.
 pub fn descartes_bounds(p: &ZPoly) -> (usize, usize) {
     let q = p.strip_zero_roots();
-    (sign_variations(q.coeffs()), sign_variations(q.neg_x().coeffs()))
+    (
+        sign_variations(q.coeffs()),
+        sign_variations(q.neg_x().coeffs()),
+    )
 }
 
 /// Sign variations of `(x+1)^n q(1/(x+1))`, stopping early at 2: returns
@@ -136,11 +139,8 @@ fn isolate_unit(q: Vec<BigInt>) -> Vec<Found> {
             1 => out.push(Found::Open(c, j)),
             _ => {
                 let n = poly.len() - 1;
-                let mut left: Vec<BigInt> = poly
-                    .iter()
-                    .enumerate()
-                    .map(|(i, x)| x << (n - i))
-                    .collect();
+                let mut left: Vec<BigInt> =
+                    poly.iter().enumerate().map(|(i, x)| x << (n - i)).collect();
                 remove_pow2(&mut left);
                 let mut right = left.clone();
                 taylor_shift_one(&mut right);
@@ -265,7 +265,11 @@ pub fn isolate_squarefree(sq: &ZPoly) -> Vec<RootInterval> {
         return vec![];
     }
     let has_zero = sq.coeffs()[0].is_zero();
-    let core = if has_zero { sq.strip_zero_roots() } else { sq.clone() };
+    let core = if has_zero {
+        sq.strip_zero_roots()
+    } else {
+        sq.clone()
+    };
     let mut neg: Vec<RootInterval> = isolate_positive(&core.neg_x())
         .into_iter()
         .map(|iv| RootInterval {
@@ -356,7 +360,9 @@ mod tests {
             .fold(ZPoly::from_i64s(&[1]), |acc, f| &acc * &ZPoly::from_i64s(f));
         check(&p, 5);
         // ∏ (x - k), k = 1..20
-        let w = (1..=20).fold(ZPoly::from_i64s(&[1]), |acc, k| &acc * &ZPoly::from_i64s(&[-k, 1]));
+        let w = (1..=20).fold(ZPoly::from_i64s(&[1]), |acc, k| {
+            &acc * &ZPoly::from_i64s(&[-k, 1])
+        });
         check(&w, 20);
         // close roots: (x - 1/3)(x - 1/3 - 10^-30)
         let big = num_traits::pow(BigInt::from(10), 30);

@@ -14,9 +14,12 @@ mod isolate;
 mod rational;
 mod report;
 mod sturm;
+mod zerodim;
 
 pub use algebraic::{RealAlg, has_root_in_open};
-pub use enclose::{eval_interval, eval_q, eval_ratio_interval, eval_xyz, value_at, value_polynomial};
+pub use enclose::{
+    eval_interval, eval_q, eval_ratio_interval, eval_xyz, value_at, value_polynomial,
+};
 pub use isolate::{
     RootInterval, bisect_once, descartes_bounds, isolate_real_roots, isolate_squarefree, refine,
     sign_variations,
@@ -24,3 +27,4 @@ pub use isolate::{
 pub use rational::{rational_roots, simplest_rational_in, split_cubic};
 pub use report::{RealRoot, RootReport, analyze_roots};
 pub use sturm::{Point, SturmSequence, count_real_roots_in};
+pub use zerodim::{Rur, solve_zero_dim};

@@ -114,7 +114,8 @@ mod tests {
     #[test]
     fn rational_roots_found() {
         // (7x + 3)(x - 5)(x^2 + x - 1)
-        let p = &(&ZPoly::from_i64s(&[3, 7]) * &ZPoly::from_i64s(&[-5, 1])) * &ZPoly::from_i64s(&[-1, 1, 1]);
+        let p = &(&ZPoly::from_i64s(&[3, 7]) * &ZPoly::from_i64s(&[-5, 1]))
+            * &ZPoly::from_i64s(&[-1, 1, 1]);
         assert_eq!(rational_roots(&p), vec![q(-3, 7), q(5, 1)]);
         let (r, rest) = split_cubic(&(&ZPoly::from_i64s(&[3, 7]) * &ZPoly::from_i64s(&[-1, 1, 1])));
         assert_eq!(r, vec![q(-3, 7)]);

@@ -70,7 +70,10 @@ pub fn analyze_roots(p: &ZPoly) -> RootReport {
             // a linear factor: the root is the rational -f0/f1, exactly
             let r = crate::number::Q::new(-f.coeff(0), f.coeff(1));
             roots.push(RealRoot {
-                interval: RootInterval { lo: r.clone(), hi: r },
+                interval: RootInterval {
+                    lo: r.clone(),
+                    hi: r,
+                },
                 multiplicity: mult,
                 factor: f.clone(),
             });
@@ -106,11 +109,15 @@ pub fn analyze_roots(p: &ZPoly) -> RootReport {
     let zero_multiplicity = p.zero_root_multiplicity() as u32;
     let positive = roots
         .iter()
-        .filter(|r| r.interval.lo > Zero::zero() || (r.interval.lo.is_zero() && !r.interval.is_exact()))
+        .filter(|r| {
+            r.interval.lo > Zero::zero() || (r.interval.lo.is_zero() && !r.interval.is_exact())
+        })
         .count();
     let negative = roots
         .iter()
-        .filter(|r| r.interval.hi < Zero::zero() || (r.interval.hi.is_zero() && !r.interval.is_exact()))
+        .filter(|r| {
+            r.interval.hi < Zero::zero() || (r.interval.hi.is_zero() && !r.interval.is_exact())
+        })
         .count();
     let (dp, dn) = descartes_bounds(p);
     RootReport {

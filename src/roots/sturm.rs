@@ -132,7 +132,11 @@ fn sign_lc(p: &ZPoly, at_neg_inf: bool) -> i32 {
     } else {
         0
     };
-    if at_neg_inf && p.degree().unwrap_or(0) % 2 == 1 { -s } else { s }
+    if at_neg_inf && p.degree().unwrap_or(0) % 2 == 1 {
+        -s
+    } else {
+        s
+    }
 }
 
 /// Number of distinct real roots of `p` in `(a, b]`, by a Sturm sequence.
@@ -165,7 +169,10 @@ mod tests {
         assert_eq!(s.count_in(&Point::At(q(1, 1)), &Point::At(q(2, 1))), 1);
         assert_eq!(s.count_in(&Point::At(q(0, 1)), &Point::At(q(1, 1))), 1);
         let z = SturmSequence::new(&ZPoly::from_i64s(&[0, -2, 0, 1]));
-        assert_eq!((z.count_positive(), z.count_negative(), z.has_root_at_zero()), (1, 1, true));
+        assert_eq!(
+            (z.count_positive(), z.count_negative(), z.has_root_at_zero()),
+            (1, 1, true)
+        );
         // negative leading coefficients and a multiple root
         let m = ZPoly::from_i64s(&[0, 0, 1, -1]).scale(&BigInt::from(-3)); // -3x^2(1-x)... 
         let sm = SturmSequence::new(&m);

@@ -23,172 +23,15 @@
 use super::ellipsoid::Ellipsoid;
 use super::witness::{WitnessPoint, find_witness};
 use crate::elim::groebner::{GPoly, MonoOrder, groebner};
-use crate::elim::quotient::{Quotient, krylov_minpoly, mat_comb, solve_columns};
 use crate::error::Error;
 use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, U, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
-use crate::roots::{RealAlg, eval_q, simplest_rational_in, value_at, value_polynomial};
+use crate::roots::{
+    RealAlg, Rur, simplest_rational_in, solve_zero_dim, value_at, value_polynomial,
+};
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
-
-/// A rational univariate representation of the zeros of a radical
-/// zero-dimensional system in x, y, z.
-#[derive(Clone, Debug)]
-pub struct Rur {
-    /// Dimension of the quotient of the original ideal (zeros with
-    /// multiplicity).
-    pub multiplicity_dim: usize,
-    /// Number of distinct zeros.
-    pub points: usize,
-    /// The separating form `t = c0·x + c1·y + c2·z`.
-    pub form: [Q; 3],
-    /// `f(t)`: square-free, its roots are the values of `t` at the zeros.
-    pub f: ZPoly,
-    /// `x, y, z` as polynomials in `t` (degree < deg f).
-    pub coords: [QPoly; 3],
-    /// Extra polynomials (e.g. S) as polynomials in `t`.
-    pub extra: Vec<QPoly>,
-    /// The real roots of `f`, increasing: one per real zero.
-    pub real_roots: Vec<RealAlg>,
-    /// True when the ideal had to be made radical.
-    pub made_radical: bool,
-}
-
-const SLOTS: [usize; 3] = [X, Y, Z];
-
-fn to_g(p: &QMPoly) -> GPoly {
-    GPoly::from_mpoly(p, &SLOTS, MonoOrder::GrevLex)
-}
-
-/// Solves a zero-dimensional system in x, y, z exactly: `Ok(None)` when the
-/// system has infinitely many complex zeros.
-pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, Error> {
-    let ord = MonoOrder::GrevLex;
-    let input: Vec<GPoly> = gens.iter().filter(|g| !g.is_zero()).map(to_g).collect();
-    let gb = groebner(input.clone(), 3, ord);
-    if gb.is_unit() {
-        return Ok(Some(Rur {
-            multiplicity_dim: 0,
-            points: 0,
-            form: [qi(1), qi(0), qi(0)],
-            f: ZPoly::constant(1.into()),
-            coords: [QPoly::zero(), QPoly::zero(), QPoly::zero()],
-            extra: extra.iter().map(|_| QPoly::zero()).collect(),
-            real_roots: vec![],
-            made_radical: false,
-        }));
-    }
-    let Some(mut quo) = Quotient::new(gb) else {
-        return Ok(None);
-    };
-    let multiplicity_dim = quo.dim();
-    // radical: the minimal polynomials of x, y, z must be square-free
-    let mut made_radical = false;
-    let mut mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
-    let mut sq_add = Vec::new();
-    for (v, m) in mats.iter().enumerate() {
-        let (mp, _) = krylov_minpoly(m, &quo.one());
-        let (mz, _) = ZPoly::from_q(&mp);
-        let sq = mz.squarefree_part();
-        if sq.degree() != mz.degree() {
-            sq_add.push(MPoly::from_univariate(&sq.to_q(), SLOTS[v]));
-        }
-    }
-    if !sq_add.is_empty() {
-        made_radical = true;
-        let mut all = input;
-        all.extend(sq_add.iter().map(to_g));
-        let gb2 = groebner(all, 3, ord);
-        quo = Quotient::new(gb2)
-            .ok_or_else(|| Error::Internal("radical of a zero-dimensional ideal is not zero-dimensional".into()))?;
-        mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
-    }
-    let d = quo.dim();
-    // a separating linear form
-    let candidates: [(i64, i64); 12] = [
-        (0, 0),
-        (1, 0),
-        (0, 1),
-        (1, 1),
-        (1, -1),
-        (2, 1),
-        (1, 2),
-        (2, -1),
-        (-1, 3),
-        (3, 5),
-        (5, -7),
-        (7, 11),
-    ];
-    let one = quo.one();
-    let mut chosen = None;
-    for (a, b) in candidates {
-        let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
-        let (mp, vecs) = krylov_minpoly(&mt, &one);
-        if mp.degree() == Some(d) {
-            chosen = Some(([qi(1), qi(a), qi(b)], mp, vecs));
-            break;
-        }
-    }
-    let (form, mp, vecs) = match chosen {
-        Some(c) => c,
-        None => {
-            // deterministic wider search
-            let mut found = None;
-            'outer: for a in -20i64..=20 {
-                for b in -20i64..=20 {
-                    let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
-                    let (mp, vecs) = krylov_minpoly(&mt, &one);
-                    if mp.degree() == Some(d) {
-                        found = Some(([qi(1), qi(a), qi(b)], mp, vecs));
-                        break 'outer;
-                    }
-                }
-            }
-            found.ok_or_else(|| Error::Internal("no separating linear form found".into()))?
-        }
-    };
-    // shape: coordinates of x, y, z, extras in the basis 1, t, …, t^(d-1)
-    let mut rhs: Vec<Vec<Q>> = (0..3)
-        .map(|v| crate::elim::quotient::mat_vec(&mats[v], &one))
-        .collect();
-    for p in extra {
-        rhs.push(nf_rational(&quo, p));
-    }
-    let sol = solve_columns(&vecs, &rhs)
-        .ok_or_else(|| Error::Internal("Krylov basis of a separating element is singular".into()))?;
-    let polys: Vec<QPoly> = sol.into_iter().map(QPoly::new).collect();
-    let (f, _) = ZPoly::from_q(&mp);
-    let real_roots = RealAlg::roots_of(&f);
-    Ok(Some(Rur {
-        multiplicity_dim,
-        points: d,
-        form,
-        f,
-        coords: [polys[0].clone(), polys[1].clone(), polys[2].clone()],
-        extra: polys[3..].to_vec(),
-        real_roots,
-        made_radical,
-    }))
-}
-
-/// Normal-form coordinates of a rational polynomial.
-fn nf_rational(quo: &Quotient, p: &QMPoly) -> Vec<Q> {
-    if p.is_zero() {
-        return vec![Q::zero(); quo.dim()];
-    }
-    let (z, k) = p.to_primitive_z();
-    let g = GPoly::from_zmpoly(&z, &SLOTS, MonoOrder::GrevLex);
-    quo.nf(&g).into_iter().map(|c| c * &k).collect()
-}
-
-impl Rur {
-    /// A rational approximation of the real zero number `i`.
-    pub fn approx_point(&self, i: usize, bits: u32) -> [Q; 3] {
-        let t = self.real_roots[i].to_rational_approx(bits);
-        std::array::from_fn(|k| eval_q(&self.coords[k], &t))
-    }
-}
 
 /// The critical points of S on E (finite case).
 #[derive(Clone, Debug)]
@@ -216,7 +59,13 @@ impl CriticalAnalysis {
     }
 
     /// A witness near a real critical point whose value is `value`.
-    pub fn witness(&self, value: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
+    pub fn witness(
+        &self,
+        value: &RealAlg,
+        e: &Ellipsoid,
+        s: &QMPoly,
+        want: i32,
+    ) -> Option<WitnessPoint> {
         let i = self
             .values
             .iter()
@@ -307,7 +156,10 @@ fn elimination_ideal_values(gens: &[QMPoly], s: &QMPoly) -> Result<ZPoly, Error>
     let gb = groebner(input, 4, ord);
     let mut d = ZPoly::zero();
     for g in gb.eliminated(3) {
-        let p = g.to_mpoly(&slots).to_univariate(U).unwrap_or_else(QPoly::zero);
+        let p = g
+            .to_mpoly(&slots)
+            .to_univariate(U)
+            .unwrap_or_else(QPoly::zero);
         let (z, _) = ZPoly::from_q(&p);
         d = if d.is_zero() { z } else { d.gcd(&z) };
     }
@@ -323,8 +175,15 @@ fn elimination_ideal_values(gens: &[QMPoly], s: &QMPoly) -> Result<ZPoly, Error>
 fn level_has_real_point(e: &Ellipsoid, s: &QMPoly, q: &Q) -> Result<Option<(Rur, [Q; 3])>, Error> {
     let cross = cross_gradients(s, &e.poly);
     let sq = s - &MPoly::constant(q.clone());
-    for l in [[1i64, 2, 3], [3, -1, 2], [2, 5, -3], [7, 3, 11], [-5, 13, 4]] {
-        let det = &(&cross[0].scale(&qi(l[0])) + &cross[1].scale(&qi(l[1]))) + &cross[2].scale(&qi(l[2]));
+    for l in [
+        [1i64, 2, 3],
+        [3, -1, 2],
+        [2, 5, -3],
+        [7, 3, 11],
+        [-5, 13, 4],
+    ] {
+        let det =
+            &(&cross[0].scale(&qi(l[0])) + &cross[1].scale(&qi(l[1]))) + &cross[2].scale(&qi(l[2]));
         if let Some(rur) = solve_zero_dim(&[e.poly.clone(), sq.clone(), det], &[])? {
             return Ok(Some((rur, [qi(l[0]), qi(l[1]), qi(l[2])])));
         }
@@ -351,8 +210,16 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
     let mut tests: Vec<Q> = Vec::new();
     let k = roots.len();
     for j in 0..=k {
-        let lo = if j == 0 { None } else { Some(roots[j - 1].interval().1) };
-        let hi = if j == k { None } else { Some(roots[j].interval().0) };
+        let lo = if j == 0 {
+            None
+        } else {
+            Some(roots[j - 1].interval().1)
+        };
+        let hi = if j == k {
+            None
+        } else {
+            Some(roots[j].interval().0)
+        };
         let q = match (lo, hi) {
             (None, None) => Q::zero(),
             (None, Some(h)) => h - Q::one(),
@@ -395,8 +262,15 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
             let c = e.center.clone();
             let mut p = c.clone();
             p[0] += Q::one();
-            let w = super::witness::witness_at(e, s, &p).or_else(|| super::witness::witness_at(e, s, &c));
-            match w.and_then(|w| if w.value.is_rational() { Some(w.value.a) } else { None }) {
+            let w = super::witness::witness_at(e, s, &p)
+                .or_else(|| super::witness::witness_at(e, s, &c));
+            match w.and_then(|w| {
+                if w.value.is_rational() {
+                    Some(w.value.a)
+                } else {
+                    None
+                }
+            }) {
                 Some(v) => vec![RealAlg::Rational(v)],
                 None => {
                     return Err(Error::Internal(
@@ -417,7 +291,13 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
 impl LevelSetAnalysis {
     /// A witness with S of sign `want`, from a level curve at a rational
     /// level of that sign strictly between ν and μ.
-    pub fn witness(&self, value: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
+    pub fn witness(
+        &self,
+        value: &RealAlg,
+        e: &Ellipsoid,
+        s: &QMPoly,
+        want: i32,
+    ) -> Option<WitnessPoint> {
         let (nu, mu) = (self.attained.first()?, self.attained.last()?);
         let _ = value;
         // a rational level q with sign(q) = want and ν < q < μ
@@ -439,7 +319,10 @@ impl LevelSetAnalysis {
             return None;
         }
         let q = simplest_rational_in(&lo, &hi);
-        if q.is_zero() || nu.cmp_rational(&q) != Ordering::Less || mu.cmp_rational(&q) != Ordering::Greater {
+        if q.is_zero()
+            || nu.cmp_rational(&q) != Ordering::Less
+            || mu.cmp_rational(&q) != Ordering::Greater
+        {
             return None;
         }
         let (rur, _) = level_has_real_point(e, s, &q).ok()??;

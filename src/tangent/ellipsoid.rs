@@ -34,7 +34,9 @@ impl QuadricForm {
         let mut c = Q::zero();
         let two = Q::from_integer(2.into());
         for (e, k) in p.terms() {
-            let idx: Vec<usize> = (0..3).flat_map(|v| std::iter::repeat_n(v, e[v] as usize)).collect();
+            let idx: Vec<usize> = (0..3)
+                .flat_map(|v| std::iter::repeat_n(v, e[v] as usize))
+                .collect();
             match idx.as_slice() {
                 [] => c = k.clone(),
                 [i] => b[*i] = k / &two,
@@ -58,7 +60,11 @@ impl QuadricForm {
                 let mut e = [0u32; NVARS];
                 e[i] += 1;
                 e[j] += 1;
-                let k = if i == j { self.a[i][i].clone() } else { &self.a[i][j] * &two };
+                let k = if i == j {
+                    self.a[i][i].clone()
+                } else {
+                    &self.a[i][j] * &two
+                };
                 terms.push((e, k));
             }
             let mut e = [0u32; NVARS];
@@ -136,7 +142,9 @@ pub fn inv3(a: &[[Q; 3]; 3]) -> Option<[[Q; 3]; 3]> {
         if (i + j) % 2 == 0 { m } else { -m }
     };
     // inverse = adj / det, adj[i][j] = cof(j, i)
-    Some(std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i) / &d)))
+    Some(std::array::from_fn(|i| {
+        std::array::from_fn(|j| cof(j, i) / &d)
+    }))
 }
 
 /// A validated ellipsoid `E(p) = pᵀ A p + 2 bᵀ p + c` with `A` positive
@@ -200,7 +208,8 @@ impl Ellipsoid {
                 "the quadratic part is not definite: a hyperboloid or cone, not an ellipsoid",
             ));
         }
-        let inv = inv3(&form.a).ok_or_else(|| Error::Internal("definite matrix not invertible".into()))?;
+        let inv = inv3(&form.a)
+            .ok_or_else(|| Error::Internal("definite matrix not invertible".into()))?;
         let center: [Q; 3] = std::array::from_fn(|i| {
             let mut s = Q::zero();
             for j in 0..3 {

@@ -216,8 +216,9 @@ fn eliminate_rec(system: Vec<ZMPoly>, order: &[usize], ctx: &mut Ctx) -> Result<
         }
         return Ok(g.primitive_part());
     };
-    let (with_v, mut without): (Vec<ZMPoly>, Vec<ZMPoly>) =
-        sys.into_iter().partition(|p| p.degree_in(v).unwrap_or(0) > 0);
+    let (with_v, mut without): (Vec<ZMPoly>, Vec<ZMPoly>) = sys
+        .into_iter()
+        .partition(|p| p.degree_in(v).unwrap_or(0) > 0);
     if with_v.len() <= 1 {
         // v is determined by (at most) one equation: no condition on the rest
         return eliminate_rec(without, rest, ctx);

@@ -204,17 +204,31 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
                 let real: Vec<RealAlg> = an.real_values();
                 let (vals, nonreal) = split_values(&real, &an.judging);
                 let j = an.judging.clone();
-                (vals, nonreal, j, Method::CriticalIdeal(an), WitnessFinder::Critical)
+                (
+                    vals,
+                    nonreal,
+                    j,
+                    Method::CriticalIdeal(an),
+                    WitnessFinder::Critical,
+                )
             }
             critical::Outcome::Curves(ls) => {
                 let j = ls.judging.clone();
                 let vals = ls.attained.clone();
                 let (_, nonreal) = split_values(&vals, &j);
-                (vals, nonreal, j, Method::LevelSets(ls), WitnessFinder::Level)
+                (
+                    vals,
+                    nonreal,
+                    j,
+                    Method::LevelSets(ls),
+                    WitnessFinder::Level,
+                )
             }
         }
     };
-    Ok(finish(&e, ellipsoid, surface, values, nonreal, judging, method, witness_fn))
+    Ok(finish(
+        &e, ellipsoid, surface, values, nonreal, judging, method, witness_fn,
+    ))
 }
 
 #[derive(Clone, Copy, Debug)]

@@ -290,7 +290,8 @@ pub fn analyze(e: &Ellipsoid, s: &QuadricForm) -> LambdaAnalysis {
     for phi in factors {
         let k = NumberField::new(&phi);
         let lam = k.gen_elem();
-        let mk: [[NfElem; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| k.reduce(&m[i][j])));
+        let mk: [[NfElem; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|j| k.reduce(&m[i][j])));
         let rk: [NfElem; 3] = std::array::from_fn(|i| k.reduce(&r[i]));
         let Some((xp, kernel)) = solve_k(&k, mk, rk) else {
             continue; // no solutions for this multiplier
@@ -414,7 +415,11 @@ impl LambdaAnalysis {
                             vav += &form.a[p][q] * &v[p] * &v[q];
                         }
                     }
-                    let t2 = if m.is_negative() { -&m / &vav } else { Q::zero() };
+                    let t2 = if m.is_negative() {
+                        -&m / &vav
+                    } else {
+                        Q::zero()
+                    };
                     let t = QSqrt::sqrt(t2).to_rational_approx(bits);
                     Some(std::array::from_fn(|j| &centre[j] + &v[j] * &t))
                 }
@@ -438,7 +443,9 @@ fn solve_rational_spd(f: &QuadricForm, vs: &[[Q; 3]], h: &[Q; 3]) -> Option<Vec<
             }
             a[i][j] = acc;
         }
-        a[i][n] = (0..3).map(|p| &vs[i][p] * &h[p]).fold(Q::zero(), |x, y| x + y);
+        a[i][n] = (0..3)
+            .map(|p| &vs[i][p] * &h[p])
+            .fold(Q::zero(), |x, y| x + y);
     }
     for col in 0..n {
         let p = (col..n).find(|&i| !a[i][col].is_zero())?;
@@ -477,7 +484,10 @@ mod tests {
         let a = run("x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1");
         assert_eq!(a.secular.degree(), Some(6));
         let real: Vec<&LambdaCritical> = a.critical.iter().filter(|c| c.real).collect();
-        let mut vals: Vec<Q> = real.iter().filter_map(|c| c.value.as_rational().cloned()).collect();
+        let mut vals: Vec<Q> = real
+            .iter()
+            .filter_map(|c| c.value.as_rational().cloned())
+            .collect();
         vals.sort();
         assert_eq!(vals.first(), Some(&q(7, 9)));
         assert_eq!(vals.last(), Some(&q(187, 9)));

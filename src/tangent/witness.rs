@@ -79,7 +79,11 @@ pub fn snap_to_ellipsoid(e: &Ellipsoid, p: &[Q; 3]) -> Option<[QSqrt; 3]> {
         return None;
     }
     // root closer to p_k: sign of (akk p_k + h)
-    let s = if (akk * &p[k] + &h).is_negative() { -1 } else { 1 };
+    let s = if (akk * &p[k] + &h).is_negative() {
+        -1
+    } else {
+        1
+    };
     let root = QSqrt::new(-&h / akk, Q::from_integer(s.into()) / akk, disc);
     let mut out: [QSqrt; 3] = std::array::from_fn(|i| QSqrt::rational(p[i].clone()));
     out[k] = root.normalized();

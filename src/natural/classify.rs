@@ -1,0 +1,159 @@
+//! The complete classification of two natural quadrics (SPEC §4): class,
+//! counts and exact components, with the part-1 deciders where they apply.
+//!
+//! Order of decisions:
+//! 1. proportional equations → `same-surface`;
+//! 2. two spheres; a sphere centred on an axis; two quadrics on one axis →
+//!    circles ([`super::coaxial`]);
+//! 3. coplanar distinct axes with a degenerate projection conic (Lemma 8.1)
+//!    → the planar constructions of §4–§6 ([`super::planar`]);
+//! 4. everything else (skew axes, coplanar axes with a non-degenerate
+//!    projection conic — including §5.1 — and a sphere off the axis) → the
+//!    exact topology of the intersection curve ([`super::topology`]): a
+//!    genuine curve (with its acnodes), isolated tangency points (§7), a
+//!    common ruling plus a twisted cubic, or nothing.
+
+use super::coaxial::{center_on_axis, same_axis, sphere_on_axis, sphere_sphere};
+use super::deciders::{AxesRelation, AxialPlane, pencil_has_planar_member, relation, thm8};
+use super::planar::{planar_components, skeletal_lines};
+use super::result::{Class, Component, NaturalReport, PlanarDeciders, class_of};
+use super::topology::classify_nonplanar;
+use super::types::{Natural, parse_natural};
+use crate::error::Error;
+use crate::poly::QMPoly;
+use crate::poly::mpoly::{MPoly, NVARS};
+
+/// True when the two equations are proportional (the same surface).
+pub fn same_surface(a: &Natural, b: &Natural) -> bool {
+    a.equation().to_primitive_z().0 == b.equation().to_primitive_z().0
+}
+
+fn conic_string(f: &super::deciders::Conic2) -> String {
+    // F(s, t) printed with x = s, y = t
+    let mut terms = Vec::new();
+    let two = crate::number::qi(2);
+    let mono = |i: u32, j: u32| {
+        let mut e = [0u32; NVARS];
+        e[0] = i;
+        e[1] = j;
+        e
+    };
+    terms.push((mono(2, 0), f[0][0].clone()));
+    terms.push((mono(1, 1), &f[0][1] * &two));
+    terms.push((mono(0, 2), f[1][1].clone()));
+    terms.push((mono(1, 0), &f[0][2] * &two));
+    terms.push((mono(0, 1), &f[1][2] * &two));
+    terms.push((mono(0, 0), f[2][2].clone()));
+    let p: QMPoly = MPoly::from_terms(terms);
+    p.to_string_canonical().replace('x', "s").replace('y', "t")
+}
+
+/// Classifies two natural quadrics.
+///
+/// ```
+/// use quadsect::natural::{classify, parse_natural, result::Class};
+/// let a = parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
+/// let b = parse_natural("cylinder point=0,0,0 axis=0,1,0 radius2=1").unwrap();
+/// let r = classify(&a, &b).unwrap();
+/// assert_eq!(r.class, Class::Conics);
+/// assert_eq!(r.conics(), 2);
+/// ```
+pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
+    let axes = relation(a, b);
+    let t8 = axes.as_ref().and_then(|r| thm8(a, b, r));
+    let mut notes = Vec::new();
+    let mut deciders = None;
+    if same_surface(a, b) {
+        return Ok(NaturalReport {
+            a: a.clone(),
+            b: b.clone(),
+            class: Class::SameSurface,
+            axes,
+            thm8: t8,
+            components: vec![],
+            deciders: None,
+            method: "proportional equations",
+            notes,
+        });
+    }
+    let (components, method): (Vec<Component>, &'static str) = match (a, b) {
+        (Natural::Sphere(s1), Natural::Sphere(s2)) => {
+            (sphere_sphere(s1, s2), "sphere-sphere (radical plane)")
+        }
+        (Natural::Sphere(s), q) | (q, Natural::Sphere(s)) => {
+            if center_on_axis(s, q) {
+                (sphere_on_axis(s, q), "sphere centred on the axis (circles)")
+            } else {
+                let (c, n) = classify_nonplanar(a, b)?;
+                notes.extend(n);
+                (c, "intersection-curve topology")
+            }
+        }
+        _ => match axes.as_ref() {
+            Some(AxesRelation::Coincident) => (same_axis(a, b), "common axis (circles)"),
+            Some(AxesRelation::Intersecting(_)) | Some(AxesRelation::Parallel) => {
+                let h = AxialPlane::new(a, b).ok_or_else(|| {
+                    Error::Internal("coplanar axes without an axial plane".into())
+                })?;
+                let pencil = pencil_has_planar_member(a, b);
+                let lemma = h.lemma81_planar();
+                if t8.is_some_and(|t| t != lemma) || pencil != lemma {
+                    notes.push(format!(
+                        "deciders disagree (thm8 {t8:?}, Lemma 8.1 {lemma}, pencil {pencil}) — please report"
+                    ));
+                }
+                deciders = Some(PlanarDeciders {
+                    thm8: t8,
+                    lemma81: lemma,
+                    discriminant: h.discriminant.clone(),
+                    pencil,
+                    x_point: h.x_point.as_ref().map(|(s, t)| h.point(s, t)),
+                    heights_at_x: h.heights_at_x(),
+                    projection: conic_string(&h.projection),
+                    frame: [h.o.clone(), h.e1.clone(), h.e2.clone()],
+                    skeletal: vec![
+                        skeletal_lines(&h, &h.heights[0]),
+                        skeletal_lines(&h, &h.heights[1]),
+                    ],
+                });
+                if lemma {
+                    (
+                        planar_components(&h),
+                        "axial plane: projection conic factors (Lemma 8.1)",
+                    )
+                } else {
+                    let (c, n) = classify_nonplanar(a, b)?;
+                    notes.extend(n);
+                    (
+                        c,
+                        "intersection-curve topology (projection conic does not factor)",
+                    )
+                }
+            }
+            _ => {
+                let (c, n) = classify_nonplanar(a, b)?;
+                notes.extend(n);
+                (c, "intersection-curve topology (skew axes)")
+            }
+        },
+    };
+    let class = class_of(&components);
+    Ok(NaturalReport {
+        a: a.clone(),
+        b: b.clone(),
+        class,
+        axes,
+        thm8: t8,
+        components,
+        deciders,
+        method,
+        notes,
+    })
+}
+
+/// Parses two quadrics (JSON or short syntax) and classifies them.
+pub fn classify_str(a: &str, b: &str) -> Result<NaturalReport, Error> {
+    let qa = parse_natural(a).map_err(|e| e.context("in A"))?;
+    let qb = parse_natural(b).map_err(|e| e.context("in B"))?;
+    classify(&qa, &qb)
+}

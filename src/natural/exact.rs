@@ -1,0 +1,409 @@
+//! Exact output numbers for the natural-quadric constructions: rationals,
+//! quadratic irrationals `a + b√d` ([`QSqrt`]) and, where a construction
+//! nests square roots, general real algebraic numbers ([`RealAlg`]).
+//!
+//! A real algebraic number found by an algebraic method (a coordinate of a
+//! RUR point) is turned into `a + b√d` when it has degree ≤ 2: an integer
+//! relation `c2 x² + c1 x + c0 ≈ 0` is found by lattice reduction on a
+//! high-precision approximation and then *verified exactly* (the relation
+//! must vanish at the number, decided by a gcd), so nothing is guessed.
+
+use crate::elim::resultant_mpoly;
+use crate::number::{Q, QSqrt, fmt_q};
+use crate::poly::mpoly::{MPoly, T, U};
+use crate::poly::{QMPoly, QPoly, ZPoly};
+use crate::roots::{RealAlg, isolate_squarefree};
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+use serde_json::{Value, json};
+
+/// An exact real number of the output.
+#[derive(Clone, Debug)]
+pub enum Exact {
+    /// In Q(√d) (rationals included).
+    Quad(QSqrt),
+    /// A real algebraic number of higher degree.
+    Alg(RealAlg),
+}
+
+impl Exact {
+    /// A rational.
+    pub fn rational(q: Q) -> Exact {
+        Exact::Quad(QSqrt::rational(q))
+    }
+
+    /// JSON: a string for a rational, `{"a","b","d","approx"}` for a
+    /// quadratic irrational, `{"poly","interval","approx"}` otherwise.
+    pub fn json(&self) -> Value {
+        match self {
+            Exact::Quad(x) if x.is_rational() => json!(fmt_q(&x.a)),
+            Exact::Quad(x) => {
+                let x = x.normalized();
+                json!({"a": fmt_q(&x.a), "b": fmt_q(&x.b), "d": fmt_q(&x.d), "approx": x.approx(20)})
+            }
+            Exact::Alg(a) => crate::report::alg_json(a),
+        }
+    }
+
+    /// Decimal approximation.
+    pub fn approx(&self, digits: usize) -> String {
+        match self {
+            Exact::Quad(x) => x.approx(digits),
+            Exact::Alg(a) => a.approx(digits),
+        }
+    }
+
+    /// Exact text (`a + b·√(d)` or an approximation with its polynomial).
+    pub fn text(&self) -> String {
+        match self {
+            Exact::Quad(x) => x.normalized().to_string(),
+            Exact::Alg(a) => format!("≈{}", a.approx(12)),
+        }
+    }
+
+    /// Exact sign.
+    pub fn sign(&self) -> i32 {
+        match self {
+            Exact::Quad(x) => x.sign(),
+            Exact::Alg(a) => a.sign(),
+        }
+    }
+
+    /// A rational approximation within `2^-bits`.
+    pub fn to_rational_approx(&self, bits: u32) -> Q {
+        match self {
+            Exact::Quad(x) => x.to_rational_approx(bits),
+            Exact::Alg(a) => a.to_rational_approx(bits),
+        }
+    }
+
+    /// Exact equality (same field or via algebraic comparison).
+    pub fn equals(&self, other: &Exact) -> bool {
+        match (self, other) {
+            (Exact::Quad(a), Exact::Quad(b))
+                if a.is_rational() || b.is_rational() || a.d == b.d =>
+            {
+                a.cmp_exact(b) == std::cmp::Ordering::Equal
+            }
+            _ => self.to_alg().cmp_exact(&other.to_alg()) == std::cmp::Ordering::Equal,
+        }
+    }
+
+    /// As a real algebraic number.
+    pub fn to_alg(&self) -> RealAlg {
+        match self {
+            Exact::Alg(a) => a.clone(),
+            Exact::Quad(x) if x.is_rational() => RealAlg::Rational(x.a.clone()),
+            Exact::Quad(x) => {
+                // root of (u − a)² − b² d
+                let p = QPoly::new(vec![
+                    &x.a * &x.a - &x.b * &x.b * &x.d,
+                    -(&x.a * Q::from_integer(2.into())),
+                    Q::one(),
+                ]);
+                let (z, _) = ZPoly::from_q(&p);
+                let enclose = |bits: u32| {
+                    let c = x.to_rational_approx(bits + 2);
+                    let e = Q::new(BigInt::one(), BigInt::one() << (bits as usize));
+                    (&c - &e, &c + &e)
+                };
+                identify_root(&z, &enclose)
+            }
+        }
+    }
+}
+
+/// A point with exact coordinates.
+pub type EPoint = [Exact; 3];
+
+/// Lifts a Q(√d) vector.
+pub fn epoint(v: &[QSqrt; 3]) -> EPoint {
+    std::array::from_fn(|i| Exact::Quad(v[i].clone()))
+}
+
+/// JSON of a point.
+pub fn epoint_json(p: &EPoint) -> Value {
+    Value::Array(p.iter().map(|c| c.json()).collect())
+}
+
+/// Text of a point.
+pub fn epoint_text(p: &EPoint) -> String {
+    format!(
+        "({})",
+        p.iter().map(|c| c.text()).collect::<Vec<_>>().join(", ")
+    )
+}
+
+/// Exact equality of points.
+pub fn epoint_equal(p: &EPoint, q: &EPoint) -> bool {
+    (0..3).all(|i| p[i].equals(&q[i]))
+}
+
+/// The root of the square-free `r` that lies in the enclosures
+/// `enclose(bits)` (which must shrink to it as `bits` grows).
+pub fn identify_root(r: &ZPoly, enclose: &dyn Fn(u32) -> (Q, Q)) -> RealAlg {
+    let sq = r.squarefree_part();
+    let mut ivs = isolate_squarefree(&sq);
+    let mut bits = 16;
+    loop {
+        let (lo, hi) = enclose(bits);
+        let hits: Vec<usize> = (0..ivs.len())
+            .filter(|&j| {
+                let iv = &ivs[j];
+                if iv.is_exact() {
+                    lo <= iv.lo && iv.lo <= hi
+                } else {
+                    iv.lo < hi && lo < iv.hi
+                }
+            })
+            .collect();
+        if hits.len() == 1 {
+            return RealAlg::from_interval(&sq, &ivs[hits[0]]).simplify();
+        }
+        for j in hits {
+            crate::roots::bisect_once(&sq, &mut ivs[j]);
+        }
+        bits += 16;
+    }
+}
+
+/// Rational bounds `(l, h)` with `l <= √x <= h` and `h − l` about `2^-bits`
+/// (`x >= 0`).
+pub fn sqrt_bounds(x: &Q, bits: u32) -> (Q, Q) {
+    if !x.is_positive() {
+        return (Q::zero(), Q::zero());
+    }
+    let k = bits as usize + 4;
+    let nd = x.numer() * x.denom();
+    let s = (nd << (2 * k)).sqrt();
+    let den = x.denom() << k;
+    (Q::new(s.clone(), den.clone()), Q::new(s + 1u32, den))
+}
+
+/// `a + b√d + m·s·√(α + β√d)` (s = ±1) exactly, as a real algebraic number
+/// (or in Q(√·) when no nesting happens).  Requires `α + β√d > 0`.
+pub fn nested(a: &Q, b: &Q, d: &Q, m: &Q, alpha: &Q, beta: &Q, s: i32) -> Exact {
+    let inner = QSqrt::new(alpha.clone(), beta.clone(), d.clone());
+    if m.is_zero() || inner.is_zero() {
+        return Exact::Quad(QSqrt::new(a.clone(), b.clone(), d.clone()));
+    }
+    if inner.is_rational() && (b.is_zero() || d.is_zero()) {
+        // a + m s √alpha'
+        let ms = if s < 0 { -m } else { m.clone() };
+        return Exact::Quad(QSqrt::new(a.clone(), ms, inner.a.clone()));
+    }
+    if let Some(r) = QSqrt::sqrt_of_rational_in(&inner.a, d).filter(|_| inner.b.is_zero()) {
+        // √alpha lies in Q(√d)
+        let t = r.scale(&(if s < 0 { -m } else { m.clone() }));
+        return Exact::Quad(QSqrt::new(a.clone(), b.clone(), d.clone()).add(&t));
+    }
+    // eliminate: c = a + b y + m μ, y² = d, μ² = α + β y
+    //   (c − a − b y)² − m²(α + β y) = 0, then Res_y with y² − d
+    let c = MPoly::<Q>::var(U);
+    let y = MPoly::<Q>::var(T);
+    let k = |q: &Q| MPoly::constant(q.clone());
+    let lin = &(&c - &k(a)) - &(&y * &k(b));
+    let g: QMPoly = &(&lin * &lin) - &(&(&k(alpha) + &(&y * &k(beta))) * &k(&(m * m)));
+    let ydef: QMPoly = &(&y * &y) - &k(d);
+    let r = resultant_mpoly(&g, &ydef, T);
+    let ru = r.to_univariate(U).unwrap_or_else(QPoly::zero);
+    let (rz, _) = ZPoly::from_q(&ru);
+    let enclose = |bits: u32| -> (Q, Q) {
+        let (yl, yh) = sqrt_bounds(d, bits + 8);
+        let (il, ih) = {
+            let (p, q) = (alpha + beta * &yl, alpha + beta * &yh);
+            if p < q { (p, q) } else { (q, p) }
+        };
+        let (ml, _) = sqrt_bounds(&il.clone().max(Q::zero()), bits + 8);
+        let (_, mh) = sqrt_bounds(&ih.clone().max(Q::zero()), bits + 8);
+        let ms = if s < 0 { -m } else { m.clone() };
+        let cands = [
+            a + b * &yl + &ms * &ml,
+            a + b * &yl + &ms * &mh,
+            a + b * &yh + &ms * &ml,
+            a + b * &yh + &ms * &mh,
+        ];
+        let lo = cands.iter().min().cloned().unwrap_or_default();
+        let hi = cands.iter().max().cloned().unwrap_or_default();
+        (lo, hi)
+    };
+    Exact::Alg(identify_root(&rz, &enclose))
+}
+
+// ------------------------------------------------------ quadratic recognition
+
+fn round_q(x: &Q) -> BigInt {
+    (x + Q::new(BigInt::one(), BigInt::from(2)))
+        .floor()
+        .to_integer()
+}
+
+/// LLL reduction (δ = 3/4) of integer row vectors, with exact rational
+/// Gram–Schmidt recomputed at each step (small dimensions only).
+fn lll(mut b: Vec<Vec<BigInt>>) -> Vec<Vec<BigInt>> {
+    let n = b.len();
+    let delta = Q::new(BigInt::from(3), BigInt::from(4));
+    let gs = |b: &Vec<Vec<BigInt>>| -> (Vec<Vec<Q>>, Vec<Q>) {
+        let mut bs: Vec<Vec<Q>> = Vec::new();
+        let mut mu = vec![vec![Q::zero(); n]; n];
+        let mut bn: Vec<Q> = Vec::new();
+        for i in 0..n {
+            let mut v: Vec<Q> = b[i].iter().map(|x| Q::from_integer(x.clone())).collect();
+            for j in 0..i {
+                let num: Q = b[i]
+                    .iter()
+                    .zip(&bs[j])
+                    .map(|(x, y)| Q::from_integer(x.clone()) * y)
+                    .fold(Q::zero(), |a, c| a + c);
+                mu[i][j] = if bn[j].is_zero() {
+                    Q::zero()
+                } else {
+                    num / &bn[j]
+                };
+                for (vk, bsk) in v.iter_mut().zip(&bs[j]) {
+                    *vk -= &mu[i][j] * bsk;
+                }
+            }
+            bn.push(v.iter().map(|x| x * x).fold(Q::zero(), |a, c| a + c));
+            bs.push(v);
+        }
+        (mu, bn)
+    };
+    let mut k = 1;
+    let mut guard = 0;
+    while k < n && guard < 100_000 {
+        guard += 1;
+        let (mut mu, bn) = gs(&b);
+        for j in (0..k).rev() {
+            let q = round_q(&mu[k][j]);
+            if !q.is_zero() {
+                let bj = b[j].clone();
+                for (x, y) in b[k].iter_mut().zip(bj.iter()) {
+                    *x -= &q * y;
+                }
+                let qq = Q::from_integer(q);
+                for i in 0..j {
+                    let t = &qq * &mu[j][i];
+                    mu[k][i] -= t;
+                }
+                mu[k][j] -= &qq;
+            }
+        }
+        if bn[k] >= (&delta - &mu[k][k - 1] * &mu[k][k - 1]) * &bn[k - 1] {
+            k += 1;
+        } else {
+            b.swap(k, k - 1);
+            k = (k - 1).max(1);
+        }
+    }
+    b
+}
+
+/// `x` as `a + b√d` when it is a quadratic irrational (or rational),
+/// verified exactly; `None` otherwise.
+pub fn recognize_quadratic(x: &RealAlg) -> Option<QSqrt> {
+    if let Some(q) = x.as_rational() {
+        return Some(QSqrt::rational(q.clone()));
+    }
+    let p = x.poly();
+    if p.degree() == Some(2) {
+        return quad_root(&p, x);
+    }
+    let hb = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(1);
+    for bits in [hb as u32 * 2 + 64, hb as u32 * 4 + 160] {
+        let v = x.to_rational_approx(bits + 32);
+        let scale = BigInt::one() << (bits as usize);
+        let sc = |q: &Q| round_q(&(q * Q::from_integer(scale.clone())));
+        let basis = vec![
+            vec![BigInt::one(), BigInt::zero(), BigInt::zero(), sc(&Q::one())],
+            vec![BigInt::zero(), BigInt::one(), BigInt::zero(), sc(&v)],
+            vec![
+                BigInt::zero(),
+                BigInt::zero(),
+                BigInt::one(),
+                sc(&(&v * &v)),
+            ],
+        ];
+        let red = lll(basis);
+        for row in red.iter().take(2) {
+            let q = ZPoly::new(vec![row[0].clone(), row[1].clone(), row[2].clone()]);
+            if q.degree() == Some(2) && x.sign_of(&q) == 0 {
+                return quad_root(&q.primitive_part(), x);
+            }
+            if q.degree() == Some(1) && x.sign_of(&q) == 0 {
+                return Some(QSqrt::rational(Q::new(-q.coeff(0), q.coeff(1))));
+            }
+        }
+    }
+    None
+}
+
+fn quad_root(q: &ZPoly, x: &RealAlg) -> Option<QSqrt> {
+    let (c0, c1, c2) = (q.coeff(0), q.coeff(1), q.coeff(2));
+    let disc = &c1 * &c1 - BigInt::from(4) * &c2 * &c0;
+    let a = Q::new(-c1, BigInt::from(2) * &c2);
+    let b = Q::new(BigInt::one(), BigInt::from(2) * &c2);
+    let (lo, hi) = x.interval();
+    // exactly one root of q lies in x's isolating interval (q divides the
+    // minimal polynomial of x)
+    for s in [1i64, -1] {
+        let cand = QSqrt::new(
+            a.clone(),
+            &b * Q::from_integer(s.into()),
+            Q::from_integer(disc.clone()),
+        );
+        let inside = cand.cmp_exact(&QSqrt::rational(lo.clone())) == std::cmp::Ordering::Greater
+            && cand.cmp_exact(&QSqrt::rational(hi.clone())) == std::cmp::Ordering::Less;
+        if inside {
+            return Some(cand.normalized());
+        }
+    }
+    None
+}
+
+/// A real algebraic coordinate as an [`Exact`], in Q(√d) when possible.
+pub fn exact_of(x: &RealAlg) -> Exact {
+    match recognize_quadratic(x) {
+        Some(q) => Exact::Quad(q),
+        None => Exact::Alg(x.clone()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::{q, qi};
+
+    #[test]
+    fn recognizes_quadratics_inside_larger_polynomials() {
+        // root (1 + √2)/3 of (9x² − 6x − 1)(x³ − 2)
+        let p = &ZPoly::from_i64s(&[-1, -6, 9]) * &ZPoly::from_i64s(&[-2, 0, 0, 1]);
+        let roots = RealAlg::roots_of(&p);
+        let target = roots
+            .iter()
+            .find(|r| {
+                r.cmp_rational(&q(8, 10)) == std::cmp::Ordering::Equal
+                    || (r.to_rational_approx(30) - q(8047, 10000)).abs() < q(1, 1000)
+            })
+            .unwrap();
+        let got = recognize_quadratic(target).unwrap();
+        assert_eq!(
+            got.cmp_exact(&QSqrt::new(q(1, 3), q(1, 3), qi(2))),
+            std::cmp::Ordering::Equal
+        );
+        // 2^(1/3) is not quadratic
+        let cbrt = roots
+            .iter()
+            .find(|r| (r.to_rational_approx(30) - q(126, 100)).abs() < q(1, 100))
+            .unwrap();
+        assert!(recognize_quadratic(cbrt).is_none());
+    }
+
+    #[test]
+    fn nested_radicals() {
+        // 1 + √(3 + √2) ≈ 3.1010
+        let e = nested(&qi(1), &qi(0), &qi(2), &qi(1), &qi(3), &qi(1), 1);
+        assert!(matches!(e, Exact::Alg(_)));
+        assert_eq!(e.approx(5), "3.101");
+    }
+}

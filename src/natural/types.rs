@@ -1,0 +1,572 @@
+//! Natural quadrics — spheres, circular cylinders, right circular (double)
+//! cones — with validated constructors, their rational implicit equations
+//! and 4×4 matrices, exact rigid motions, and the input syntaxes (JSON of
+//! SPEC §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
+
+use super::vec3::{V3, add, cross, dot, norm2, scale, sub};
+use crate::error::Error;
+use crate::number::{Q, fmt_q, parse_rational, qi};
+use crate::poly::QMPoly;
+use crate::poly::mpoly::{MPoly, X, Y, Z};
+use num_traits::{One, Signed, Zero};
+use serde_json::{Value, json};
+
+/// A sphere `|P − O|² = r2`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sphere {
+    /// Centre O.
+    pub center: V3,
+    /// Squared radius, `> 0`.
+    pub r2: Q,
+}
+
+/// A circular cylinder `|(P − Q) × a|² = r2·|a|²`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Cylinder {
+    /// A point Q of the axis.
+    pub point: V3,
+    /// Axis direction (non-zero, any length).
+    pub axis: V3,
+    /// Squared radius, `> 0`.
+    pub r2: Q,
+}
+
+/// A right circular double cone `|a|²|P − V|² = (1 + t2)((P − V)·a)²`,
+/// half-angle α with `tan²α = t2 > 0`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Cone {
+    /// Vertex V.
+    pub vertex: V3,
+    /// Axis direction (non-zero).
+    pub axis: V3,
+    /// `tan²α > 0`.
+    pub t2: Q,
+}
+
+/// Any natural quadric.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Natural {
+    /// A sphere.
+    Sphere(Sphere),
+    /// A cylinder.
+    Cylinder(Cylinder),
+    /// A cone.
+    Cone(Cone),
+}
+
+fn positive(name: &str, v: &Q) -> Result<(), Error> {
+    if v.is_positive() {
+        Ok(())
+    } else {
+        Err(Error::input(
+            "bad-quadric",
+            format!("{name} must be > 0, got {}", fmt_q(v)),
+        ))
+    }
+}
+
+fn nonzero_axis(a: &V3) -> Result<(), Error> {
+    if a.iter().all(|c| c.is_zero()) {
+        Err(Error::input(
+            "bad-quadric",
+            "the axis direction must be non-zero",
+        ))
+    } else {
+        Ok(())
+    }
+}
+
+impl Sphere {
+    /// A sphere; `r2 > 0` is required.
+    pub fn new(center: V3, r2: Q) -> Result<Sphere, Error> {
+        positive("radius2", &r2)?;
+        Ok(Sphere { center, r2 })
+    }
+}
+
+impl Cylinder {
+    /// A cylinder; non-zero axis and `r2 > 0` are required.
+    pub fn new(point: V3, axis: V3, r2: Q) -> Result<Cylinder, Error> {
+        nonzero_axis(&axis)?;
+        positive("radius2", &r2)?;
+        Ok(Cylinder { point, axis, r2 })
+    }
+}
+
+impl Cone {
+    /// A cone; non-zero axis and `t2 > 0` are required.
+    pub fn new(vertex: V3, axis: V3, t2: Q) -> Result<Cone, Error> {
+        nonzero_axis(&axis)?;
+        positive("tan2", &t2)?;
+        Ok(Cone { vertex, axis, t2 })
+    }
+
+    /// `sin²α = t2/(1 + t2)`.
+    pub fn sin2(&self) -> Q {
+        &self.t2 / (Q::one() + &self.t2)
+    }
+}
+
+/// Converts the accepted angle parameters to `tan²α`, exactly:
+/// `tan` (> 0) squared, `cos2` in (0, 1) to `(1 − cos2)/cos2`, `sin2` in
+/// (0, 1) to `sin2/(1 − sin2)`.
+pub fn tan2_from(kind: &str, v: &Q) -> Result<Q, Error> {
+    let one = Q::one();
+    match kind {
+        "tan2" => Ok(v.clone()),
+        "tan" => {
+            if !v.is_positive() {
+                return Err(Error::input(
+                    "bad-quadric",
+                    format!(
+                        "tan must be > 0 (a half-angle in (0, 90°)), got {}",
+                        fmt_q(v)
+                    ),
+                ));
+            }
+            Ok(v * v)
+        }
+        "cos2" => {
+            if !(v.is_positive() && v < &one) {
+                return Err(Error::input(
+                    "bad-quadric",
+                    format!("cos2 must lie in (0, 1), got {}", fmt_q(v)),
+                ));
+            }
+            Ok((&one - v) / v)
+        }
+        "sin2" => {
+            if !(v.is_positive() && v < &one) {
+                return Err(Error::input(
+                    "bad-quadric",
+                    format!("sin2 must lie in (0, 1), got {}", fmt_q(v)),
+                ));
+            }
+            Ok(v / (&one - v))
+        }
+        _ => Err(Error::Internal(format!("unknown angle parameter {kind}"))),
+    }
+}
+
+impl Natural {
+    /// `sphere`, `cylinder` or `cone`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Natural::Sphere(_) => "sphere",
+            Natural::Cylinder(_) => "cylinder",
+            Natural::Cone(_) => "cone",
+        }
+    }
+
+    /// True for cylinders and cones.
+    pub fn is_axial(&self) -> bool {
+        !matches!(self, Natural::Sphere(_))
+    }
+
+    /// The axis line (a point and a direction), for axial quadrics.
+    pub fn axis_line(&self) -> Option<(V3, V3)> {
+        match self {
+            Natural::Sphere(_) => None,
+            Natural::Cylinder(c) => Some((c.point.clone(), c.axis.clone())),
+            Natural::Cone(c) => Some((c.vertex.clone(), c.axis.clone())),
+        }
+    }
+
+    /// The implicit equation (negative inside), SPEC §2.
+    pub fn equation(&self) -> QMPoly {
+        let p: [QMPoly; 3] = [MPoly::var(X), MPoly::var(Y), MPoly::var(Z)];
+        let diff = |c: &V3| -> [QMPoly; 3] {
+            std::array::from_fn(|i| &p[i] - &MPoly::constant(c[i].clone()))
+        };
+        let dotp = |u: &[QMPoly; 3], v: &[QMPoly; 3]| -> QMPoly {
+            &(&(&u[0] * &v[0]) + &(&u[1] * &v[1])) + &(&u[2] * &v[2])
+        };
+        let lin = |u: &[QMPoly; 3], a: &V3| -> QMPoly {
+            &(&u[0].scale(&a[0]) + &u[1].scale(&a[1])) + &u[2].scale(&a[2])
+        };
+        match self {
+            Natural::Sphere(s) => {
+                let d = diff(&s.center);
+                &dotp(&d, &d) - &MPoly::constant(s.r2.clone())
+            }
+            Natural::Cylinder(c) => {
+                let d = diff(&c.point);
+                let a2 = norm2(&c.axis);
+                let da = lin(&d, &c.axis);
+                // |d × a|² = |d|²|a|² − (d·a)²
+                &(&dotp(&d, &d).scale(&a2) - &(&da * &da)) - &MPoly::constant(&c.r2 * &a2)
+            }
+            Natural::Cone(c) => {
+                let d = diff(&c.vertex);
+                let a2 = norm2(&c.axis);
+                let da = lin(&d, &c.axis);
+                &dotp(&d, &d).scale(&a2) - &(&da * &da).scale(&(Q::one() + &c.t2))
+            }
+        }
+    }
+
+    /// The symmetric 4×4 matrix `M` with `equation(P) = [P 1] M [P 1]ᵀ`.
+    pub fn matrix(&self) -> [[Q; 4]; 4] {
+        let f = crate::tangent::QuadricForm::from_poly(&self.equation())
+            .expect("natural quadric equations have degree 2");
+        let mut m: [[Q; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| Q::zero()));
+        for i in 0..3 {
+            for j in 0..3 {
+                m[i][j] = f.a[i][j].clone();
+            }
+            m[i][3] = f.b[i].clone();
+            m[3][i] = f.b[i].clone();
+        }
+        m[3][3] = f.c.clone();
+        m
+    }
+
+    /// Applies the rigid motion `P ↦ R P + t` (R orthogonal).
+    pub fn moved(&self, r: &[[Q; 3]; 3], t: &V3) -> Natural {
+        let rot = |v: &V3| -> V3 {
+            std::array::from_fn(|i| {
+                (0..3)
+                    .map(|j| &r[i][j] * &v[j])
+                    .fold(Q::zero(), |a, b| a + b)
+            })
+        };
+        let pt = |v: &V3| add(&rot(v), t);
+        match self {
+            Natural::Sphere(s) => Natural::Sphere(Sphere {
+                center: pt(&s.center),
+                r2: s.r2.clone(),
+            }),
+            Natural::Cylinder(c) => Natural::Cylinder(Cylinder {
+                point: pt(&c.point),
+                axis: rot(&c.axis),
+                r2: c.r2.clone(),
+            }),
+            Natural::Cone(c) => Natural::Cone(Cone {
+                vertex: pt(&c.vertex),
+                axis: rot(&c.axis),
+                t2: c.t2.clone(),
+            }),
+        }
+    }
+
+    /// Uniform scaling `P ↦ k P` (k > 0): radii² scale by k², angles stay.
+    pub fn scaled(&self, k: &Q) -> Natural {
+        let sc = |v: &V3| scale(v, k);
+        match self {
+            Natural::Sphere(s) => Natural::Sphere(Sphere {
+                center: sc(&s.center),
+                r2: &s.r2 * k * k,
+            }),
+            Natural::Cylinder(c) => Natural::Cylinder(Cylinder {
+                point: sc(&c.point),
+                axis: c.axis.clone(),
+                r2: &c.r2 * k * k,
+            }),
+            Natural::Cone(c) => Natural::Cone(Cone {
+                vertex: sc(&c.vertex),
+                axis: c.axis.clone(),
+                t2: c.t2.clone(),
+            }),
+        }
+    }
+
+    /// The JSON form of SPEC §2 (numbers as exact strings).
+    pub fn to_json(&self) -> Value {
+        let v = |p: &V3| -> Value { json!(p.iter().map(fmt_q).collect::<Vec<_>>()) };
+        match self {
+            Natural::Sphere(s) => {
+                json!({"kind": "sphere", "center": v(&s.center), "radius2": fmt_q(&s.r2)})
+            }
+            Natural::Cylinder(c) => {
+                json!({"kind": "cylinder", "point": v(&c.point), "axis": v(&c.axis), "radius2": fmt_q(&c.r2)})
+            }
+            Natural::Cone(c) => {
+                json!({"kind": "cone", "vertex": v(&c.vertex), "axis": v(&c.axis), "tan2": fmt_q(&c.t2)})
+            }
+        }
+    }
+
+    /// The short human syntax.
+    pub fn to_short(&self) -> String {
+        let v = |p: &V3| p.iter().map(fmt_q).collect::<Vec<_>>().join(",");
+        match self {
+            Natural::Sphere(s) => {
+                format!("sphere center={} radius2={}", v(&s.center), fmt_q(&s.r2))
+            }
+            Natural::Cylinder(c) => format!(
+                "cylinder point={} axis={} radius2={}",
+                v(&c.point),
+                v(&c.axis),
+                fmt_q(&c.r2)
+            ),
+            Natural::Cone(c) => format!(
+                "cone vertex={} axis={} tan2={}",
+                v(&c.vertex),
+                v(&c.axis),
+                fmt_q(&c.t2)
+            ),
+        }
+    }
+}
+
+/// The Cayley rotation of the rational vector `(a, b, c)`: an exact
+/// rational orthogonal matrix with determinant 1 (every rotation whose angle
+/// is not π has this form).
+pub fn cayley_rotation(a: &Q, b: &Q, c: &Q) -> [[Q; 3]; 3] {
+    let n = a * a + b * b + c * c;
+    let d = Q::one() + &n;
+    let two = qi(2);
+    let m = [
+        [
+            Q::one() + a * a - b * b - c * c,
+            &two * (a * b - c),
+            &two * (a * c + b),
+        ],
+        [
+            &two * (a * b + c),
+            Q::one() - a * a + b * b - c * c,
+            &two * (b * c - a),
+        ],
+        [
+            &two * (a * c - b),
+            &two * (b * c + a),
+            Q::one() - a * a - b * b + c * c,
+        ],
+    ];
+    std::array::from_fn(|i| std::array::from_fn(|j| &m[i][j] / &d))
+}
+
+// ------------------------------------------------------------------ parsing
+
+fn parse_vec(s: &str, what: &str) -> Result<V3, Error> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.len() != 3 {
+        return Err(Error::input(
+            "bad-quadric",
+            format!("{what} needs three comma-separated numbers, got \"{s}\""),
+        ));
+    }
+    let mut out: V3 = std::array::from_fn(|_| Q::zero());
+    for (i, p) in parts.iter().enumerate() {
+        out[i] = parse_rational(p)
+            .map_err(|e| Error::input("bad-quadric", format!("{what}: {e} in \"{p}\"")))?;
+    }
+    Ok(out)
+}
+
+fn parse_num(s: &str, what: &str) -> Result<Q, Error> {
+    parse_rational(s).map_err(|e| Error::input("bad-quadric", format!("{what}: {e} in \"{s}\"")))
+}
+
+/// Builds a quadric from named fields (shared by both syntaxes).
+fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
+    let get = |k: &str| fields.iter().find(|(n, _)| n == k).map(|(_, v)| v.as_str());
+    let allowed: &[&str] = match kind {
+        "sphere" => &["center", "radius2"],
+        "cylinder" => &["point", "axis", "radius2"],
+        "cone" => &["vertex", "axis", "tan2", "tan", "cos2", "sin2"],
+        _ => {
+            return Err(Error::input(
+                "bad-quadric",
+                format!("unknown kind \"{kind}\" (expected sphere, cylinder or cone)"),
+            ));
+        }
+    };
+    for (n, _) in fields {
+        if !allowed.contains(&n.as_str()) {
+            return Err(Error::input(
+                "bad-quadric",
+                format!(
+                    "unknown field \"{n}\" for a {kind} (expected {})",
+                    allowed.join(", ")
+                ),
+            ));
+        }
+        if fields.iter().filter(|(m, _)| m == n).count() > 1 {
+            return Err(Error::input(
+                "bad-quadric",
+                format!("field \"{n}\" given twice"),
+            ));
+        }
+    }
+    let need = |k: &str| -> Result<&str, Error> {
+        get(k).ok_or_else(|| Error::input("bad-quadric", format!("a {kind} needs \"{k}\"")))
+    };
+    match kind {
+        "sphere" => Ok(Natural::Sphere(Sphere::new(
+            parse_vec(need("center")?, "center")?,
+            parse_num(need("radius2")?, "radius2")?,
+        )?)),
+        "cylinder" => Ok(Natural::Cylinder(Cylinder::new(
+            parse_vec(need("point")?, "point")?,
+            parse_vec(need("axis")?, "axis")?,
+            parse_num(need("radius2")?, "radius2")?,
+        )?)),
+        _ => {
+            let angle: Vec<&str> = ["tan2", "tan", "cos2", "sin2"]
+                .into_iter()
+                .filter(|k| get(k).is_some())
+                .collect();
+            if angle.len() != 1 {
+                return Err(Error::input(
+                    "bad-quadric",
+                    format!(
+                        "a cone needs exactly one of tan2, tan, cos2, sin2 (got {})",
+                        if angle.is_empty() {
+                            "none".to_string()
+                        } else {
+                            angle.join(", ")
+                        }
+                    ),
+                ));
+            }
+            let v = parse_num(get(angle[0]).unwrap_or(""), angle[0])?;
+            let t2 = tan2_from(angle[0], &v)?;
+            Ok(Natural::Cone(Cone::new(
+                parse_vec(need("vertex")?, "vertex")?,
+                parse_vec(need("axis")?, "axis")?,
+                t2,
+            )?))
+        }
+    }
+}
+
+/// Parses the JSON object form of SPEC §2 (numbers as strings; JSON
+/// integers are accepted too, floats are refused as inexact).
+pub fn from_json(v: &Value) -> Result<Natural, Error> {
+    let obj = v
+        .as_object()
+        .ok_or_else(|| Error::input("bad-quadric", "a natural quadric must be a JSON object"))?;
+    let kind = obj
+        .get("kind")
+        .and_then(|k| k.as_str())
+        .ok_or_else(|| Error::input("bad-quadric", "missing string field \"kind\""))?;
+    let num = |name: &str, x: &Value| -> Result<String, Error> {
+        match x {
+            Value::String(s) => Ok(s.clone()),
+            Value::Number(n) if n.is_i64() || n.is_u64() => Ok(n.to_string()),
+            Value::Number(_) => Err(Error::input(
+                "bad-quadric",
+                format!(
+                    "field \"{name}\": write non-integers as exact strings (\"7/9\", \"0.1\"), not JSON floats"
+                ),
+            )),
+            _ => Err(Error::input(
+                "bad-quadric",
+                format!("field \"{name}\" must be a number given as a string"),
+            )),
+        }
+    };
+    let mut fields = Vec::new();
+    for (k, x) in obj {
+        if k == "kind" {
+            continue;
+        }
+        let s = match x {
+            Value::Array(items) => {
+                let parts: Result<Vec<String>, Error> = items.iter().map(|it| num(k, it)).collect();
+                parts?.join(",")
+            }
+            other => num(k, other)?,
+        };
+        fields.push((k.clone(), s));
+    }
+    build(kind, &fields)
+}
+
+/// Parses the short human syntax, e.g. `cone vertex=0,0,0 axis=1,0,0
+/// tan2=1/3`, or a JSON object (when the text starts with `{`).
+///
+/// ```
+/// use quadsect::natural::parse_natural;
+/// let c = parse_natural("cone vertex=0,0,0 axis=1,0,0 cos2=3/4").unwrap();
+/// assert_eq!(c.to_short(), "cone vertex=0,0,0 axis=1,0,0 tan2=1/3");
+/// assert!(parse_natural("cylinder point=0,0,0 axis=0,0,0 radius2=1").is_err());
+/// ```
+pub fn parse_natural(text: &str) -> Result<Natural, Error> {
+    let t = text.trim();
+    if t.starts_with('{') {
+        let v: Value = serde_json::from_str(t)
+            .map_err(|e| Error::input("bad-quadric", format!("invalid JSON: {e}")))?;
+        return from_json(&v);
+    }
+    let mut words = t.split_whitespace();
+    let kind = words
+        .next()
+        .ok_or_else(|| Error::input("bad-quadric", "empty quadric description"))?;
+    let mut fields = Vec::new();
+    for w in words {
+        let (k, v) = w.split_once('=').ok_or_else(|| {
+            Error::input(
+                "bad-quadric",
+                format!("expected name=value, got \"{w}\" (e.g. axis=1,0,0)"),
+            )
+        })?;
+        fields.push((k.to_string(), v.to_string()));
+    }
+    build(kind, &fields)
+}
+
+/// Squared distance from a point to a line (point `p`, direction `a`).
+pub fn dist2_point_line(x: &V3, p: &V3, a: &V3) -> Q {
+    let c = cross(&sub(x, p), a);
+    norm2(&c) / norm2(a)
+}
+
+/// Signed axial coordinate `(x − p)·a / |a|²` of the projection of `x` on
+/// the line `p + s a`.
+pub fn axial_param(x: &V3, p: &V3, a: &V3) -> Q {
+    dot(&sub(x, p), a) / norm2(a)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cayley_is_orthogonal() {
+        let r = cayley_rotation(&qi(1), &crate::number::q(2, 3), &qi(-2));
+        for i in 0..3 {
+            for j in 0..3 {
+                let d: Q = (0..3)
+                    .map(|k| &r[i][k] * &r[j][k])
+                    .fold(Q::zero(), |a, b| a + b);
+                assert_eq!(d, if i == j { qi(1) } else { qi(0) });
+            }
+        }
+    }
+
+    #[test]
+    fn parse_forms_agree() {
+        let a = parse_natural("cone vertex=0,0,0 axis=1,0,0 tan2=1/3").unwrap();
+        let b = parse_natural(
+            r#"{"kind":"cone","vertex":["0","0","0"],"axis":["1","0","0"],"sin2":"1/4"}"#,
+        )
+        .unwrap();
+        assert_eq!(a, b);
+        for bad in [
+            "cone vertex=0,0,0 axis=1,0,0",
+            "cone vertex=0,0,0 axis=1,0,0 tan2=1 tan=1",
+            "cone vertex=0,0,0 axis=1,0,0 tan2=-1",
+            "cone vertex=0,0,0 axis=1,0,0 cos2=1",
+            "sphere center=0,0 radius2=1",
+            "sphere center=0,0,0 radius2=0",
+            "torus center=0,0,0",
+            "sphere center=0,0,0 radius2=1 axis=1,0,0",
+            r#"{"kind":"sphere","center":[0.5,0,0],"radius2":"1"}"#,
+        ] {
+            assert!(parse_natural(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn equations_vanish_on_the_surface() {
+        let c = parse_natural("cone vertex=1,2,3 axis=0,0,2 tan2=1").unwrap();
+        let e = c.equation();
+        let mut pt: [Q; crate::poly::mpoly::NVARS] = std::array::from_fn(|_| Q::zero());
+        pt[0] = qi(2);
+        pt[1] = qi(2);
+        pt[2] = qi(4); // V + (1, 0, 1): angle 45°
+        assert_eq!(e.eval(&pt), Q::zero());
+    }
+}
