@@ -143,19 +143,36 @@ def decimal_of(r, digits=SIG_DIGITS):
 # roots
 
 
+def sign_at(coeffs, r):
+    """Sign of the integer polynomial (coefficients highest first) at the
+    rational r, computed exactly with integers."""
+    a, b = int(r.p), int(r.q)
+    acc = coeffs[0]
+    bp = 1
+    for c in coeffs[1:]:
+        bp *= b
+        acc = acc * a + c * bp
+    return (acc > 0) - (acc < 0)
+
+
 def refine_to(f, lo, hi, rel):
-    """Refine the isolating interval (lo, hi) of the square-free integer Poly
-    f (irreducible, degree >= 2, root != 0) until hi - lo < rel * |root|."""
+    """Refine, by exact bisection, the isolating interval [lo, hi] of a real
+    root of the square-free integer Poly f (degree >= 2, irreducible, so no
+    rational root and the root is not 0) until hi - lo < rel * min(|lo|, |hi|)
+    and 0 is outside [lo, hi]."""
+    coeffs = [int(c) for c in f.all_coeffs()]
     lo, hi = Rational(lo), Rational(hi)
-    eps = Rational(1, 10**20)
-    while True:
-        lo, hi = f.refine_root(lo, hi, eps=eps)
-        lo, hi = Rational(lo), Rational(hi)
-        if lo * hi > 0:
-            m = min(abs(lo), abs(hi))
-            if hi - lo < rel * m:
-                return lo, hi
-        eps = eps / 10**20
+    slo, shi = sign_at(coeffs, lo), sign_at(coeffs, hi)
+    assert slo * shi < 0, "not an isolating interval with a sign change"
+    while not (lo * hi > 0 and hi - lo < rel * min(abs(lo), abs(hi))):
+        mid = (lo + hi) / 2
+        sm = sign_at(coeffs, mid)
+        assert sm != 0
+        if sm == slo:
+            lo = mid
+        else:
+            hi = mid
+    return lo, hi
 
 
 def sympy_root_data(expr):

@@ -51,7 +51,9 @@ fn kernel_examples() -> Vec<ExampleResult> {
 
 /// Runs every example.
 pub fn run_all() -> Vec<ExampleResult> {
-    let out = kernel_examples();
+    let mut out = kernel_examples();
+    out.extend(crate::tangent::examples::paper_examples());
+    out.extend(crate::natural::examples::natural_examples());
     out
 }
 
@@ -92,7 +94,7 @@ pub fn to_human(r: &[ExampleResult]) -> String {
             }
         } else {
             for d in &e.discrepancies {
-                s.push_str(&format!("  !! paper is wrong: {d}\n"));
+                s.push_str(&format!("  !! {d}\n"));
             }
         }
         s.push('\n');

@@ -336,10 +336,12 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
             acc
         };
         let mut xs = Vec::with_capacity(dw + 1);
+        let mut ks = Vec::with_capacity(dw + 1);
         let mut ys = Vec::with_capacity(dw + 1);
         let mut k = 0u64;
         while xs.len() <= dw {
             let x = md.to_mont(k);
+            let kk = k;
             k += 1;
             let a: Vec<u64> = fr.iter().map(|c| eval(c, x)).collect();
             let b: Vec<u64> = gr.iter().map(|c| eval(c, x)).collect();
@@ -354,9 +356,10 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
                 resultant_mod_p(a, b, &md)
             };
             xs.push(x);
+            ks.push(kk);
             ys.push(r);
         }
-        let coeffs = interpolate_mod(&xs, &ys, &md);
+        let coeffs = interpolate_mod(&xs, &ks, &ys, &md);
         for (i, c) in coeffs.iter().enumerate() {
             crts[i].push(&md, *c);
         }
@@ -368,18 +371,33 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
     }))
 }
 
-/// Newton interpolation modulo a prime: the coefficients (ascending,
-/// Montgomery form) of the polynomial of degree `< xs.len()` through the
-/// points.
-fn interpolate_mod(xs: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> {
+/// Newton interpolation modulo a prime at the small integer points `ks`
+/// (Montgomery images `xs`): the coefficients (ascending, Montgomery form)
+/// of the polynomial of degree `< xs.len()` through the points.  The
+/// inverses of the point differences come from one table of `1/k`.
+fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> {
     let n = xs.len();
+    let kmax = ks.iter().copied().max().unwrap_or(0) as usize;
+    // inverses of 1..=kmax by the batch trick: one modular inversion
+    let mut pref = vec![m.one; kmax + 1];
+    for d in 1..=kmax {
+        pref[d] = m.mul(pref[d - 1], m.to_mont(d as u64));
+    }
+    let mut inv_tab = vec![0u64; kmax + 1];
+    if kmax > 0 {
+        let mut acc = m.inv(pref[kmax]).expect("small integers are invertible");
+        for d in (1..=kmax).rev() {
+            inv_tab[d] = m.mul(acc, pref[d - 1]);
+            acc = m.mul(acc, m.to_mont(d as u64));
+        }
+    }
     // divided differences
     let mut dd = ys.to_vec();
     for j in 1..n {
         for i in (j..n).rev() {
             let num = m.sub(dd[i], dd[i - 1]);
-            let den = m.sub(xs[i], xs[i - j]);
-            dd[i] = m.mul(num, m.inv(den).expect("distinct points"));
+            let diff = (ks[i] - ks[i - j]) as usize;
+            dd[i] = m.mul(num, inv_tab[diff]);
         }
     }
     // expand Newton form from the top

@@ -17,6 +17,7 @@ use super::coaxial::{center_on_axis, same_axis, sphere_on_axis, sphere_sphere};
 use super::deciders::{AxesRelation, AxialPlane, pencil_has_planar_member, relation, thm8};
 use super::planar::{planar_components, skeletal_lines};
 use super::result::{Class, Component, NaturalReport, PlanarDeciders, class_of};
+use super::tangency::{Section7, section7};
 use super::topology::classify_nonplanar;
 use super::types::{Natural, parse_natural};
 use crate::error::Error;
@@ -63,6 +64,7 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
     let t8 = axes.as_ref().and_then(|r| thm8(a, b, r));
     let mut notes = Vec::new();
     let mut deciders = None;
+    let mut sec7 = None;
     if same_surface(a, b) {
         return Ok(NaturalReport {
             a: a.clone(),
@@ -72,6 +74,7 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
             thm8: t8,
             components: vec![],
             deciders: None,
+            section7: None,
             method: "proportional equations",
             notes,
         });
@@ -133,6 +136,11 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
             _ => {
                 let (c, n) = classify_nonplanar(a, b)?;
                 notes.extend(n);
+                let s7 = section7(a, b);
+                if !section7_agrees(&s7, &c) {
+                    notes.push(format!("the §7 decider ({s7:?}) disagrees with the curve topology — please report"));
+                }
+                sec7 = Some(s7);
                 (c, "intersection-curve topology (skew axes)")
             }
         },
@@ -146,9 +154,24 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
         thm8: t8,
         components,
         deciders,
+        section7: sec7,
         method,
         notes,
     })
+}
+
+/// Does the §7 verdict match the components found by the topology?
+pub fn section7_agrees(s7: &Section7, comps: &[Component]) -> bool {
+    let class = class_of(comps);
+    match s7 {
+        Section7::NotApplicable(_) => true,
+        Section7::Disjoint => class == Class::Empty,
+        Section7::Transversal => class == Class::Curve,
+        Section7::Tangent(p) => {
+            class == Class::Points
+                && comps.iter().filter(|c| matches!(c, Component::Point { .. })).count() == p.len()
+        }
+    }
 }
 
 /// Parses two quadrics (JSON or short syntax) and classifies them.

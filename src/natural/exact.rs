@@ -121,6 +121,31 @@ pub fn epoint(v: &[QSqrt; 3]) -> EPoint {
     std::array::from_fn(|i| Exact::Quad(v[i].clone()))
 }
 
+/// A direction with rational components scaled to a primitive integer
+/// vector (first non-zero component positive); other directions unchanged.
+pub fn normalize_direction(d: &EPoint) -> EPoint {
+    let mut rat: Vec<Q> = Vec::new();
+    for c in d {
+        match c {
+            Exact::Quad(x) if x.is_rational() => rat.push(x.a.clone()),
+            _ => return d.clone(),
+        }
+    }
+    let l = crate::number::denom_lcm(rat.iter());
+    let ints: Vec<BigInt> = rat.iter().map(|q| q.numer() * (&l / q.denom())).collect();
+    let mut g = BigInt::zero();
+    for i in &ints {
+        g = num_integer::Integer::gcd(&g, i);
+    }
+    if g.is_zero() {
+        return d.clone();
+    }
+    if ints.iter().find(|x| !x.is_zero()).is_some_and(|x| x.is_negative()) {
+        g = -g;
+    }
+    std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)))
+}
+
 /// JSON of a point.
 pub fn epoint_json(p: &EPoint) -> Value {
     Value::Array(p.iter().map(|c| c.json()).collect())

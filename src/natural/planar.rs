@@ -433,7 +433,28 @@ pub fn planar_components(h: &AxialPlane) -> Vec<Component> {
         Factored::Point(x) => out = conjugate_points(h, &h.heights[0], &x),
         Factored::Nothing | Factored::Zero => {}
     }
-    out
+    drop_points_on_lines(out)
+}
+
+/// Removes isolated points that lie on a reported line (a common vertex
+/// where one plane gives lines and the other only the vertex).
+pub fn drop_points_on_lines(comps: Vec<Component>) -> Vec<Component> {
+    let lines: Vec<(EPoint, EPoint)> = comps
+        .iter()
+        .filter_map(|c| match c {
+            Component::Line { point, direction, .. } => Some((point.clone(), direction.clone())),
+            _ => None,
+        })
+        .collect();
+    comps
+        .into_iter()
+        .filter(|c| match c {
+            Component::Point { point, .. } => !lines
+                .iter()
+                .any(|(q, d)| epoint_equal(point, q) || on_line(point, q, d)),
+            _ => true,
+        })
+        .collect()
 }
 
 /// Adds a component unless an equal point is already there (several planes

@@ -183,6 +183,8 @@ pub struct NaturalReport {
     pub components: Vec<Component>,
     /// Part-1 deciders (coplanar distinct axes).
     pub deciders: Option<PlanarDeciders>,
+    /// The paper's §7 decider (skew axes).
+    pub section7: Option<super::tangency::Section7>,
     /// How the class was decided.
     pub method: &'static str,
     /// Remarks.

@@ -26,7 +26,7 @@ use crate::error::Error;
 use crate::number::{Q, QSqrt, qi};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly};
-use crate::roots::{RealAlg, Rur, simplest_rational_in, solve_zero_dim, value_at};
+use crate::roots::{RealAlg, Rur, simplest_rational_in, solve_zero_dim, values_at};
 use crate::tangent::QuadricForm;
 use crate::tangent::witness::eval_qsqrt;
 use num_traits::{One, Signed, Zero};
@@ -59,14 +59,18 @@ pub struct RealZero {
 
 fn real_zeros(rur: &Rur) -> Vec<RealZero> {
     let one = QPoly::constant(Q::one());
-    rur.real_roots
-        .iter()
-        .enumerate()
-        .map(|(i, a)| RealZero {
+    let per: Vec<Vec<RealAlg>> = (0..3)
+        .map(|k| {
+            values_at(&rur.f, &rur.real_roots, &rur.coords[k], &one)
+                .into_iter()
+                .map(|v| v.expect("denominator 1"))
+                .collect()
+        })
+        .collect();
+    (0..rur.real_roots.len())
+        .map(|i| RealZero {
             index: i,
-            coords: std::array::from_fn(|k| {
-                value_at(a, &rur.coords[k], &one).expect("denominator 1")
-            }),
+            coords: std::array::from_fn(|k| per[k][i].clone()),
         })
         .collect()
 }
@@ -356,10 +360,9 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
             continue;
         };
         let one = QPoly::constant(Q::one());
-        let mut vals: Vec<RealAlg> = rur
-            .real_roots
-            .iter()
-            .map(|a| value_at(a, &rur.extra[0], &one).expect("denominator 1"))
+        let mut vals: Vec<RealAlg> = values_at(&rur.f, &rur.real_roots, &rur.extra[0], &one)
+            .into_iter()
+            .map(|v| v.expect("denominator 1"))
             .collect();
         vals.sort_by(|a, b| a.cmp_exact(b));
         vals.dedup_by(|a, b| a.cmp_exact(b) == Ordering::Equal);

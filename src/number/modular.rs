@@ -100,24 +100,24 @@ impl Modulus {
     }
 
     /// Inverse modulo a prime modulus (Montgomery form in and out); `None`
-    /// for zero.
+    /// for zero.  Extended Euclid on 64-bit words (no 128-bit division).
     pub fn inv(&self, a: u64) -> Option<u64> {
         if a == 0 {
             return None;
         }
-        // extended Euclid on the plain value, then back to Montgomery form
         let x = self.from_mont(a);
-        let (mut r0, mut r1) = (self.n as i128, x as i128);
-        let (mut s0, mut s1) = (0i128, 1i128);
+        let (mut r0, mut r1) = (self.n, x);
+        let (mut s0, mut s1) = (0i64, 1i64);
         while r1 != 0 {
             let q = r0 / r1;
             (r0, r1) = (r1, r0 - q * r1);
-            (s0, s1) = (s1, s0 - q * s1);
+            // |s| < n < 2^63: the products stay in range
+            (s0, s1) = (s1, s0.wrapping_sub((q as i64).wrapping_mul(s1)));
         }
         if r0 != 1 {
             return None;
         }
-        let inv = s0.rem_euclid(self.n as i128) as u64;
+        let inv = if s0 < 0 { (s0 + self.n as i64) as u64 } else { s0 as u64 };
         Some(self.to_mont(inv))
     }
 

@@ -1,7 +1,9 @@
 //! Formatting of `quadsect natural` (SPEC §4 JSON and the human summary).
 
-use crate::natural::exact::{EPoint, epoint_json, epoint_text};
+use crate::natural::exact::{EPoint, Exact, epoint_json, epoint_text, normalize_direction};
+use crate::natural::result::Plane;
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders};
+use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 use serde_json::{Value, json};
 
@@ -19,11 +21,11 @@ fn component_json(c: &Component) -> Value {
         } => json!({
             "type": "conic",
             "conic": kind.as_str(),
-            "plane": {"normal": epoint_json(&plane.normal), "offset": plane.offset.json()},
+            "plane": plane_json(plane),
             "center": center.as_ref().map(epoint_json),
             "vertex": vertex.as_ref().map(epoint_json),
             "semi_axes2": axes2.iter().map(|a| a.json()).collect::<Vec<_>>(),
-            "axis_directions": axis_dirs.iter().map(epoint_json).collect::<Vec<_>>(),
+            "axis_directions": axis_dirs.iter().map(|d| epoint_json(&normalize_direction(d))).collect::<Vec<_>>(),
             "focal_length2": focal2.as_ref().map(|f| f.json()),
             "double": double,
         }),
@@ -45,6 +47,36 @@ fn component_json(c: &Component) -> Value {
     }
 }
 
+/// A plane with rational coefficients is scaled to primitive integers.
+fn plane_json(p: &Plane) -> Value {
+    let (n, o) = normalize_plane(p);
+    json!({"normal": epoint_json(&n), "offset": o.json()})
+}
+
+fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
+    let mut all = p.normal.to_vec();
+    all.push(p.offset.clone());
+    let rat: Option<Vec<crate::number::Q>> = all
+        .iter()
+        .map(|c| match c {
+            Exact::Quad(x) if x.is_rational() => Some(x.a.clone()),
+            _ => None,
+        })
+        .collect();
+    let Some(rat) = rat else {
+        return (p.normal.clone(), p.offset.clone());
+    };
+    let as_point: EPoint = std::array::from_fn(|i| Exact::rational(rat[i].clone()));
+    let n = normalize_direction(&as_point);
+    // scale factor k with n = k·normal, applied to the offset too
+    let idx = (0..3).find(|&i| !num_traits::Zero::is_zero(&rat[i])).unwrap_or(0);
+    let k = match &n[idx] {
+        Exact::Quad(x) => &x.a / &rat[idx],
+        _ => crate::number::Q::from_integer(1.into()),
+    };
+    (n, Exact::rational(&rat[3] * &k))
+}
+
 fn q3(v: &[crate::number::Q; 3]) -> Value {
     json!(v.iter().map(fmt_q).collect::<Vec<_>>())
 }
@@ -63,6 +95,19 @@ fn deciders_json(d: &PlanarDeciders) -> Value {
     })
 }
 
+fn section7_json(s: &Section7) -> Value {
+    match s {
+        Section7::NotApplicable(why) => json!({"applies": false, "reason": why}),
+        Section7::Disjoint => json!({"applies": true, "verdict": "disjoint"}),
+        Section7::Transversal => json!({"applies": true, "verdict": "transversal"}),
+        Section7::Tangent(p) => json!({
+            "applies": true,
+            "verdict": "tangent",
+            "points": p.iter().map(|x| epoint_json(&crate::natural::exact::epoint(x))).collect::<Vec<_>>(),
+        }),
+    }
+}
+
 /// `quadsect natural --json`.
 pub fn natural_json(r: &NaturalReport) -> Value {
     json!({
@@ -75,6 +120,7 @@ pub fn natural_json(r: &NaturalReport) -> Value {
         "components": r.components.iter().map(component_json).collect::<Vec<_>>(),
         "method": r.method,
         "deciders": r.deciders.as_ref().map(deciders_json),
+        "section7": r.section7.as_ref().map(section7_json),
         "a": r.a.to_json(),
         "b": r.b.to_json(),
         "notes": r.notes,
@@ -134,7 +180,7 @@ fn component_human(c: &Component) -> String {
             "{}line through {} with direction {}",
             if *double { "double " } else { "" },
             pt(point),
-            pt(direction)
+            pt(&normalize_direction(direction))
         ),
         Component::Point { point, kind } => {
             format!("isolated point ({}) {}", kind.as_str(), pt(point))
@@ -192,6 +238,15 @@ pub fn natural_human(r: &NaturalReport) -> String {
                 fmt_q(h2)
             ));
         }
+    }
+    if let Some(s7) = &r.section7 {
+        let v = match s7 {
+            Section7::NotApplicable(why) => format!("does not apply ({why})"),
+            Section7::Disjoint => "disjoint (case 1)".into(),
+            Section7::Transversal => "transversal".into(),
+            Section7::Tangent(p) => format!("tangent at {} point(s)", p.len()),
+        };
+        s.push_str(&format!("§7        {v}\n"));
     }
     if r.components.is_empty() {
         s.push_str("no real intersection\n");

@@ -82,13 +82,17 @@ impl RealAlg {
         }
         let mut c = self.clone();
         c.refine_to(&Q::new(BigInt::one(), &l * &l * BigInt::from(2)));
+        if c.as_rational().is_some() {
+            return c;
+        }
         if let RealAlg::Root { poly, lo, hi } = &c {
             let cand = super::rational::simplest_rational_in(lo, hi);
             if poly.sign_at(&cand) == 0 {
                 return RealAlg::Rational(cand);
             }
         }
-        c
+        // keep the original (coarser, shorter) interval
+        self.clone()
     }
 
     /// The isolating interval `(lo, hi)` (equal ends for a rational).

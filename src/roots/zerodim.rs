@@ -63,20 +63,44 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         return Ok(None);
     };
     let multiplicity_dim = quo.dim();
-    // radical: the minimal polynomials of x, y, z must be square-free
+    // Fast path: a form t whose minimal polynomial has degree dim A makes A
+    // cyclic, A ≅ Q[T]/(m); then I is radical iff m is square-free, and
+    // otherwise √I = I + (sqfree(m)(t)).  Else fall back to Seidenberg: the
+    // minimal polynomials of x, y, z must be square-free.
     let mut made_radical = false;
     let mut mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
-    let mut sq_add = Vec::new();
-    for (v, m) in mats.iter().enumerate() {
-        let (mp, _) = krylov_minpoly(m, &quo.one());
-        let (mz, _) = ZPoly::from_q(&mp);
-        let sq = mz.squarefree_part();
-        if sq.degree() != mz.degree() {
-            sq_add.push(MPoly::from_univariate(&sq.to_q(), SLOTS[v]));
+    let mut sq_add: Vec<QMPoly> = Vec::new();
+    let mut cyclic = false;
+    let mut ready = None;
+    for (a, b) in [(1i64, 1i64), (2, -1), (-1, 3)] {
+        let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
+        let (mp, vecs) = krylov_minpoly(&mt, &quo.one());
+        if mp.degree() == Some(quo.dim()) {
+            cyclic = true;
+            ready = Some(([qi(1), qi(a), qi(b)], mp.clone(), vecs));
+            let (mz, _) = ZPoly::from_q(&mp);
+            let sq = mz.squarefree_part();
+            if sq.degree() != mz.degree() {
+                let t: QMPoly = &(&MPoly::var(X) + &MPoly::var(Y).scale(&qi(a))) + &MPoly::var(Z).scale(&qi(b));
+                let tz = MPoly::from_univariate(&sq.to_q(), X);
+                sq_add.push(tz.substitute(X, &t));
+            }
+            break;
+        }
+    }
+    if !cyclic {
+        for (v, m) in mats.iter().enumerate() {
+            let (mp, _) = krylov_minpoly(m, &quo.one());
+            let (mz, _) = ZPoly::from_q(&mp);
+            let sq = mz.squarefree_part();
+            if sq.degree() != mz.degree() {
+                sq_add.push(MPoly::from_univariate(&sq.to_q(), SLOTS[v]));
+            }
         }
     }
     if !sq_add.is_empty() {
         made_radical = true;
+        ready = None;
         let mut all = input;
         all.extend(sq_add.iter().map(to_g));
         let gb2 = groebner(all, 3, ord);
@@ -88,22 +112,25 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
     let d = quo.dim();
     // a separating linear form
     let candidates: [(i64, i64); 12] = [
+        (1, 1),
+        (2, -1),
+        (-1, 3),
         (0, 0),
         (1, 0),
         (0, 1),
-        (1, 1),
         (1, -1),
         (2, 1),
         (1, 2),
-        (2, -1),
-        (-1, 3),
         (3, 5),
         (5, -7),
         (7, 11),
     ];
     let one = quo.one();
-    let mut chosen = None;
+    let mut chosen = ready;
     for (a, b) in candidates {
+        if chosen.is_some() {
+            break;
+        }
         let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
         let (mp, vecs) = krylov_minpoly(&mt, &one);
         if mp.degree() == Some(d) {

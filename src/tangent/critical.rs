@@ -28,7 +28,7 @@ use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, U, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::{
-    RealAlg, Rur, simplest_rational_in, solve_zero_dim, value_at, value_polynomial,
+    RealAlg, Rur, simplest_rational_in, solve_zero_dim, value_polynomial, values_at,
 };
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
@@ -123,10 +123,9 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
             let value_poly = rur.extra[0].clone();
             let one = QPoly::constant(Q::one());
             let judging = value_polynomial(&rur.f, &value_poly, &one);
-            let values = rur
-                .real_roots
-                .iter()
-                .map(|a| value_at(a, &value_poly, &one).expect("denominator 1"))
+            let values = values_at(&rur.f, &rur.real_roots, &value_poly, &one)
+                .into_iter()
+                .map(|v| v.expect("denominator 1"))
                 .collect();
             let elimination = super::judging::eliminate(e, s);
             Ok(Outcome::Finite(CriticalAnalysis {

@@ -91,6 +91,10 @@ fn normalize_sign(p: &ZMPoly) -> ZMPoly {
 /// primitive part.
 fn content_in(p: &ZMPoly, v: usize) -> (ZMPoly, ZMPoly) {
     let up = p.to_upoly(v);
+    // a constant (or monomial-free) coefficient forces content 1 quickly
+    if up.coeffs().iter().any(|c| c.is_constant() && !c.is_zero()) {
+        return (MPoly::constant(BigInt::one()), p.clone());
+    }
     let mut c = ZMPoly::zero();
     for k in up.coeffs() {
         c = mpoly_gcd(&c, k);

@@ -269,8 +269,11 @@ fn finish(
 ) -> TangentReport {
     let _ = ellipsoid;
     let mut notes = Vec::new();
+    if matches!(method, Method::LevelSets(_)) {
+        notes.push("curves of critical points: ν and μ are exact; critical values strictly between them are not classified".into());
+    }
     let (min, max) = match (values.first(), values.last()) {
-        (Some(a), Some(b)) => (a.clone(), b.clone()),
+        (Some(a), Some(b)) => (a.simplify(), b.simplify()),
         _ => {
             return TangentReport {
                 ellipsoid: e.poly.clone(),
