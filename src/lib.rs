@@ -2,6 +2,7 @@
 //!
 //! An exact-arithmetic engine that decides how two surfaces meet.
 pub mod batch;
+pub mod bench;
 pub mod elim;
 pub mod error;
 pub mod examples;

@@ -28,6 +28,7 @@ enum Command {
     /// Real roots of a univariate polynomial: counts and isolating intervals.
     Roots {
         /// The polynomial, e.g. "x^3 - 2x".
+        #[arg(allow_hyphen_values = true)]
         expr: String,
         /// JSON output (SPEC §5).
         #[arg(long)]
@@ -36,8 +37,10 @@ enum Command {
     /// The resultant of two polynomials with respect to a variable.
     Resultant {
         /// First polynomial.
+        #[arg(allow_hyphen_values = true)]
         f: String,
         /// Second polynomial.
+        #[arg(allow_hyphen_values = true)]
         g: String,
         /// Variable to eliminate (x, y, z or u).
         #[arg(long)]
@@ -49,10 +52,10 @@ enum Command {
     /// Ellipsoid vs algebraic surface: intersect, touch or separated (exact, with certificate).
     Tangent {
         /// The ellipsoid E, e.g. "x^2+y^2+z^2-25".
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         ellipsoid: String,
         /// The surface S, e.g. "(x-9)^2/9+y^2/4+z^2/16-1".
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         surface: String,
         /// JSON output (SPEC §3).
         #[arg(long)]
@@ -65,6 +68,18 @@ enum Command {
         /// Second quadric.
         b: String,
         /// JSON output (SPEC §4).
+        #[arg(long)]
+        json: bool,
+    },
+    /// Median timings (kernel on ../shared/bench/inputs.json, tangent, natural).
+    Bench {
+        /// kernel, tangent, natural or all.
+        #[arg(default_value = "all")]
+        suite: String,
+        /// The shared benchmark inputs.
+        #[arg(long, default_value = "../shared/bench/inputs.json")]
+        inputs: String,
+        /// JSON output.
         #[arg(long)]
         json: bool,
     },
@@ -128,6 +143,18 @@ fn run(cli: Cli) -> Result<(), Error> {
                 json,
                 quadsect::report::natural_json(&r),
                 quadsect::report::natural_human(&r),
+            );
+        }
+        Command::Bench {
+            suite,
+            inputs,
+            json,
+        } => {
+            let rows = quadsect::bench::run(&suite, &inputs)?;
+            emit(
+                json,
+                quadsect::bench::to_json(&rows),
+                quadsect::bench::to_markdown(&rows),
             );
         }
         Command::Batch { file } => {

@@ -133,7 +133,28 @@ impl GPoly {
         Self::from_zmpoly(&z, slots, ord)
     }
 
-    /// From an integer multivariate polynomial.
+    /// From an integer multivariate polynomial, keeping its coefficients as
+    /// they are (no content removal, no sign change): use this where the
+    /// scale matters (normal forms of a given polynomial).
+    pub fn from_zmpoly_exact(p: &ZMPoly, slots: &[usize], ord: MonoOrder) -> GPoly {
+        let mut terms: Vec<(Mono, BigInt)> = p
+            .terms()
+            .iter()
+            .map(|(e, c)| {
+                let mut m = [0u16; GV];
+                for (i, &v) in slots.iter().enumerate() {
+                    m[i] = e[v] as u16;
+                }
+                (m, c.clone())
+            })
+            .collect();
+        terms.sort_by(|a, b| cmp_mono(&b.0, &a.0, ord));
+        GPoly { terms }
+    }
+
+    /// From an integer multivariate polynomial, made primitive with a
+    /// positive leading coefficient (an ideal generator: the scale does not
+    /// matter).
     pub fn from_zmpoly(p: &ZMPoly, slots: &[usize], ord: MonoOrder) -> GPoly {
         let mut terms: Vec<(Mono, BigInt)> = p
             .terms()

@@ -92,58 +92,60 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
                 (c, "intersection-curve topology")
             }
         }
-        _ => match axes.as_ref() {
-            Some(AxesRelation::Coincident) => (same_axis(a, b), "common axis (circles)"),
-            Some(AxesRelation::Intersecting(_)) | Some(AxesRelation::Parallel) => {
-                let h = AxialPlane::new(a, b).ok_or_else(|| {
-                    Error::Internal("coplanar axes without an axial plane".into())
-                })?;
-                let pencil = pencil_has_planar_member(a, b);
-                let lemma = h.lemma81_planar();
-                if t8.is_some_and(|t| t != lemma) || pencil != lemma {
-                    notes.push(format!(
+        _ => {
+            match axes.as_ref() {
+                Some(AxesRelation::Coincident) => (same_axis(a, b), "common axis (circles)"),
+                Some(AxesRelation::Intersecting(_)) | Some(AxesRelation::Parallel) => {
+                    let h = AxialPlane::new(a, b).ok_or_else(|| {
+                        Error::Internal("coplanar axes without an axial plane".into())
+                    })?;
+                    let pencil = pencil_has_planar_member(a, b);
+                    let lemma = h.lemma81_planar();
+                    if t8.is_some_and(|t| t != lemma) || pencil != lemma {
+                        notes.push(format!(
                         "deciders disagree (thm8 {t8:?}, Lemma 8.1 {lemma}, pencil {pencil}) — please report"
                     ));
+                    }
+                    deciders = Some(PlanarDeciders {
+                        thm8: t8,
+                        lemma81: lemma,
+                        discriminant: h.discriminant.clone(),
+                        pencil,
+                        x_point: h.x_point.as_ref().map(|(s, t)| h.point(s, t)),
+                        heights_at_x: h.heights_at_x(),
+                        projection: conic_string(&h.projection),
+                        frame: [h.o.clone(), h.e1.clone(), h.e2.clone()],
+                        skeletal: vec![
+                            skeletal_lines(&h, &h.heights[0]),
+                            skeletal_lines(&h, &h.heights[1]),
+                        ],
+                    });
+                    if lemma {
+                        (
+                            planar_components(&h),
+                            "axial plane: projection conic factors (Lemma 8.1)",
+                        )
+                    } else {
+                        let (c, n) = classify_nonplanar(a, b)?;
+                        notes.extend(n);
+                        (
+                            c,
+                            "intersection-curve topology (projection conic does not factor)",
+                        )
+                    }
                 }
-                deciders = Some(PlanarDeciders {
-                    thm8: t8,
-                    lemma81: lemma,
-                    discriminant: h.discriminant.clone(),
-                    pencil,
-                    x_point: h.x_point.as_ref().map(|(s, t)| h.point(s, t)),
-                    heights_at_x: h.heights_at_x(),
-                    projection: conic_string(&h.projection),
-                    frame: [h.o.clone(), h.e1.clone(), h.e2.clone()],
-                    skeletal: vec![
-                        skeletal_lines(&h, &h.heights[0]),
-                        skeletal_lines(&h, &h.heights[1]),
-                    ],
-                });
-                if lemma {
-                    (
-                        planar_components(&h),
-                        "axial plane: projection conic factors (Lemma 8.1)",
-                    )
-                } else {
+                _ => {
                     let (c, n) = classify_nonplanar(a, b)?;
                     notes.extend(n);
-                    (
-                        c,
-                        "intersection-curve topology (projection conic does not factor)",
-                    )
+                    let s7 = section7(a, b);
+                    if !section7_agrees(&s7, &c) {
+                        notes.push(format!("the §7 decider ({s7:?}) disagrees with the curve topology — please report"));
+                    }
+                    sec7 = Some(s7);
+                    (c, "intersection-curve topology (skew axes)")
                 }
             }
-            _ => {
-                let (c, n) = classify_nonplanar(a, b)?;
-                notes.extend(n);
-                let s7 = section7(a, b);
-                if !section7_agrees(&s7, &c) {
-                    notes.push(format!("the §7 decider ({s7:?}) disagrees with the curve topology — please report"));
-                }
-                sec7 = Some(s7);
-                (c, "intersection-curve topology (skew axes)")
-            }
-        },
+        }
     };
     let class = class_of(&components);
     Ok(NaturalReport {
@@ -169,7 +171,11 @@ pub fn section7_agrees(s7: &Section7, comps: &[Component]) -> bool {
         Section7::Transversal => class == Class::Curve,
         Section7::Tangent(p) => {
             class == Class::Points
-                && comps.iter().filter(|c| matches!(c, Component::Point { .. })).count() == p.len()
+                && comps
+                    .iter()
+                    .filter(|c| matches!(c, Component::Point { .. }))
+                    .count()
+                    == p.len()
         }
     }
 }

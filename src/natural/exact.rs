@@ -140,7 +140,11 @@ pub fn normalize_direction(d: &EPoint) -> EPoint {
     if g.is_zero() {
         return d.clone();
     }
-    if ints.iter().find(|x| !x.is_zero()).is_some_and(|x| x.is_negative()) {
+    if ints
+        .iter()
+        .find(|x| !x.is_zero())
+        .is_some_and(|x| x.is_negative())
+    {
         g = -g;
     }
     std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)))

@@ -66,7 +66,9 @@ pub const NATURAL_EXAMPLES: &[NaturalExample] = &[
         expected: "r1² ≠ r2²: no conic; a space quartic",
         class: "curve",
         counts: (0, 0, 0),
-        float_note: Some("in f64, 1.00000000000000000001 == 1.0, so a float test of r1² = r2² reports two ellipses"),
+        float_note: Some(
+            "in f64, 1.00000000000000000001 == 1.0, so a float test of r1² = r2² reports two ellipses",
+        ),
         paper_error: None,
     },
     NaturalExample {
@@ -76,7 +78,9 @@ pub const NATURAL_EXAMPLES: &[NaturalExample] = &[
         expected: "d² sin²α = 1 ≠ r²: no conic",
         class: "curve",
         counts: (0, 0, 0),
-        float_note: Some("in f64, 0.99999999999999999999 rounds to 1.0 = d² sin²α: a float test reports two conics"),
+        float_note: Some(
+            "in f64, 0.99999999999999999999 rounds to 1.0 = d² sin²α: a float test reports two conics",
+        ),
         paper_error: None,
     },
     NaturalExample {
@@ -147,7 +151,9 @@ pub const NATURAL_EXAMPLES: &[NaturalExample] = &[
         class: "curve",
         counts: (0, 0, 0),
         float_note: None,
-        paper_error: Some("§5.1 says the intersection is 'a space quartic with one isolated point'; with the skeletal line through V inside the solid cone, real branches cross at V and there is no isolated point"),
+        paper_error: Some(
+            "§5.1 says the intersection is 'a space quartic with one isolated point'; with the skeletal line through V inside the solid cone, real branches cross at V and there is no isolated point",
+        ),
     },
     NaturalExample {
         title: "Skew cylinders at distance r1 + r2: one tangency point",
@@ -249,7 +255,8 @@ pub fn natural_examples() -> Vec<ExampleResult> {
             let command = format!("quadsect natural '{}' '{}'", ex.a, ex.b);
             match classify_str(ex.a, ex.b) {
                 Ok(r) => {
-                    let mut disc: Vec<String> = ex.paper_error.iter().map(|e| e.to_string()).collect();
+                    let mut disc: Vec<String> =
+                        ex.paper_error.iter().map(|e| e.to_string()).collect();
                     let got = (r.conics(), r.lines(), r.points());
                     if r.class.as_str() != ex.class || got != ex.counts {
                         disc.push(format!(

@@ -442,7 +442,9 @@ pub fn drop_points_on_lines(comps: Vec<Component>) -> Vec<Component> {
     let lines: Vec<(EPoint, EPoint)> = comps
         .iter()
         .filter_map(|c| match c {
-            Component::Line { point, direction, .. } => Some((point.clone(), direction.clone())),
+            Component::Line {
+                point, direction, ..
+            } => Some((point.clone(), direction.clone())),
             _ => None,
         })
         .collect();

@@ -126,16 +126,26 @@ fn bounding_normals(cone: &Cone, u: &V3) -> Option<[SV; 2]> {
     if !disc.is_positive() {
         return None;
     }
-    let mk = |x: QSqrt, y: QSqrt| -> SV { std::array::from_fn(|i| x.scale(&w1[i]).add(&y.scale(&w2[i]))) };
+    let mk = |x: QSqrt, y: QSqrt| -> SV {
+        std::array::from_fn(|i| x.scale(&w1[i]).add(&y.scale(&w2[i])))
+    };
     if !cxx.is_zero() {
         let n: Vec<SV> = [1, -1]
             .iter()
-            .map(|&s| mk(QSqrt::new(-cxy.clone(), qi(s), disc.clone()), QSqrt::rational(qi(2) * &cxx)))
+            .map(|&s| {
+                mk(
+                    QSqrt::new(-cxy.clone(), qi(s), disc.clone()),
+                    QSqrt::rational(qi(2) * &cxx),
+                )
+            })
             .collect();
         Some([n[0].clone(), n[1].clone()])
     } else {
         // x (cxy y) + cyy y² = 0 with cxx = 0: y = 0 or cxy x + cyy y = 0
-        Some([mk(QSqrt::rational(qi(1)), QSqrt::rational(qi(0))), mk(QSqrt::rational(-cyy.clone()), QSqrt::rational(cxy.clone()))])
+        Some([
+            mk(QSqrt::rational(qi(1)), QSqrt::rational(qi(0))),
+            mk(QSqrt::rational(-cyy.clone()), QSqrt::rational(cxy.clone())),
+        ])
     }
 }
 
@@ -161,7 +171,10 @@ fn bounding_test(cone: &Cone, u: &V3, axis2: &V3, s: &V3, rho2: &Q, v2: Option<&
     };
     let v1 = sv(&cone.vertex);
     // ℓ2 outside B(C, v): the cone occupies the quadrants of sign ±(σ1, σ2)
-    let sig: Vec<i32> = normals.iter().map(|n| sdot(n, &sv(&cone.axis)).sign()).collect();
+    let sig: Vec<i32> = normals
+        .iter()
+        .map(|n| sdot(n, &sv(&cone.axis)).sign())
+        .collect();
     let dir: Vec<i32> = normals.iter().map(|n| sdot(n, &sv(axis2)).sign()).collect();
     let inside = (dir[0] == sig[0] && dir[1] == sig[1]) || (dir[0] == -sig[0] && dir[1] == -sig[1]);
     if dir[0] != 0 && dir[1] != 0 && inside {
@@ -173,7 +186,9 @@ fn bounding_test(cone: &Cone, u: &V3, axis2: &V3, s: &V3, rho2: &Q, v2: Option<&
         .iter()
         .map(|n| {
             let h = sdot(n, &ssub(&ssv, &v1));
-            h.mul(&h).div(&sdot(n, n)).unwrap_or_else(|| QSqrt::rational(Q::zero()))
+            h.mul(&h)
+                .div(&sdot(n, n))
+                .unwrap_or_else(|| QSqrt::rational(Q::zero()))
         })
         .collect();
     let rho = QSqrt::rational(rho2.clone());
@@ -191,10 +206,14 @@ fn bounding_test(cone: &Cone, u: &V3, axis2: &V3, s: &V3, rho2: &Q, v2: Option<&
         }
         // tangent line t_i: the ruling of C in T_i
         let a = sv(&cone.axis);
-        let k = sdot(&a, n).div(&sdot(n, n)).unwrap_or_else(|| QSqrt::rational(Q::zero()));
+        let k = sdot(&a, n)
+            .div(&sdot(n, n))
+            .unwrap_or_else(|| QSqrt::rational(Q::zero()));
         let r = ssub(&a, &std::array::from_fn(|j| n[j].mul(&k)));
         // S_i: the foot of S on T_i
-        let h = sdot(n, &ssub(&ssv, &v1)).div(&sdot(n, n)).unwrap_or_else(|| QSqrt::rational(Q::zero()));
+        let h = sdot(n, &ssub(&ssv, &v1))
+            .div(&sdot(n, n))
+            .unwrap_or_else(|| QSqrt::rational(Q::zero()));
         let si: SV = std::array::from_fn(|j| ssv[j].sub(&n[j].mul(&h)));
         // the other surface touches T_i along V2S_i (cone) or the line
         // through S_i parallel to its axis (cylinder)
@@ -252,7 +271,9 @@ pub fn section7(a: &Natural, b: &Natural) -> Section7 {
     match (a, b) {
         (Natural::Cylinder(x), Natural::Cylinder(y)) => cylinder_cylinder(x, y),
         (Natural::Cone(x), Natural::Cone(y)) => cone_cone(x, y),
-        (Natural::Cone(x), Natural::Cylinder(y)) | (Natural::Cylinder(y), Natural::Cone(x)) => cone_cylinder(x, y),
+        (Natural::Cone(x), Natural::Cylinder(y)) | (Natural::Cylinder(y), Natural::Cone(x)) => {
+            cone_cylinder(x, y)
+        }
         _ => Section7::NotApplicable("a sphere is involved".into()),
     }
 }
@@ -269,8 +290,14 @@ mod tests {
     #[test]
     fn cylinder_rule() {
         let a = "cylinder point=0,0,0 axis=1,0,0 radius2=1";
-        assert!(matches!(run(a, "cylinder point=0,0,3 axis=0,1,0 radius2=1"), Section7::Disjoint));
-        assert!(matches!(run(a, "cylinder point=0,0,1 axis=0,1,0 radius2=1"), Section7::Transversal));
+        assert!(matches!(
+            run(a, "cylinder point=0,0,3 axis=0,1,0 radius2=1"),
+            Section7::Disjoint
+        ));
+        assert!(matches!(
+            run(a, "cylinder point=0,0,1 axis=0,1,0 radius2=1"),
+            Section7::Transversal
+        ));
         match run(a, "cylinder point=0,0,2 axis=0,1,0 radius2=1") {
             Section7::Tangent(p) => assert_eq!(p[0][2], QSqrt::rational(qi(1))),
             other => panic!("{other:?}"),
@@ -284,6 +311,9 @@ mod tests {
             Section7::Tangent(p) => assert_eq!(p.len(), 2),
             other => panic!("{other:?}"),
         }
-        assert!(matches!(run(z, "cone vertex=0,0,3 axis=0,1,0 tan2=1"), Section7::Disjoint));
+        assert!(matches!(
+            run(z, "cone vertex=0,0,3 axis=0,1,0 tan2=1"),
+            Section7::Disjoint
+        ));
     }
 }

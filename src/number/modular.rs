@@ -117,7 +117,11 @@ impl Modulus {
         if r0 != 1 {
             return None;
         }
-        let inv = if s0 < 0 { (s0 + self.n as i64) as u64 } else { s0 as u64 };
+        let inv = if s0 < 0 {
+            (s0 + self.n as i64) as u64
+        } else {
+            s0 as u64
+        };
         Some(self.to_mont(inv))
     }
 

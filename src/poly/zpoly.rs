@@ -247,15 +247,7 @@ impl UPoly<BigInt> {
         if coprime_mod_p(&a, &b) {
             return ZPoly::constant(BigInt::one());
         }
-        while !b.is_zero() {
-            let r = a.pseudo_rem(&b);
-            a = b;
-            b = r.primitive_part();
-            if b.degree() == Some(0) {
-                return ZPoly::constant(BigInt::one());
-            }
-        }
-        a.primitive_part()
+        modular_gcd(&a, &b)
     }
 
     /// Exact division over Q of primitive integer polynomials whose quotient
@@ -403,6 +395,74 @@ fn coprime_mod_p(a: &ZPoly, b: &ZPoly) -> bool {
         return gcd_degree_mod(&ra, &rb, &m) == Some(0);
     }
     false
+}
+
+/// Monic gcd modulo a prime (Montgomery form, ascending).
+fn gcd_mod(a: &[u64], b: &[u64], m: &Modulus) -> Vec<u64> {
+    let mut a: Vec<u64> = a.to_vec();
+    let mut b: Vec<u64> = b.to_vec();
+    trim(&mut a);
+    trim(&mut b);
+    while !b.is_empty() {
+        rem_mod_in_place(&mut a, &b, m);
+        std::mem::swap(&mut a, &mut b);
+    }
+    if let Some(&l) = a.last() {
+        let inv = m.inv(l).expect("non-zero leading coefficient");
+        for x in a.iter_mut() {
+            *x = m.mul(*x, inv);
+        }
+    }
+    a
+}
+
+/// Brown's small-primes gcd of primitive polynomials: modular gcds scaled
+/// by `gcd(lc a, lc b)`, combined by the CRT over the primes of minimal
+/// degree, and accepted only when the primitive candidate divides both
+/// inputs exactly (so the answer is proven, whatever primes were used).
+fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
+    use crate::number::modular::{Crt, nth_prime};
+    let g = a.lc().gcd(&b.lc());
+    let gd = Digits::new(&g);
+    let mut best: Option<usize> = None;
+    let mut crts: Vec<Crt> = Vec::new();
+    let mut last: Option<ZPoly> = None;
+    let mut i = 0;
+    loop {
+        let m = Modulus::new(nth_prime(i));
+        i += 1;
+        let ra = reduce_mod(a, &m);
+        let rb = reduce_mod(b, &m);
+        if ra.last() == Some(&0) || rb.last() == Some(&0) {
+            continue;
+        }
+        let h = gcd_mod(&ra, &rb, &m);
+        let d = h.len() - 1;
+        if d == 0 {
+            return ZPoly::constant(BigInt::one());
+        }
+        match best {
+            Some(bd) if d > bd => continue, // unlucky prime
+            Some(bd) if d == bd => {}
+            _ => {
+                best = Some(d);
+                crts = vec![Crt::new(); d + 1];
+                last = None;
+            }
+        }
+        let gm = gd.reduce(&m);
+        for (k, c) in h.iter().enumerate() {
+            crts[k].push(&m, m.mul(*c, gm));
+        }
+        let cand = ZPoly::new(crts.iter().map(|c| c.symmetric()).collect()).primitive_part();
+        if last.as_ref() == Some(&cand)
+            && a.div_exact(&cand).is_some()
+            && b.div_exact(&cand).is_some()
+        {
+            return cand;
+        }
+        last = Some(cand);
+    }
 }
 
 /// Sign of a big integer as `Sign`.

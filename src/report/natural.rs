@@ -69,7 +69,9 @@ fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
     let as_point: EPoint = std::array::from_fn(|i| Exact::rational(rat[i].clone()));
     let n = normalize_direction(&as_point);
     // scale factor k with n = k·normal, applied to the offset too
-    let idx = (0..3).find(|&i| !num_traits::Zero::is_zero(&rat[i])).unwrap_or(0);
+    let idx = (0..3)
+        .find(|&i| !num_traits::Zero::is_zero(&rat[i]))
+        .unwrap_or(0);
     let k = match &n[idx] {
         Exact::Quad(x) => &x.a / &rat[idx],
         _ => crate::number::Q::from_integer(1.into()),

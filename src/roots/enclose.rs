@@ -50,7 +50,11 @@ pub fn enclose_mean_value(p: &ZPoly, a: &Q, b: &Q) -> (Q, Q) {
     let r = (b - a) / &two;
     let c = p.eval_q(&m);
     let big = if a.abs() > b.abs() { a.abs() } else { b.abs() };
-    let e = if big.is_zero() { 0 } else { crate::number::floor_log2_q(&big) + 1 };
+    let e = if big.is_zero() {
+        0
+    } else {
+        crate::number::floor_log2_q(&big) + 1
+    };
     // Σ i|p_i| 2^(e(i−1))
     let mut bound = Q::zero();
     for (i, pi) in p.coeffs().iter().enumerate().skip(1) {
@@ -100,7 +104,11 @@ pub fn ratio_enclosure(num: &(ZPoly, Q), den: &(ZPoly, Q), a: &Q, b: &Q) -> Opti
 }
 
 fn scale_iv((l, h): (Q, Q), k: &Q) -> (Q, Q) {
-    if k.is_negative() { (&h * k, &l * k) } else { (&l * k, &h * k) }
+    if k.is_negative() {
+        (&h * k, &l * k)
+    } else {
+        (&l * k, &h * k)
+    }
 }
 
 fn meets(iv: &RootInterval, lo: &Q, hi: &Q) -> bool {
@@ -145,7 +153,12 @@ pub fn value_at(alpha: &RealAlg, num: &QPoly, den: &QPoly) -> Option<RealAlg> {
 
 /// [`value_at`] for several roots of the same square-free polynomial `phi`:
 /// the value polynomial is computed and isolated once.
-pub fn values_at(phi: &ZPoly, alphas: &[RealAlg], num: &QPoly, den: &QPoly) -> Vec<Option<RealAlg>> {
+pub fn values_at(
+    phi: &ZPoly,
+    alphas: &[RealAlg],
+    num: &QPoly,
+    den: &QPoly,
+) -> Vec<Option<RealAlg>> {
     let mut r: Option<(ZPoly, Vec<RootInterval>)> = None;
     let mut zs: Option<((ZPoly, Q), (ZPoly, Q))> = None;
     alphas
@@ -171,7 +184,9 @@ pub fn values_at(phi: &ZPoly, alphas: &[RealAlg], num: &QPoly, den: &QPoly) -> V
                 }
                 let (lo, hi) = a.interval();
                 if let Some((vl, vh)) = ratio_enclosure(nzq, dzq, &lo, &hi) {
-                    let hits: Vec<usize> = (0..ivs.len()).filter(|&j| meets(&ivs[j], &vl, &vh)).collect();
+                    let hits: Vec<usize> = (0..ivs.len())
+                        .filter(|&j| meets(&ivs[j], &vl, &vh))
+                        .collect();
                     if hits.len() == 1 {
                         return Some(RealAlg::from_interval(rp, &ivs[hits[0]]).simplify());
                     }

@@ -13,33 +13,61 @@ use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 /// The rational with the smallest denominator in the open interval
-/// `(lo, hi)` (`lo < hi`), by the continued-fraction (Stern–Brocot) rule.
+/// `(lo, hi)` (`lo < hi`), by the continued-fraction (Stern–Brocot) rule,
+/// iteratively on integer pairs (no rational normalisation per step).
 pub fn simplest_rational_in(lo: &Q, hi: &Q) -> Q {
     debug_assert!(lo < hi);
+    if lo >= hi {
+        return lo.clone();
+    }
     if lo.is_negative() && hi.is_positive() {
         return Q::zero();
     }
     if !hi.is_positive() {
         return -simplest_rational_in(&-hi, &-lo);
     }
-    // 0 <= lo < hi
-    let fl = lo.floor();
-    if &(&fl + Q::one()) < hi {
-        // the integer floor(lo) + 1 lies strictly inside
-        return fl + Q::one();
+    // 0 <= a/b < c/d; convergent matrix [[p0, p1], [q0, q1]] maps the
+    // remaining interval back: x = (p1 t + p0)/(q1 t + q0)
+    let (mut a, mut b) = (lo.numer().clone(), lo.denom().clone());
+    let (mut c, mut d) = (hi.numer().clone(), hi.denom().clone());
+    let (mut p0, mut p1) = (BigInt::zero(), BigInt::one());
+    let (mut q0, mut q1) = (BigInt::one(), BigInt::zero());
+    loop {
+        // floor of the lower end; the upper end may be ∞ (d = 0)
+        let (fa, ra) = num_integer::Integer::div_rem(&a, &b);
+        let candidate = &fa + 1u32;
+        // is floor(a/b) + 1 < c/d (or the upper end infinite)?
+        let below_hi = d.is_zero() || &candidate * &d < c;
+        if below_hi {
+            // the integer floor(a/b)+1 lies inside (a/b, c/d)
+            let num = &p1 * &candidate + &p0;
+            let den = &q1 * &candidate + &q0;
+            return Q::new(num, den);
+        }
+        // both ends share the integer part fa: recurse on the reciprocals
+        // of the fractional parts, reversed: (d/(c − fa d), b/ra)
+        let (np0, nq0) = (p1.clone(), q1.clone());
+        p1 = &p1 * &fa + &p0;
+        q1 = &q1 * &fa + &q0;
+        p0 = np0;
+        q0 = nq0;
+        if ra.is_zero() {
+            // lower end is exactly fa: the interval (fa, c/d) with c/d < fa + 1
+            // → fa + 1/k for the least k with 1/k < c/d − fa, i.e. t ∈ (k, ∞)
+            let cr = &c - &fa * &d; // c/d − fa = cr/d
+            let k = &d / &cr + 1u32;
+            let num = &p1 * &k + &p0;
+            let den = &q1 * &k + &q0;
+            return Q::new(num, den);
+        }
+        let cr = &c - &fa * &d;
+        // new interval (d/cr, b/ra): reciprocals of (cr/d, ra/b) reversed
+        let (na, nb, nc, nd) = (d.clone(), cr, b.clone(), ra);
+        a = na;
+        b = nb;
+        c = nc;
+        d = nd;
     }
-    // lo and hi share the integer part n (or hi = n + 1 exactly)
-    let n = fl;
-    let a = lo - &n;
-    let b = hi - &n;
-    if a.is_zero() {
-        // (n, n + b): the simplest is n + 1/k with k = floor(1/b) + 1
-        let k = (Q::one() / &b).floor() + Q::one();
-        return n + Q::one() / k;
-    }
-    // n + 1 / simplest in (1/b, 1/a)
-    let inner = simplest_rational_in(&(Q::one() / &b), &(Q::one() / &a));
-    n + Q::one() / inner
 }
 
 /// All rational roots of a non-zero integer polynomial, increasing.
@@ -120,5 +148,44 @@ mod tests {
         let (r, rest) = split_cubic(&(&ZPoly::from_i64s(&[3, 7]) * &ZPoly::from_i64s(&[-1, 1, 1])));
         assert_eq!(r, vec![q(-3, 7)]);
         assert_eq!(rest, ZPoly::from_i64s(&[-1, 1, 1]));
+    }
+}
+
+#[cfg(test)]
+mod brute {
+    use super::*;
+    use crate::number::q;
+
+    #[test]
+    fn simplest_matches_brute_force() {
+        let mut seed = 12345u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for _ in 0..3000 {
+            let a = (next() % 2000) as i64 - 1000;
+            let b = (next() % 60) as i64 + 1;
+            let c = (next() % 2000) as i64 - 1000;
+            let d = (next() % 60) as i64 + 1;
+            let (lo, hi) = (q(a, b), q(c, d));
+            if lo >= hi {
+                continue;
+            }
+            let s = simplest_rational_in(&lo, &hi);
+            assert!(lo < s && s < hi, "({lo}, {hi}) -> {s}");
+            // no smaller denominator fits
+            for den in 1..*s.denom().to_u64_digits().1.first().unwrap_or(&1) {
+                let den = den as i64;
+                let k = (&lo * Q::from_integer(den.into())).floor() + Q::one();
+                let cand = k / Q::from_integer(den.into());
+                assert!(
+                    cand >= hi,
+                    "({lo}, {hi}): {cand} has a smaller denominator than {s}"
+                );
+            }
+        }
     }
 }

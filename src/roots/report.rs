@@ -105,7 +105,12 @@ pub fn analyze_roots(p: &ZPoly) -> RootReport {
             break;
         }
     }
-    roots.sort_by(|a, b| a.interval.lo.cmp(&b.interval.lo));
+    roots.sort_by(|a, b| {
+        a.interval
+            .lo
+            .cmp(&b.interval.lo)
+            .then(a.interval.hi.cmp(&b.interval.hi))
+    });
     let zero_multiplicity = p.zero_root_multiplicity() as u32;
     let positive = roots
         .iter()

@@ -81,7 +81,8 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
             let (mz, _) = ZPoly::from_q(&mp);
             let sq = mz.squarefree_part();
             if sq.degree() != mz.degree() {
-                let t: QMPoly = &(&MPoly::var(X) + &MPoly::var(Y).scale(&qi(a))) + &MPoly::var(Z).scale(&qi(b));
+                let t: QMPoly =
+                    &(&MPoly::var(X) + &MPoly::var(Y).scale(&qi(a))) + &MPoly::var(Z).scale(&qi(b));
                 let tz = MPoly::from_univariate(&sq.to_q(), X);
                 sq_add.push(tz.substitute(X, &t));
             }
@@ -186,8 +187,9 @@ fn nf_rational(quo: &Quotient, p: &QMPoly) -> Vec<Q> {
     if p.is_zero() {
         return vec![Q::zero(); quo.dim()];
     }
+    // p = k·z exactly; the Gröbner conversion must keep z's scale and sign
     let (z, k) = p.to_primitive_z();
-    let g = GPoly::from_zmpoly(&z, &SLOTS, MonoOrder::GrevLex);
+    let g = GPoly::from_zmpoly_exact(&z, &SLOTS, MonoOrder::GrevLex);
     quo.nf(&g).into_iter().map(|c| c * &k).collect()
 }
 

@@ -3,9 +3,9 @@
 
 use super::{Method, TangentReport, decide_str};
 use crate::examples::ExampleResult;
+use crate::poly::mpoly::U;
 use crate::poly::{ZPoly, parse_poly};
 use crate::report::{tangent_human, tangent_json, upoly_string};
-use crate::poly::mpoly::U;
 
 /// One paper example: inputs, what the paper printed, and the polynomials
 /// it printed (to test divisibility into our exact D(u)).
@@ -129,8 +129,12 @@ pub fn paper_examples() -> Vec<ExampleResult> {
         let mut disc: Vec<String> = ex.known_errors.iter().map(|s| s.to_string()).collect();
         for f in ex.printed_factors {
             match divides_judging(f, &r) {
-                Some(true) => ours.push_str(&format!("printed factor {f}: divides our D(u) (genuine critical values)\n")),
-                Some(false) => disc.push(format!("printed factor {f} does not divide the exact D(u)")),
+                Some(true) => ours.push_str(&format!(
+                    "printed factor {f}: divides our D(u) (genuine critical values)\n"
+                )),
+                Some(false) => {
+                    disc.push(format!("printed factor {f} does not divide the exact D(u)"))
+                }
                 None => {}
             }
         }

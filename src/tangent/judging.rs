@@ -42,8 +42,57 @@ pub struct Elimination {
     pub branches: usize,
 }
 
+thread_local! {
+    /// Deterministic work budget of one elimination (term operations).
+    static FUEL: std::cell::Cell<i64> = const { std::cell::Cell::new(i64::MAX) };
+}
+
+/// Work budget of one elimination, in term operations.
+pub const WORK_BUDGET: i64 = 3_000_000;
+
+fn burn(n: usize) -> bool {
+    FUEL.with(|f| {
+        let v = f.get().saturating_sub(n as i64);
+        f.set(v);
+        v > 0
+    })
+}
+
+fn exhausted() -> bool {
+    FUEL.with(|f| f.get() <= 0)
+}
+
+/// True when `a` and `b` are coprime as polynomials in `v`, proven by one
+/// specialisation of the other variables that keeps both leading
+/// coefficients non-zero: a common factor of positive degree in `v` would
+/// survive it.  `false` means "not proven".
+fn coprime_in(a: &ZMPoly, b: &ZMPoly, v: usize) -> bool {
+    let others: Vec<usize> = a
+        .vars()
+        .into_iter()
+        .chain(b.vars())
+        .filter(|&w| w != v)
+        .collect();
+    let pts = [3i64, -5, 7, 11, -13, 17];
+    let spec = |p: &ZMPoly| -> ZPoly {
+        let mut q = p.clone();
+        for (k, &w) in others.iter().enumerate() {
+            q = q.eval_var(w, &BigInt::from(pts[k % pts.len()] + k as i64));
+        }
+        q.to_univariate(v).unwrap_or_else(ZPoly::zero)
+    };
+    let (sa, sb) = (spec(a), spec(b));
+    if sa.degree() != a.degree_in(v).map(|d| d as usize)
+        || sb.degree() != b.degree_in(v).map(|d| d as usize)
+    {
+        return false;
+    }
+    sa.gcd(&sb).degree() == Some(0)
+}
+
 /// Greatest common divisor of integer multivariate polynomials (recursive
-/// primitive PRS), with positive leading coefficient.
+/// primitive PRS, with a specialisation test for the frequent coprime
+/// case), with positive leading coefficient.
 pub fn mpoly_gcd(a: &ZMPoly, b: &ZMPoly) -> ZMPoly {
     if a.is_zero() {
         return b.primitive().0;
@@ -63,6 +112,13 @@ pub fn mpoly_gcd(a: &ZMPoly, b: &ZMPoly) -> ZMPoly {
     let (ca, pa) = content_in(a, v);
     let (cb, pb) = content_in(b, v);
     let c = mpoly_gcd(&ca, &cb);
+    if pa.degree_in(v).unwrap_or(0) == 0
+        || pb.degree_in(v).unwrap_or(0) == 0
+        || exhausted()
+        || coprime_in(&pa, &pb, v)
+    {
+        return c;
+    }
     let (mut p, mut q) = (pa.to_upoly(v), pb.to_upoly(v));
     if p.degree() < q.degree() {
         std::mem::swap(&mut p, &mut q);
@@ -71,7 +127,23 @@ pub fn mpoly_gcd(a: &ZMPoly, b: &ZMPoly) -> ZMPoly {
         if q.degree() == Some(0) {
             return c;
         }
+        let work: usize = p.coeffs().iter().map(|x| x.len()).sum::<usize>()
+            * q.coeffs().iter().map(|x| x.len()).sum::<usize>();
+        if !burn(work) {
+            return c;
+        }
         let r = p.pseudo_rem(&q);
+        let size: usize = r.coeffs().iter().map(|x| x.len()).sum();
+        let bits = r
+            .coeffs()
+            .iter()
+            .flat_map(|x| x.terms().iter().map(|(_, c)| c.bits()))
+            .max()
+            .unwrap_or(0);
+        if size > 2_000 || bits > 4_096 {
+            FUEL.with(|f| f.set(0));
+            return c;
+        }
         p = q;
         q = primitive_upoly(&r);
     }
@@ -112,7 +184,13 @@ fn content_in(p: &ZMPoly, v: usize) -> (ZMPoly, ZMPoly) {
 fn primitive_upoly(p: &UPoly<ZMPoly>) -> UPoly<ZMPoly> {
     let mut c = ZMPoly::zero();
     for k in p.coeffs() {
+        if exhausted() {
+            return p.clone();
+        }
         c = mpoly_gcd(&c, k);
+        if c.is_constant() {
+            break;
+        }
     }
     if c.is_zero() || c.ris_one() {
         return p.clone();
@@ -173,7 +251,7 @@ struct Ctx {
 /// polynomials in u (or a failure).
 fn eliminate_rec(system: Vec<ZMPoly>, order: &[usize], ctx: &mut Ctx) -> Result<ZPoly, Fail> {
     ctx.branches += 1;
-    if ctx.branches > BRANCH_BUDGET {
+    if ctx.branches > BRANCH_BUDGET || exhausted() {
         return Err(Fail::Budget);
     }
     let mut sys: Vec<ZMPoly> = Vec::new();
@@ -235,7 +313,13 @@ fn eliminate_rec(system: Vec<ZMPoly>, order: &[usize], ctx: &mut Ctx) -> Result<
         if j == pi {
             continue;
         }
+        if !burn(pivot.len() * q.len() * 16) {
+            return Err(Fail::Budget);
+        }
         let r = resultant_zmpoly(pivot, q, v);
+        if exhausted() {
+            return Err(Fail::Budget);
+        }
         if r.is_zero() {
             // common factor: V(p, q) = V(g) ∪ V(p/g, q/g)
             let g = mpoly_gcd(pivot, q);
@@ -259,7 +343,8 @@ fn eliminate_rec(system: Vec<ZMPoly>, order: &[usize], ctx: &mut Ctx) -> Result<
             let rb = eliminate_rec(b, order, ctx)?;
             return Ok(&ra * &rb);
         }
-        if r.len() > TERM_BUDGET {
+        let bits = r.terms().iter().map(|(_, c)| c.bits()).max().unwrap_or(0);
+        if r.len() > TERM_BUDGET || bits > 20_000 {
             return Err(Fail::Budget);
         }
         without.push(r);
@@ -285,7 +370,14 @@ pub fn eliminate_in_order(e: &QMPoly, s: &QMPoly, order: &[usize]) -> Option<(ZP
         branches: 0,
         with_solutions: 0,
     };
-    let d = eliminate_rec(lagrange_system(e, s), order, &mut ctx).ok()?;
+    FUEL.with(|f| f.set(WORK_BUDGET));
+    let d = eliminate_rec(lagrange_system(e, s), order, &mut ctx).ok();
+    let spent = exhausted();
+    FUEL.with(|f| f.set(i64::MAX));
+    let d = d?;
+    if spent {
+        return None;
+    }
     if d.degree().unwrap_or(0) == 0 {
         return None;
     }
@@ -296,6 +388,15 @@ pub fn eliminate_in_order(e: &QMPoly, s: &QMPoly, order: &[usize]) -> Option<(ZP
 /// (λ, z, y, x), and their gcd; `None` when a size budget was exceeded or a
 /// branch stayed positive-dimensional.
 pub fn eliminate(e: &Ellipsoid, s: &QMPoly) -> Option<Elimination> {
+    // Without a factor to split on, the resultant chain of a general
+    // (e.g. rotated) system is the expensive and fruitless case measured in
+    // shared/bench: the exact critical values come from the Gröbner route.
+    if !lagrange_system(&e.poly, s)
+        .iter()
+        .any(|p| easy_factors(p).len() > 1)
+    {
+        return None;
+    }
     let (first, branches) = eliminate_in_order(&e.poly, s, &[L, X, Y, Z])?;
     let (second, _) = eliminate_in_order(&e.poly, s, &[L, Z, Y, X])?;
     let gcd = first.gcd(&second);

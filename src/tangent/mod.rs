@@ -252,6 +252,7 @@ fn split_values(real: &[RealAlg], judging: &ZPoly) -> (Vec<RealAlg>, Vec<RealAlg
     let nonreal = RealAlg::roots_of(judging)
         .into_iter()
         .filter(|r| !vals.iter().any(|v| v.cmp_exact(r) == Ordering::Equal))
+        .map(|r| r.simplify())
         .collect();
     (vals, nonreal)
 }

@@ -100,7 +100,7 @@ pub fn find_witness(
     approx: &dyn Fn(u32) -> Option<[Q; 3]>,
 ) -> Option<WitnessPoint> {
     let mut bits = 8;
-    while bits <= 4096 {
+    while bits <= 1024 {
         if let Some(p) = approx(bits + 16)
             && let Some(pt) = snap_to_ellipsoid(e, &round_point(&p, bits))
         {

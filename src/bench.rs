@@ -1,0 +1,532 @@
+//! `quadsect bench`: median timings of the kernel on the shared benchmark
+//! inputs (`../shared/bench/inputs.json`), of the tangent point method, and
+//! of the natural-quadric deciders and classification — each beside a
+//! reference measured in the same run where one exists in-process (a plain
+//! `f64` formula for the predicates).  FLINT, PARI and sympy are timed by
+//! `../shared/bench/bench_anchors.py` in the same session; the ratios are in
+//! `docs/BENCHMARKS.md`.
+
+use crate::error::Error;
+use serde_json::{Value, json};
+use std::hint::black_box;
+use std::time::Instant;
+
+/// One measurement.
+#[derive(Clone, Debug)]
+pub struct Row {
+    /// Suite (`kernel`, `tangent`, `natural`).
+    pub suite: &'static str,
+    /// Case id.
+    pub id: String,
+    /// What is timed.
+    pub desc: String,
+    /// Median seconds per call.
+    pub median: f64,
+    /// Number of samples.
+    pub samples: usize,
+}
+
+/// Median seconds per call of `f`: calls are repeated inside a sample until
+/// it lasts about 25 ms, and at least 5 samples (11 for fast calls) are
+/// taken (the same protocol as `bench_anchors.py`).
+pub fn measure(mut f: impl FnMut()) -> (f64, usize) {
+    let t0 = Instant::now();
+    f();
+    let first = t0.elapsed().as_secs_f64();
+    let target = 0.025;
+    let inner = if first >= target {
+        1
+    } else {
+        ((target / first.max(1e-8)) as usize).max(1)
+    };
+    let want = if first >= 0.2 { 5 } else { 11 };
+    let mut samples = Vec::with_capacity(want);
+    if first >= 1.0 {
+        samples.push(first);
+    }
+    let start = Instant::now();
+    while samples.len() < want {
+        let t = Instant::now();
+        for _ in 0..inner {
+            f();
+        }
+        samples.push(t.elapsed().as_secs_f64() / inner as f64);
+        if start.elapsed().as_secs_f64() > 30.0 && samples.len() >= 3 {
+            break;
+        }
+    }
+    samples.sort_by(|a, b| a.total_cmp(b));
+    (samples[samples.len() / 2], samples.len())
+}
+
+fn zpoly_of(v: &Value) -> Option<crate::poly::ZPoly> {
+    let cs: Option<Vec<num_bigint::BigInt>> = v
+        .as_array()?
+        .iter()
+        .map(|c| c.as_str().and_then(|s| s.parse().ok()))
+        .collect();
+    Some(crate::poly::ZPoly::new(cs?))
+}
+
+/// The kernel suite on the shared inputs.
+pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
+    let bad = || Error::input("bench", "unexpected format of inputs.json");
+    for case in inputs["resultant"].as_array().ok_or_else(bad)? {
+        let f = zpoly_of(&case["f"]).ok_or_else(bad)?;
+        let g = zpoly_of(&case["g"]).ok_or_else(bad)?;
+        let (m, n) = measure(|| {
+            black_box(crate::elim::resultant_modular(&f, &g));
+        });
+        rows.push(Row {
+            suite: "kernel",
+            id: case["id"].as_str().unwrap_or("?").to_string(),
+            desc: "resultant (multi-modular)".into(),
+            median: m,
+            samples: n,
+        });
+    }
+    for case in inputs["roots"].as_array().ok_or_else(bad)? {
+        let p = zpoly_of(&case["p"]).ok_or_else(bad)?;
+        let (m, n) = measure(|| {
+            black_box(crate::roots::isolate_real_roots(&p));
+        });
+        rows.push(Row {
+            suite: "kernel",
+            id: case["id"].as_str().unwrap_or("?").to_string(),
+            desc: "exact real-root isolation (VCA)".into(),
+            median: m,
+            samples: n,
+        });
+        let (m, n) = measure(|| {
+            black_box(crate::roots::SturmSequence::new(&p).count_all());
+        });
+        rows.push(Row {
+            suite: "kernel",
+            id: format!("{}", case["id"].as_str().unwrap_or("?")),
+            desc: "Sturm count of real roots".into(),
+            median: m,
+            samples: n,
+        });
+    }
+    for case in inputs["bivariate"].as_array().ok_or_else(bad)? {
+        let mk = |v: &Value| -> Option<crate::poly::ZMPoly> {
+            let terms: Option<Vec<_>> = v
+                .as_array()?
+                .iter()
+                .map(|t| {
+                    let t = t.as_array()?;
+                    let mut e = [0u32; crate::poly::mpoly::NVARS];
+                    e[0] = t.first()?.as_u64()? as u32;
+                    e[1] = t.get(1)?.as_u64()? as u32;
+                    let c: num_bigint::BigInt = match t.get(2)? {
+                        Value::String(s) => s.parse().ok()?,
+                        Value::Number(n) => n.as_i64()?.into(),
+                        _ => return None,
+                    };
+                    Some((e, c))
+                })
+                .collect();
+            Some(crate::poly::MPoly::from_terms(terms?))
+        };
+        let f = mk(&case["f"]).ok_or_else(bad)?;
+        let g = mk(&case["g"]).ok_or_else(bad)?;
+        let (m, n) = measure(|| {
+            black_box(crate::elim::resultant_zmpoly(&f, &g, 0));
+        });
+        rows.push(Row {
+            suite: "kernel",
+            id: case["id"].as_str().unwrap_or("?").to_string(),
+            desc: "bivariate resultant (evaluation/interpolation mod p)".into(),
+            median: m,
+            samples: n,
+        });
+    }
+    Ok(())
+}
+
+/// A pseudo-random generator (xorshift) so the benchmark inputs are fixed.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next() % ((hi - lo + 1) as u64)) as i64
+    }
+}
+
+/// The tangent point suite.
+pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
+    use crate::poly::parse_poly;
+    use crate::tangent::decide;
+    // random rotated ellipsoid pairs (quadric S)
+    let mut rng = Rng(0x9e3779b97f4a7c15);
+    let mut pairs = Vec::new();
+    for _ in 0..16 {
+        let r = crate::natural::cayley_rotation(
+            &crate::number::q(rng.int(-3, 3), rng.int(1, 3)),
+            &crate::number::q(rng.int(-3, 3), rng.int(1, 3)),
+            &crate::number::q(rng.int(-3, 3), rng.int(1, 3)),
+        );
+        let e = parse_poly(&format!(
+            "{}x^2+{}y^2+{}z^2-{}",
+            rng.int(1, 5),
+            rng.int(1, 5),
+            rng.int(1, 5),
+            rng.int(5, 40)
+        ))?;
+        let s0 = parse_poly(&format!(
+            "{}(x-{})^2+{}(y-{})^2+{}(z-{})^2-{}",
+            rng.int(1, 5),
+            rng.int(-4, 4),
+            rng.int(1, 5),
+            rng.int(-4, 4),
+            rng.int(1, 5),
+            rng.int(-4, 4),
+            rng.int(1, 20)
+        ))?;
+        let s = rotate(&s0, &r);
+        pairs.push((e, s));
+    }
+    let mut k = 0;
+    let (m, n) = measure(|| {
+        let (e, s) = &pairs[k % pairs.len()];
+        k += 1;
+        black_box(decide(e, s).ok());
+    });
+    rows.push(Row {
+        suite: "tangent",
+        id: "quadric_rotated_pairs".into(),
+        desc: "full verdict, quadric S (16 random rotated ellipsoid pairs, cycled)".into(),
+        median: m,
+        samples: n,
+    });
+    for (id, e, s) in [
+        ("paper_ex1", "x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1"),
+        (
+            "paper_ex4",
+            "2x^2+3y^2+4z^2-25",
+            "(x-1)^4/9+y^2/4+4z^2/23-1",
+        ),
+    ] {
+        let (e, s) = (parse_poly(e)?, parse_poly(s)?);
+        let (m, n) = measure(|| {
+            black_box(decide(&e, &s).ok());
+        });
+        rows.push(Row {
+            suite: "tangent",
+            id: id.into(),
+            desc: "full verdict (D(u), exact min/max, certificate)".into(),
+            median: m,
+            samples: n,
+        });
+    }
+    // Examples 1 and 4 moved by the exact rigid motion of
+    // shared/bench/bench_elimination.py (R = Cayley(1/3, 1/4, -1/2),
+    // t = (1/2, -1/3, 1)): nothing splits by symmetry any more
+    for (id, e, s) in [
+        ("paper_ex1_rotated", EX1ROT_E, EX1ROT_S),
+        ("paper_ex4_rotated", EX4ROT_E, EX4ROT_S),
+    ] {
+        let (e, s) = (parse_poly(e)?, parse_poly(s)?);
+        let (m, n) = measure(|| {
+            black_box(decide(&e, &s).ok());
+        });
+        rows.push(Row {
+            suite: "tangent",
+            id: id.into(),
+            desc: "full verdict after a rational rigid motion (not separable)".into(),
+            median: m,
+            samples: n,
+        });
+    }
+    Ok(())
+}
+
+/// Example 1 moved rigidly (`ex1rot` of shared/bench/bench_elimination.py).
+pub const EX1ROT_E: &str = "x^2 - x + y^2 + 2*y/3 + z^2 - 2*z - 851/36";
+/// S of `ex1rot`.
+pub const EX1ROT_S: &str = "77053*x^2/378225 + 15064*x*y/126075 + 1463*x*z/25215 - 56476*x/42025 + 20957*y^2/168100 + 1469*y*z/16810 + 139529*y/126075 + 2561*z^2/26896 + 65923*z/67240 + 47931433/6051600";
+/// Example 4 moved rigidly (`ex4rot`).
+pub const EX4ROT_E: &str = "113426*x^2/42025 + 21264*x*y/42025 + 7008*x*z/8405 - 141378*x/42025 + 129099*y^2/42025 - 13944*y*z/8405 + 145154*y/42025 + 5428*z^2/1681 - 62432*z/8405 - 5010049/252150";
+/// S of `ex4rot`.
+pub const EX4ROT_S: &str = "279841*x^4/25431849 - 389344*x^3*y/8477283 - 389344*x^3*z/8477283 - 1776382*x^3/25431849 + 203136*x^2*y^2/2825761 + 406272*x^2*y*z/2825761 + 617872*x^2*y/2825761 + 203136*x^2*z^2/2825761 + 617872*x^2*z/2825761 + 3281023487*x^2/9748875450 - 141312*x*y^3/2825761 - 423936*x*y^2*z/2825761 - 644736*x*y^2/2825761 - 423936*x*y*z^2/2825761 - 1289472*x*y*z/2825761 - 278394572*x*y/1624812575 - 141312*x*z^3/2825761 - 644736*x*z^2/2825761 - 63784024*x*z/324962515 - 12820478233*x/29246626350 + 36864*y^4/2825761 + 147456*y^3*z/2825761 + 224256*y^3/2825761 + 221184*y^2*z^2/2825761 + 672768*y^2*z/2825761 + 2039680367*y^2/6499250300 + 147456*y*z^3/2825761 + 672768*y*z^2/2825761 + 86064882*y*z/324962515 + 914752541*y/3249625150 + 36864*z^4/2825761 + 224256*z^3/2825761 + 19620064*z^2/64992503 - 161727002*z/974887545 - 157592469077/233973010800";
+
+/// `p(Rᵀ x)`: the polynomial of the rotated surface.
+pub fn rotate(p: &crate::poly::QMPoly, r: &[[crate::number::Q; 3]; 3]) -> crate::poly::QMPoly {
+    use crate::poly::MPoly;
+    let mut subs: [Option<crate::poly::QMPoly>; crate::poly::mpoly::NVARS] = Default::default();
+    for (i, s) in subs.iter_mut().enumerate().take(3) {
+        let mut acc = MPoly::zero();
+        for j in 0..3 {
+            acc = &acc + &MPoly::var(j).scale(&r[j][i]);
+        }
+        *s = Some(acc);
+    }
+    p.substitute_all(&subs)
+}
+
+/// The natural-quadric suite: the Theorem 8.1/8.2 decider against a plain
+/// f64 formula on the same random rational pairs, and the full
+/// classification per family.
+pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
+    use crate::natural::deciders::{relation, thm8};
+    use crate::natural::{classify, parse_natural};
+    let mut rng = Rng(0x2545f4914f6cdd1d);
+    let mut pairs = Vec::new();
+    for _ in 0..64 {
+        let cone = |rng: &mut Rng| {
+            format!(
+                "cone vertex={},{},{} axis={},{},0 tan2={}/{}",
+                rng.int(-9, 9),
+                rng.int(-9, 9),
+                0,
+                rng.int(1, 9),
+                rng.int(-9, 9),
+                rng.int(1, 50),
+                rng.int(1, 50)
+            )
+        };
+        let a = parse_natural(&cone(&mut rng))?;
+        let b = parse_natural(&cone(&mut rng))?;
+        pairs.push((a, b));
+    }
+    let mut k = 0;
+    let (m, n) = measure(|| {
+        let (a, b) = &pairs[k % pairs.len()];
+        k += 1;
+        if let Some(rel) = relation(a, b) {
+            black_box(thm8(a, b, &rel));
+        }
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "thm8_decider".into(),
+        desc:
+            "Theorem 8.1/8.2 decider, exact (axes relation + inscribed radii), 64 random cone pairs"
+                .into(),
+        median: m,
+        samples: n,
+    });
+    // the same predicate as a plain f64 formula (reference; may be wrong)
+    let fpairs: Vec<[f64; 12]> = pairs
+        .iter()
+        .map(|(a, b)| {
+            let f = |x: &crate::number::Q| num_traits::ToPrimitive::to_f64(x).unwrap_or(0.0);
+            let g = |n: &crate::natural::Natural| -> [f64; 6] {
+                match n {
+                    crate::natural::Natural::Cone(c) => [
+                        f(&c.vertex[0]),
+                        f(&c.vertex[1]),
+                        f(&c.axis[0]),
+                        f(&c.axis[1]),
+                        f(&c.t2),
+                        0.0,
+                    ],
+                    _ => [0.0; 6],
+                }
+            };
+            let (x, y) = (g(a), g(b));
+            [
+                x[0], x[1], x[2], x[3], x[4], 0.0, y[0], y[1], y[2], y[3], y[4], 0.0,
+            ]
+        })
+        .collect();
+    let mut k = 0;
+    let (mf, nf) = measure(|| {
+        let p = &fpairs[k % fpairs.len()];
+        k += 1;
+        black_box(f64_thm8(black_box(p)));
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "thm8_f64_reference".into(),
+        desc: "the same test as a plain f64 formula (reference only: not exact)".into(),
+        median: mf,
+        samples: nf,
+    });
+    let families: [(&str, &str, &str); 8] = [
+        (
+            "conics",
+            "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+            "cylinder point=0,0,0 axis=0,1,0 radius2=1",
+        ),
+        (
+            "conic_and_line",
+            "cone vertex=0,0,0 axis=1,0,0 tan2=1",
+            "cone vertex=2,2,0 axis=0,1,0 tan2=1",
+        ),
+        (
+            "lines_common_vertex",
+            "cone vertex=0,0,0 axis=1,0,0 tan2=1",
+            "cone vertex=0,0,0 axis=0,1,0 tan2=3",
+        ),
+        (
+            "points_section7",
+            "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+            "cone vertex=0,0,2 axis=0,1,0 tan2=3",
+        ),
+        (
+            "empty_skew",
+            "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+            "cylinder point=0,0,3 axis=0,1,0 radius2=1",
+        ),
+        (
+            "curve_skew",
+            "cone vertex=0,0,0 axis=1,0,0 tan2=1",
+            "cone vertex=1,5,2 axis=1,2,3 tan2=1/2",
+        ),
+        (
+            "curve_5_1_isolated_vertex",
+            "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+            "cone vertex=0,1,0 axis=0,1,0 tan2=1",
+        ),
+        (
+            "spheres_circle",
+            "sphere center=0,0,0 radius2=4",
+            "sphere center=3,0,0 radius2=4",
+        ),
+    ];
+    for (id, a, b) in families {
+        let (a, b) = (parse_natural(a)?, parse_natural(b)?);
+        let (m, n) = measure(|| {
+            black_box(classify(&a, &b).ok());
+        });
+        rows.push(Row {
+            suite: "natural",
+            id: format!("classify_{id}"),
+            desc: "full classification with exact components".into(),
+            median: m,
+            samples: n,
+        });
+    }
+    // generic random pairs (skew axes, cones)
+    let generic: Vec<(crate::natural::Natural, crate::natural::Natural)> = (0..16)
+        .map(|_| {
+            let a = parse_natural(&format!(
+                "cone vertex={},{},{} axis={},{},{} tan2={}/{}",
+                rng.int(-5, 5),
+                rng.int(-5, 5),
+                rng.int(-5, 5),
+                rng.int(1, 5),
+                rng.int(-5, 5),
+                rng.int(-5, 5),
+                rng.int(1, 9),
+                rng.int(1, 9)
+            ));
+            let b = parse_natural(&format!(
+                "cylinder point={},{},{} axis={},{},{} radius2={}",
+                rng.int(-5, 5),
+                rng.int(-5, 5),
+                rng.int(-5, 5),
+                rng.int(-5, 5),
+                rng.int(1, 5),
+                rng.int(-5, 5),
+                rng.int(1, 9)
+            ));
+            (a, b)
+        })
+        .filter_map(|(a, b)| Some((a.ok()?, b.ok()?)))
+        .collect();
+    let mut k = 0;
+    let (m, n) = measure(|| {
+        let (a, b) = &generic[k % generic.len()];
+        k += 1;
+        black_box(classify(a, b).ok());
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "classify_generic_random".into(),
+        desc: "full classification, 16 random cone–cylinder pairs (skew axes, cycled)".into(),
+        median: m,
+        samples: n,
+    });
+    Ok(())
+}
+
+/// The Theorem 8.1 test in f64 for two cones in the plane z = 0 (vertex,
+/// axis, tan²): equal inscribed radii at the axes' meeting point.
+fn f64_thm8(p: &[f64; 12]) -> bool {
+    let (v1, a1, t1) = ([p[0], p[1]], [p[2], p[3]], p[4]);
+    let (v2, a2, t2) = ([p[6], p[7]], [p[8], p[9]], p[10]);
+    let den = a1[0] * a2[1] - a1[1] * a2[0];
+    if den == 0.0 {
+        return t1 == t2;
+    }
+    let s = ((v2[0] - v1[0]) * a2[1] - (v2[1] - v1[1]) * a2[0]) / den;
+    let o = [v1[0] + s * a1[0], v1[1] + s * a1[1]];
+    let d1 = (o[0] - v1[0]).powi(2) + (o[1] - v1[1]).powi(2);
+    let d2 = (o[0] - v2[0]).powi(2) + (o[1] - v2[1]).powi(2);
+    d1 * t1 / (1.0 + t1) == d2 * t2 / (1.0 + t2)
+}
+
+/// Runs the requested suites (`kernel`, `tangent`, `natural`, `all`).
+pub fn run(suite: &str, inputs_path: &str) -> Result<Vec<Row>, Error> {
+    let mut rows = Vec::new();
+    let all = suite == "all";
+    if all || suite == "kernel" {
+        let text = std::fs::read_to_string(inputs_path).map_err(|e| {
+            Error::input(
+                "io",
+                format!("cannot read {inputs_path}: {e} (use --inputs PATH)"),
+            )
+        })?;
+        let v: Value = serde_json::from_str(&text)
+            .map_err(|e| Error::input("json", format!("{inputs_path}: {e}")))?;
+        kernel_suite(&v, &mut rows)?;
+    }
+    if all || suite == "tangent" {
+        tangent_suite(&mut rows)?;
+    }
+    if all || suite == "natural" {
+        natural_suite(&mut rows)?;
+    }
+    if !all && !["kernel", "tangent", "natural"].contains(&suite) {
+        return Err(Error::input(
+            "input",
+            format!("unknown suite \"{suite}\" (kernel, tangent, natural or all)"),
+        ));
+    }
+    Ok(rows)
+}
+
+/// Human-readable seconds.
+pub fn fmt_time(s: f64) -> String {
+    if s < 1e-6 {
+        format!("{:.1} ns", s * 1e9)
+    } else if s < 1e-3 {
+        format!("{:.2} µs", s * 1e6)
+    } else if s < 1.0 {
+        format!("{:.2} ms", s * 1e3)
+    } else {
+        format!("{s:.2} s")
+    }
+}
+
+/// The rows as JSON.
+pub fn to_json(rows: &[Row]) -> Value {
+    Value::Array(
+        rows.iter()
+            .map(|r| json!({"suite": r.suite, "id": r.id, "desc": r.desc, "median_s": r.median, "samples": r.samples}))
+            .collect(),
+    )
+}
+
+/// The rows as a Markdown table.
+pub fn to_markdown(rows: &[Row]) -> String {
+    let mut s = String::from("| suite | case | what | median | samples |\n|---|---|---|---|---|\n");
+    for r in rows {
+        s.push_str(&format!(
+            "| {} | {} | {} | {} | {} |\n",
+            r.suite,
+            r.id,
+            r.desc,
+            fmt_time(r.median),
+            r.samples
+        ));
+    }
+    s
+}
