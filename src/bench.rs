@@ -102,7 +102,7 @@ pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
         });
         rows.push(Row {
             suite: "kernel",
-            id: format!("{}", case["id"].as_str().unwrap_or("?")),
+            id: case["id"].as_str().unwrap_or("?").to_string(),
             desc: "Sturm count of real roots".into(),
             median: m,
             samples: n,

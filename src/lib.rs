@@ -1,6 +1,11 @@
 //! # quadsect
 //!
 //! An exact-arithmetic engine that decides how two surfaces meet.
+// Matrix and vector code indexes several arrays with one loop variable.
+#![allow(clippy::needless_range_loop)]
+// Report types carry their data inline on purpose (built once, read once).
+#![allow(clippy::large_enum_variant)]
+
 pub mod batch;
 pub mod bench;
 pub mod elim;

@@ -28,7 +28,15 @@ fn counts(r: &NaturalReport) -> (usize, usize, usize) {
 
 /// (A, B, class, (conics, lines, points)) — the expectations come from the
 /// paper's constructions or elementary geometry (see each comment).
-const CASES: &[(&str, &str, &str, (usize, usize, usize))] = &[
+/// A pair, its class and its counts (conics, lines, points).
+type Case = (
+    &'static str,
+    &'static str,
+    &'static str,
+    (usize, usize, usize),
+);
+
+const CASES: &[Case] = &[
     // Table 1, row 1: two conics
     (
         "cylinder point=0,0,0 axis=1,0,0 radius2=1",
@@ -391,7 +399,7 @@ fn done_when_two_ellipses_in_the_planes_x_eq_pm_y() {
             panic!("{c:?}")
         };
         assert_eq!(kind.as_str(), "ellipse");
-        let n: Vec<Q> = plane.normal.iter().map(|e| rational(e)).collect();
+        let n: Vec<Q> = plane.normal.iter().map(rational).collect();
         assert!(n[2].is_zero() && rational(&plane.offset).is_zero());
         planes.push(&n[0] / &n[1]);
     }

@@ -254,7 +254,7 @@ pub fn reduce_full(f: &GPoly, basis: &[&GPoly], ord: MonoOrder) -> (GPoly, Q) {
                     scale *= Q::from_integer(kb);
                 }
                 steps += 1;
-                if steps % 8 == 0 {
+                if steps.is_multiple_of(8) {
                     // keep the coefficients small: divide out the common content
                     let mut g = BigInt::zero();
                     for (_, c) in p.iter().chain(r.iter()) {

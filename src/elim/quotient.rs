@@ -72,12 +72,13 @@ impl Quotient {
                     .collect();
                 let p = GPoly { terms };
                 // a product of a monomial with a standard monomial may be standard
-                if p.terms.len() == 1 && p.terms[0].1.is_one() {
-                    if let Some(&i) = self.index.get(&p.terms[0].0) {
-                        let mut v = vec![Q::zero(); self.dim()];
-                        v[i] = Q::one();
-                        return v;
-                    }
+                if p.terms.len() == 1
+                    && p.terms[0].1.is_one()
+                    && let Some(&i) = self.index.get(&p.terms[0].0)
+                {
+                    let mut v = vec![Q::zero(); self.dim()];
+                    v[i] = Q::one();
+                    return v;
                 }
                 self.nf(&p)
             })

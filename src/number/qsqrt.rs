@@ -237,8 +237,8 @@ impl fmt::Display for QSqrt {
         };
         if self.a.is_zero() {
             write!(f, "{bpart}")
-        } else if bpart.starts_with('-') {
-            write!(f, "{} - {}", fmt_q(&self.a), &bpart[1..])
+        } else if let Some(rest) = bpart.strip_prefix('-') {
+            write!(f, "{} - {}", fmt_q(&self.a), rest)
         } else {
             write!(f, "{} + {}", fmt_q(&self.a), bpart)
         }

@@ -127,7 +127,7 @@ impl<C: Ring> MPoly<C> {
             }
         }
         let mut terms: Vec<(Exps, C)> = map.into_iter().filter(|(_, c)| !c.ris_zero()).collect();
-        terms.sort_by(|a, b| b.0.cmp(&a.0));
+        terms.sort_by_key(|t| std::cmp::Reverse(t.0));
         MPoly { terms }
     }
 
@@ -342,7 +342,7 @@ impl<C: Ring> MPoly<C> {
             buckets
                 .into_iter()
                 .map(|mut t| {
-                    t.sort_by(|a, b| b.0.cmp(&a.0));
+                    t.sort_by_key(|x| std::cmp::Reverse(x.0));
                     MPoly { terms: t }
                 })
                 .collect(),
@@ -591,7 +591,7 @@ impl<C: Ring> Mul for &MPoly<C> {
             }
         }
         let mut terms: Vec<(Exps, C)> = map.into_iter().filter(|(_, c)| !c.ris_zero()).collect();
-        terms.sort_by(|a, b| b.0.cmp(&a.0));
+        terms.sort_by_key(|t| std::cmp::Reverse(t.0));
         MPoly { terms }
     }
 }

@@ -354,7 +354,7 @@ impl Parser<'_> {
                     Q::one()
                 } else if c.is_zero() {
                     Q::zero()
-                } else if c.is_one() || e % 2 == 0 {
+                } else if c.is_one() || e.is_multiple_of(2) {
                     Q::one()
                 } else {
                     -Q::one()

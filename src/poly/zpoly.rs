@@ -470,55 +470,6 @@ pub fn sign_of(x: &BigInt) -> Sign {
     x.sign()
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::number::q;
-
-    #[test]
-    fn gcd_and_squarefree() {
-        let a = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
-        let b = ZPoly::from_i64s(&[-1, 3]); // 3x - 1
-        let p = &a.pow(3) * &b;
-        assert_eq!(p.gcd(&p.derivative()), a.pow(2));
-        assert_eq!(p.squarefree_part(), &a * &b);
-        let d = p.squarefree_decomposition();
-        assert_eq!(d, vec![(b.clone(), 1), (a.clone(), 3)]);
-        assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1]));
-    }
-
-    #[test]
-    fn evaluation_and_shifts() {
-        let p = ZPoly::from_i64s(&[-2, 0, 1]);
-        assert_eq!(p.eval_q(&q(3, 2)), q(1, 4));
-        assert_eq!(p.sign_at(&q(7, 5)), -1);
-        assert_eq!(p.sign_at(&q(3, 2)), 1);
-        assert_eq!(p.sign_at_dyadic(&BigInt::from(3), 1), 1);
-        assert_eq!(
-            p.taylor_shift(&BigInt::from(1)),
-            ZPoly::from_i64s(&[-1, 2, 1])
-        );
-        assert_eq!(
-            p.taylor_shift(&BigInt::from(-2)),
-            ZPoly::from_i64s(&[2, -4, 1])
-        );
-        assert_eq!(p.neg_x(), p);
-        assert_eq!(p.reversed(), ZPoly::from_i64s(&[1, 0, -2]));
-        // roots ±√2 < 2^k
-        let k = p.root_bound_log2().unwrap();
-        assert!(k >= 1);
-        assert_eq!(p.scale_roots_pow2(1), ZPoly::from_i64s(&[-8, 0, 1]));
-    }
-
-    #[test]
-    fn from_q_normalises() {
-        let p = QPoly::new(vec![q(-1, 2), q(0, 1), q(-3, 4)]);
-        let (z, k) = ZPoly::from_q(&p);
-        assert_eq!(z, ZPoly::from_i64s(&[2, 0, 3]));
-        assert_eq!(z.to_q().map(|c| c * &k), p);
-    }
-}
-
 impl UPoly<Q> {
     /// Division with remainder over the field Q: `(q, r)` with
     /// `self = q·b + r`, `deg r < deg b`.  Panics if `b` is zero.
@@ -591,5 +542,54 @@ impl UPoly<Q> {
             acc = acc * x + c;
         }
         acc
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::q;
+
+    #[test]
+    fn gcd_and_squarefree() {
+        let a = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
+        let b = ZPoly::from_i64s(&[-1, 3]); // 3x - 1
+        let p = &a.pow(3) * &b;
+        assert_eq!(p.gcd(&p.derivative()), a.pow(2));
+        assert_eq!(p.squarefree_part(), &a * &b);
+        let d = p.squarefree_decomposition();
+        assert_eq!(d, vec![(b.clone(), 1), (a.clone(), 3)]);
+        assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1]));
+    }
+
+    #[test]
+    fn evaluation_and_shifts() {
+        let p = ZPoly::from_i64s(&[-2, 0, 1]);
+        assert_eq!(p.eval_q(&q(3, 2)), q(1, 4));
+        assert_eq!(p.sign_at(&q(7, 5)), -1);
+        assert_eq!(p.sign_at(&q(3, 2)), 1);
+        assert_eq!(p.sign_at_dyadic(&BigInt::from(3), 1), 1);
+        assert_eq!(
+            p.taylor_shift(&BigInt::from(1)),
+            ZPoly::from_i64s(&[-1, 2, 1])
+        );
+        assert_eq!(
+            p.taylor_shift(&BigInt::from(-2)),
+            ZPoly::from_i64s(&[2, -4, 1])
+        );
+        assert_eq!(p.neg_x(), p);
+        assert_eq!(p.reversed(), ZPoly::from_i64s(&[1, 0, -2]));
+        // roots ±√2 < 2^k
+        let k = p.root_bound_log2().unwrap();
+        assert!(k >= 1);
+        assert_eq!(p.scale_roots_pow2(1), ZPoly::from_i64s(&[-8, 0, 1]));
+    }
+
+    #[test]
+    fn from_q_normalises() {
+        let p = QPoly::new(vec![q(-1, 2), q(0, 1), q(-3, 4)]);
+        let (z, k) = ZPoly::from_q(&p);
+        assert_eq!(z, ZPoly::from_i64s(&[2, 0, 3]));
+        assert_eq!(z.to_q().map(|c| c * &k), p);
     }
 }

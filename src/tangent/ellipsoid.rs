@@ -139,7 +139,7 @@ pub fn inv3(a: &[[Q; 3]; 3]) -> Option<[[Q; 3]; 3]> {
         let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
         let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
         let m = &a[r[0]][c[0]] * &a[r[1]][c[1]] - &a[r[0]][c[1]] * &a[r[1]][c[0]];
-        if (i + j) % 2 == 0 { m } else { -m }
+        if (i + j).is_multiple_of(2) { m } else { -m }
     };
     // inverse = adj / det, adj[i][j] = cof(j, i)
     Some(std::array::from_fn(|i| {

@@ -96,7 +96,7 @@ fn adj3p(m: &[[QPoly; 3]; 3]) -> [[QPoly; 3]; 3] {
         let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
         let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
         let v = &(&m[r[0]][c[0]] * &m[r[1]][c[1]]) - &(&m[r[0]][c[1]] * &m[r[1]][c[0]]);
-        if (i + j) % 2 == 0 { v } else { -v }
+        if (i + j).is_multiple_of(2) { v } else { -v }
     };
     std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i)))
 }
