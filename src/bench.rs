@@ -273,7 +273,7 @@ pub fn rotate(p: &crate::poly::QMPoly, r: &[[crate::number::Q; 3]; 3]) -> crate:
 /// f64 formula on the same random rational pairs, and the full
 /// classification per family.
 pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
-    use crate::natural::deciders::{relation, thm8};
+    use crate::natural::deciders::{conic_intersection_thm8, relation, thm8};
     use crate::natural::{classify, parse_natural};
     let mut rng = Rng(0x2545f4914f6cdd1d);
     let mut pairs = Vec::new();
@@ -298,16 +298,27 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
     let (m, n) = measure(|| {
         let (a, b) = &pairs[k % pairs.len()];
         k += 1;
+        black_box(conic_intersection_thm8(a, b));
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "thm8_decider".into(),
+        desc: "Theorem 8.1/8.2 decider, exact (i128 fast path, rational fallback), 64 random cone pairs".into(),
+        median: m,
+        samples: n,
+    });
+    let mut k = 0;
+    let (m, n) = measure(|| {
+        let (a, b) = &pairs[k % pairs.len()];
+        k += 1;
         if let Some(rel) = relation(a, b) {
             black_box(thm8(a, b, &rel));
         }
     });
     rows.push(Row {
         suite: "natural",
-        id: "thm8_decider".into(),
-        desc:
-            "Theorem 8.1/8.2 decider, exact (axes relation + inscribed radii), 64 random cone pairs"
-                .into(),
+        id: "thm8_decider_rational".into(),
+        desc: "the same decider in BigRational only (axes relation + inscribed radii)".into(),
         median: m,
         samples: n,
     });

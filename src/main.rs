@@ -90,12 +90,13 @@ enum Command {
     },
 }
 
-fn emit(json: bool, v: serde_json::Value, human: String) {
+/// Prints the JSON or the human form (only the one asked for is built).
+fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() -> String) {
     let mut out = std::io::stdout().lock();
     let _ = if json {
-        writeln!(out, "{v}")
+        writeln!(out, "{}", v())
     } else {
-        write!(out, "{human}")
+        write!(out, "{}", human())
     };
 }
 
@@ -105,24 +106,24 @@ fn run(cli: Cli) -> Result<(), Error> {
             let r = quadsect::examples::run_all();
             emit(
                 json,
-                quadsect::examples::to_json(&r),
-                quadsect::examples::to_human(&r),
+                || quadsect::examples::to_json(&r),
+                || quadsect::examples::to_human(&r),
             );
         }
         Command::Roots { expr, json } => {
             let r = quadsect::ops::roots(&expr)?;
             emit(
                 json,
-                quadsect::report::roots_json(&r),
-                quadsect::report::roots_human(&r),
+                || quadsect::report::roots_json(&r),
+                || quadsect::report::roots_human(&r),
             );
         }
         Command::Resultant { f, g, var, json } => {
             let r = quadsect::ops::resultant(&f, &g, &var)?;
             emit(
                 json,
-                quadsect::report::resultant_json(&r),
-                quadsect::report::resultant_human(&r),
+                || quadsect::report::resultant_json(&r),
+                || quadsect::report::resultant_human(&r),
             );
         }
         Command::Tangent {
@@ -133,16 +134,16 @@ fn run(cli: Cli) -> Result<(), Error> {
             let r = quadsect::tangent::decide_str(&ellipsoid, &surface)?;
             emit(
                 json,
-                quadsect::report::tangent_json(&r),
-                quadsect::report::tangent_human(&r),
+                || quadsect::report::tangent_json(&r),
+                || quadsect::report::tangent_human(&r),
             );
         }
         Command::Natural { a, b, json } => {
             let r = quadsect::natural::classify_str(&a, &b)?;
             emit(
                 json,
-                quadsect::report::natural_json(&r),
-                quadsect::report::natural_human(&r),
+                || quadsect::report::natural_json(&r),
+                || quadsect::report::natural_human(&r),
             );
         }
         Command::Bench {
@@ -153,8 +154,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             let rows = quadsect::bench::run(&suite, &inputs)?;
             emit(
                 json,
-                quadsect::bench::to_json(&rows),
-                quadsect::bench::to_markdown(&rows),
+                || quadsect::bench::to_json(&rows),
+                || quadsect::bench::to_markdown(&rows),
             );
         }
         Command::Batch { file } => {

@@ -694,6 +694,8 @@ proptest! {
         prop_assume!(matches!(rel, AxesRelation::Intersecting(_) | AxesRelation::Parallel));
         let h = AxialPlane::new(&x, &y).unwrap();
         let t8 = thm8(&x, &y, &rel).unwrap();
+        // the i128 fast path agrees with the rational closed form
+        prop_assert_eq!(quadsect::natural::deciders::conic_intersection_thm8(&x, &y), Some(t8));
         prop_assert_eq!(t8, h.lemma81_planar(), "{} | {}", qa, qb);
         prop_assert_eq!(t8, pencil_has_planar_member(&x, &y), "{} | {}", qa, qb);
     }
@@ -729,6 +731,7 @@ proptest! {
         let rel = relation(&a, &b).unwrap();
         let t8 = thm8(&a, &b, &rel).unwrap();
         prop_assert!(t8);
+        prop_assert_eq!(quadsect::natural::deciders::conic_intersection_thm8(&a, &b), Some(true));
         prop_assert!(AxialPlane::new(&a, &b).unwrap().lemma81_planar());
         prop_assert!(pencil_has_planar_member(&a, &b));
         let r = classify(&a, &b).unwrap();

@@ -178,6 +178,44 @@ fn tangencies_built_on_purpose() {
     assert_eq!((r.verdict, rat(&r.max)), (Verdict::Touching, Q::zero()));
 }
 
+/// The singular multipliers of the λ-parametrisation (SPEC §3): concentric
+/// spheres, a cylinder coaxial with a spheroid, coincident E and S, a plane,
+/// and a quadratic form with irrational generalised eigenvalues.
+#[test]
+fn singular_multipliers() {
+    let e = "x^2+y^2+z^2-25";
+    let r = run(e, "x^2+y^2+z^2-9");
+    assert_eq!((rat(&r.min), rat(&r.max)), (qi(16), qi(16)));
+    assert_eq!(r.containment, Some(Containment::SInsideE));
+    let r = run("x^2+y^2+2z^2-8", "x^2+y^2-1");
+    assert_eq!(
+        (r.verdict, rat(&r.min), rat(&r.max)),
+        (Verdict::Intersecting, qi(-1), qi(7))
+    );
+    let r = run("x^2+y^2+2z^2-8", "x^2+y^2+2z^2-8");
+    assert_eq!(
+        (r.verdict, rat(&r.min), rat(&r.max)),
+        (Verdict::Touching, Q::zero(), Q::zero())
+    );
+    // a plane: the range of x + y + z − 1 on the sphere is −1 ± 5√3
+    let r = run(e, "x+y+z-1");
+    let lo = r.min.as_ref().unwrap();
+    assert_eq!(
+        lo.sign_of(&quadsect::poly::ZPoly::from_i64s(&[-74, 2, 1])),
+        0
+    );
+    assert_eq!(lo.cmp_rational(&q(-966, 100)), Ordering::Less);
+    // x² + 2xy on the sphere: 25(1 ± √5)/2, singular λ = (1 ± √5)/2 irrational
+    let r = run(e, "x^2+2x*y");
+    let (lo, hi) = (r.min.unwrap(), r.max.unwrap());
+    let p = quadsect::poly::ZPoly::from_i64s(&[-625, -25, 1]);
+    assert_eq!((lo.sign_of(&p), hi.sign_of(&p)), (0, 0));
+    assert_eq!((lo.sign(), hi.sign()), (-1, 1));
+    // constants
+    let r = run(e, "7");
+    assert_eq!((r.verdict, rat(&r.min)), (Verdict::Separated, qi(7)));
+}
+
 #[test]
 fn near_tangencies_are_decided_exactly() {
     let e = "x^2+y^2+z^2-25";

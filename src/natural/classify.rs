@@ -15,7 +15,7 @@
 
 use super::coaxial::{center_on_axis, same_axis, sphere_on_axis, sphere_sphere};
 use super::deciders::{AxesRelation, AxialPlane, pencil_has_planar_member, relation, thm8};
-use super::planar::{planar_components, skeletal_lines};
+use super::planar::{parallelogram_heights, planar_components, skeletal_lines};
 use super::result::{Class, Component, NaturalReport, PlanarDeciders, class_of};
 use super::tangency::{Section7, section7};
 use super::topology::classify_nonplanar;
@@ -119,6 +119,14 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
                             skeletal_lines(&h, &h.heights[0]),
                             skeletal_lines(&h, &h.heights[1]),
                         ],
+                        parallelogram: match (a, b) {
+                            (Natural::Cone(c1), Natural::Cone(c2))
+                                if c1.vertex == c2.vertex && lemma =>
+                            {
+                                parallelogram_heights(&h, &c1.axis, &c1.t2)
+                            }
+                            _ => None,
+                        },
                     });
                     if lemma {
                         (

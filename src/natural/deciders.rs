@@ -103,6 +103,136 @@ pub fn thm8(a: &Natural, b: &Natural, rel: &AxesRelation) -> Option<bool> {
     }
 }
 
+/// Theorem 8.1/8.2 decided directly from the two quadrics (`None` where
+/// it does not apply): an exact fast path in checked `i128` arithmetic for
+/// integer points and axes (division-free: the meeting point is kept as
+/// `p1 + (sn/sd) a1` and the inscribed radii are compared by
+/// cross-multiplication), falling back to rationals on overflow.
+///
+/// ```
+/// use quadsect::natural::{parse_natural, deciders::conic_intersection_thm8};
+/// let a = parse_natural("cone vertex=2,0,0 axis=1,0,0 sin2=1/4").unwrap();
+/// let b = parse_natural("cylinder point=0,0,0 axis=0,1,0 radius2=1").unwrap();
+/// assert_eq!(conic_intersection_thm8(&a, &b), Some(true));
+/// ```
+pub fn conic_intersection_thm8(a: &Natural, b: &Natural) -> Option<bool> {
+    if let Some(r) = thm8_small(a, b) {
+        return r;
+    }
+    let rel = relation(a, b)?;
+    thm8(a, b, &rel)
+}
+
+struct Small {
+    p: [i128; 3],
+    a: [i128; 3],
+    cone: bool,
+    num: i128,
+    den: i128,
+}
+
+fn small(q: &Natural) -> Option<Small> {
+    let int = |x: &Q| -> Option<i128> {
+        if !x.denom().is_one() {
+            return None;
+        }
+        num_traits::ToPrimitive::to_i64(x.numer()).map(|v| v as i128)
+    };
+    let frac = |x: &Q| -> Option<(i128, i128)> {
+        Some((
+            num_traits::ToPrimitive::to_i64(x.numer())? as i128,
+            num_traits::ToPrimitive::to_i64(x.denom())? as i128,
+        ))
+    };
+    let v3 = |v: &V3| -> Option<[i128; 3]> { Some([int(&v[0])?, int(&v[1])?, int(&v[2])?]) };
+    match q {
+        Natural::Cone(c) => {
+            let (n, d) = frac(&c.t2)?;
+            Some(Small {
+                p: v3(&c.vertex)?,
+                a: v3(&c.axis)?,
+                cone: true,
+                num: n,
+                den: d,
+            })
+        }
+        Natural::Cylinder(c) => {
+            let (n, d) = frac(&c.r2)?;
+            Some(Small {
+                p: v3(&c.point)?,
+                a: v3(&c.axis)?,
+                cone: false,
+                num: n,
+                den: d,
+            })
+        }
+        Natural::Sphere(_) => None,
+    }
+}
+
+fn cross_i(u: &[i128; 3], v: &[i128; 3]) -> Option<[i128; 3]> {
+    Some([
+        u[1].checked_mul(v[2])?
+            .checked_sub(u[2].checked_mul(v[1])?)?,
+        u[2].checked_mul(v[0])?
+            .checked_sub(u[0].checked_mul(v[2])?)?,
+        u[0].checked_mul(v[1])?
+            .checked_sub(u[1].checked_mul(v[0])?)?,
+    ])
+}
+
+fn dot_i(u: &[i128; 3], v: &[i128; 3]) -> Option<i128> {
+    u[0].checked_mul(v[0])?
+        .checked_add(u[1].checked_mul(v[1])?)?
+        .checked_add(u[2].checked_mul(v[2])?)
+}
+
+/// `Some(answer)` when the fast path decided, `None` to fall back.
+fn thm8_small(a: &Natural, b: &Natural) -> Option<Option<bool>> {
+    let (x, y) = (small(a)?, small(b)?);
+    let d = [y.p[0] - x.p[0], y.p[1] - x.p[1], y.p[2] - x.p[2]];
+    let n = cross_i(&x.a, &y.a)?;
+    if n == [0, 0, 0] {
+        if cross_i(&d, &x.a)? == [0, 0, 0] {
+            return Some(None); // coincident
+        }
+        return Some(Some(match (x.cone, y.cone) {
+            (false, false) => true,
+            (true, true) => x.num.checked_mul(y.den)? == y.num.checked_mul(x.den)?,
+            _ => false,
+        }));
+    }
+    if dot_i(&d, &n)? != 0 {
+        return Some(None); // skew
+    }
+    let sn = dot_i(&cross_i(&d, &y.a)?, &n)?;
+    let sd = dot_i(&n, &n)?;
+    // ρ² as num/den for each quadric, O = p1 + (sn/sd) a1
+    let rho = |q: &Small| -> Option<(i128, i128)> {
+        if !q.cone {
+            return Some((q.num, q.den));
+        }
+        let w: [i128; 3] = [
+            (x.p[0] - q.p[0])
+                .checked_mul(sd)?
+                .checked_add(sn.checked_mul(x.a[0])?)?,
+            (x.p[1] - q.p[1])
+                .checked_mul(sd)?
+                .checked_add(sn.checked_mul(x.a[1])?)?,
+            (x.p[2] - q.p[2])
+                .checked_mul(sd)?
+                .checked_add(sn.checked_mul(x.a[2])?)?,
+        ];
+        Some((
+            dot_i(&w, &w)?.checked_mul(q.num)?,
+            sd.checked_mul(sd)?.checked_mul(q.num + q.den)?,
+        ))
+    };
+    let (n1, d1) = rho(&x)?;
+    let (n2, d2) = rho(&y)?;
+    Some(Some(n1.checked_mul(d2)? == n2.checked_mul(d1)?))
+}
+
 /// A quadratic polynomial in the frame coordinates (s, t) of the axial
 /// plane, as the symmetric matrix of `(s, t, 1)`.
 pub type Conic2 = [[Q; 3]; 3];

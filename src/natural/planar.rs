@@ -512,6 +512,33 @@ fn on_line(p: &EPoint, q: &EPoint, d: &EPoint) -> bool {
     c.iter().all(|x| x.is_zero())
 }
 
+/// §6 (common vertex V of two cones): the squared heights at the
+/// parallelogram vertices A ∈ L1 and D ∈ L2 — the points of the diagonals
+/// (the lines of F through V) whose projection on ℓ1 is at distance cos α1
+/// from V: with A − V = μ w, `μ² = |a1|²/((1 + t2)(w·a1)²)` and
+/// `h²(A) = μ² h²(w)` (h² is homogeneous around V).
+pub fn parallelogram_heights(h: &AxialPlane, a1: &V3, t2: &Q) -> Option<Vec<Exact>> {
+    let Factored::Lines(lines) = factor_conic(&h.projection) else {
+        return None;
+    };
+    let mut out = Vec::new();
+    for l in &lines {
+        let w3 = vec3(h, &l.w[0], &l.w[1]);
+        let wa = (0..3).fold(qs(&Q::zero()), |acc, i| acc.add(&w3[i].scale(&a1[i])));
+        // squared height along the direction w (the quadratic coefficient A)
+        let mut qw = qs(&Q::zero());
+        for i in 0..2 {
+            for j in 0..2 {
+                qw = qw.add(&l.w[i].mul(&l.w[j]).scale(&h.heights[0][i][j]));
+            }
+        }
+        let den = wa.mul(&wa).scale(&(Q::one() + t2));
+        let v = qw.scale(&norm2(a1)).div(&den)?;
+        out.push(Exact::Quad(v));
+    }
+    Some(out)
+}
+
 /// The skeletal lines of an axial quadric in H (factors of `h² = 0`), as 3D
 /// point and direction.
 pub fn skeletal_lines(h: &AxialPlane, heights: &Conic2) -> Vec<(EPoint, EPoint)> {

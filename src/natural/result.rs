@@ -164,6 +164,10 @@ pub struct PlanarDeciders {
     pub frame: [[Q; 3]; 3],
     /// Skeletal lines of each surface (point, direction).
     pub skeletal: Vec<Vec<(EPoint, EPoint)>>,
+    /// Common vertex (§6): the squared heights at the parallelogram vertices
+    /// A (on L1) and D (on L2); positive: two real lines through V, zero: a
+    /// double line, negative: imaginary lines.
+    pub parallelogram: Option<Vec<Exact>>,
 }
 
 /// The full answer of `quadsect natural`.

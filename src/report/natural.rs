@@ -93,6 +93,7 @@ fn deciders_json(d: &PlanarDeciders) -> Value {
         "frame": {"origin": q3(&d.frame[0]), "e1": q3(&d.frame[1]), "e2": q3(&d.frame[2])},
         "x_point": d.x_point.as_ref().map(q3),
         "heights2_at_x": d.heights_at_x.as_ref().map(|(a, b)| json!([fmt_q(a), fmt_q(b)])),
+        "squared_heights_A_D": d.parallelogram.as_ref().map(|v| v.iter().map(|x| x.json()).collect::<Vec<_>>()),
         "skeletal_lines": d.skeletal.iter().map(|ls| ls.iter().map(|(p, w)| json!({"point": epoint_json(p), "direction": epoint_json(w)})).collect::<Vec<_>>()).collect::<Vec<_>>(),
     })
 }
@@ -230,6 +231,16 @@ pub fn natural_human(r: &NaturalReport) -> String {
             fmt_q(&d.discriminant),
             if d.pencil { "yes" } else { "no" }
         ));
+        if let Some(p) = &d.parallelogram {
+            let v: Vec<String> = p
+                .iter()
+                .map(|x| format!("{} ≈ {}", x.text(), x.approx(8)))
+                .collect();
+            s.push_str(&format!(
+                "§6 parallelogram: squared heights at A and D {}\n",
+                v.join(", ")
+            ));
+        }
         if let (Some(x), Some((h1, h2))) = (&d.x_point, &d.heights_at_x) {
             s.push_str(&format!(
                 "X = ({}, {}, {}), squared heights {} and {}\n",

@@ -37,34 +37,48 @@ impl SturmSequence {
             return SturmSequence { seq: vec![] };
         }
         let p0 = p.squarefree_part();
-        let mut seq = vec![p0.clone()];
-        let p1 = p0.derivative().primitive_part();
+        let p1 = p0.derivative();
         if p1.is_zero() {
-            return SturmSequence { seq };
+            return SturmSequence { seq: vec![p0] };
         }
-        seq.push(p1);
-        loop {
-            let n = seq.len();
-            let (a, b) = (&seq[n - 2], &seq[n - 1]);
-            if b.degree() == Some(0) {
-                break;
-            }
-            let r = a.pseudo_rem(b);
+        // Subresultant PRS (exact divisions, no contents) with the signs
+        // tracked so that each stored term is a positive multiple of the
+        // Sturm remainder −rem(T_{i−1}, T_i):
+        //   raw_{i+1} = prem(raw_{i−1}, raw_i)/d,  prem = lc(raw_i)^(δ+1)·rem,
+        //   so −rem = −raw_{i+1}·d/lc(raw_i)^(δ+1) and the sign of T_{i+1}
+        //   is −s_{i−1}·sign(d)·sign(lc raw_i)^(δ+1).
+        let mut seq = vec![p0.clone(), p1.clone()];
+        let (mut a, mut b) = (p0, p1);
+        let (mut s_prev, mut s_cur) = (1i32, 1i32);
+        let mut g = BigInt::from(1);
+        let mut h = BigInt::from(1);
+        while b.degree().unwrap_or(0) > 0 {
+            let delta = a.degree().unwrap_or(0) - b.degree().unwrap_or(0);
+            let r = a.pseudo_rem(&b);
             if r.is_zero() {
                 break;
             }
-            // prem = lc(b)^(δ+1)·a mod b; we need a positive multiple of -(a mod b)
-            let delta = a.degree().unwrap_or(0) - b.degree().unwrap_or(0);
-            let factor_negative = b.lc().is_negative() && delta % 2 == 0;
-            let pp = r.primitive_part();
-            // primitive_part makes lc > 0; restore the sign of r first
-            let r_sign_pos = r.lc().is_positive();
-            let mut next = if r_sign_pos { pp } else { -pp };
-            // next has the sign of prem; Sturm wants sign of -(a mod b)
-            if !factor_negative {
-                next = -next;
+            let divisor = &g * num_traits::pow(h.clone(), delta);
+            let raw = r.div_exact_scalar(&divisor).unwrap_or(r);
+            let lb_neg = b.lc().is_negative() && (delta + 1) % 2 == 1;
+            let mut s_next = -s_prev;
+            if divisor.is_negative() {
+                s_next = -s_next;
             }
-            seq.push(next);
+            if lb_neg {
+                s_next = -s_next;
+            }
+            seq.push(if s_next > 0 { raw.clone() } else { -&raw });
+            g = b.lc();
+            h = match delta {
+                0 => h,
+                1 => g.clone(),
+                _ => num_traits::pow(g.clone(), delta) / num_traits::pow(h, delta - 1),
+            };
+            a = b;
+            b = raw;
+            s_prev = s_cur;
+            s_cur = s_next;
         }
         SturmSequence { seq }
     }

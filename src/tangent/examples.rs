@@ -73,7 +73,7 @@ pub const PAPER_004: &[PaperExample] = &[
         printed: "D(u) = 6561u^2 - 24786u + 15309, two positive roots (7/9 and 3); S(0,0,5) = 209/18 > 0 and no negative root: S is contained in E",
         printed_factors: &["6561u^2 - 24786u + 15309"],
         known_errors: &[
-            "the real critical values are 7/9, 3, 109/20 and 163/14; the printed quadratic only has 7/9 and 3 (it misses the branches with a line of solutions, λ = 1/4 and λ = 1/16), so the maximum 163/14 is missing",
+            "the real critical values are 7/9, 3, 109/20 and 163/14; the printed quadratic only has 7/9 and 3 (it misses the branches with a line of solutions, λ = 1/4 and λ = 1/2), so the maximum 163/14 is missing",
         ],
     },
     PaperExample {

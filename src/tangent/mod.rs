@@ -199,7 +199,12 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         let j = an.judging.clone();
         (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
     } else {
-        match critical::analyze(&e, surface)? {
+        let outcome = match critical::analyze(&e, surface) {
+            Ok(o) => o,
+            Err(Error::Internal(why)) => return Ok(undecided(&e, surface, why)),
+            Err(other) => return Err(other),
+        };
+        match outcome {
             critical::Outcome::Finite(an) => {
                 let real: Vec<RealAlg> = an.real_values();
                 let (vals, nonreal) = split_values(&real, &an.judging);
@@ -229,6 +234,31 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
     Ok(finish(
         &e, ellipsoid, surface, values, nonreal, judging, method, witness_fn,
     ))
+}
+
+/// The answer when no certificate could be produced (never a guess).
+fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
+    TangentReport {
+        ellipsoid: e.poly.clone(),
+        surface: surface.clone(),
+        verdict: Verdict::Undecided,
+        intersect: None,
+        touching: None,
+        side: None,
+        containment: None,
+        min: None,
+        max: None,
+        judging_poly: ZPoly::constant(1.into()),
+        certificate: Certificate {
+            critical_values: vec![],
+            nonreal_point_values: vec![],
+            negative_witness: None,
+            positive_witness: None,
+            method: Method::Constant,
+            notes: vec![],
+        },
+        reason: Some(why),
+    }
 }
 
 #[derive(Clone, Copy, Debug)]
