@@ -122,8 +122,9 @@ fn remove_pow2(c: &mut [BigInt]) {
 }
 
 enum Found {
-    /// Root in the open interval (c/2^j, (c+1)/2^j).
-    Open(BigInt, u64),
+    /// Root in the open interval (c/2^j, (c+1)/2^j); the flags say whether
+    /// an end is an exact root found at a midpoint (and needs fixing).
+    Open(BigInt, u64, bool),
     /// Exact root c/2^j.
     Exact(BigInt, u64),
 }
@@ -132,11 +133,13 @@ enum Found {
 /// `q(1) != 0`, as dyadic intervals.
 fn isolate_unit(q: Vec<BigInt>) -> Vec<Found> {
     let mut out = Vec::new();
-    let mut stack: Vec<(Vec<BigInt>, BigInt, u64)> = vec![(q, BigInt::zero(), 0)];
-    while let Some((poly, c, j)) = stack.pop() {
+    // (polynomial, c, j, an end of the interval is a root found earlier)
+    let mut stack: Vec<(Vec<BigInt>, BigInt, u64, bool, bool)> =
+        vec![(q, BigInt::zero(), 0, false, false)];
+    while let Some((poly, c, j, lo_root, hi_root)) = stack.pop() {
         match descartes_unit(&poly) {
             0 => {}
-            1 => out.push(Found::Open(c, j)),
+            1 => out.push(Found::Open(c, j, lo_root || hi_root)),
             _ => {
                 let n = poly.len() - 1;
                 let mut left: Vec<BigInt> =
@@ -146,12 +149,13 @@ fn isolate_unit(q: Vec<BigInt>) -> Vec<Found> {
                 taylor_shift_one(&mut right);
                 let c2 = &c << 1usize;
                 let mid: BigInt = &c2 + 1u32;
-                if right[0].is_zero() {
+                let mid_root = right[0].is_zero();
+                if mid_root {
                     out.push(Found::Exact(mid.clone(), j + 1));
                     right.remove(0);
                 }
-                stack.push((right, mid, j + 1));
-                stack.push((left, c2, j + 1));
+                stack.push((right, mid, j + 1, mid_root, hi_root));
+                stack.push((left, c2, j + 1, lo_root, mid_root));
             }
         }
     }
@@ -180,22 +184,26 @@ fn isolate_positive(p: &ZPoly) -> Vec<RootInterval> {
     let q = p.scale_roots_pow2(-k);
     let mut c = q.coeffs().to_vec();
     remove_pow2(&mut c);
-    let mut found: Vec<(Q, Q)> = isolate_unit(c)
+    let mut found: Vec<(Q, Q, bool)> = isolate_unit(c)
         .into_iter()
         .map(|f| match f {
-            Found::Open(c, j) => (dyadic(&c, k - j as i64), dyadic(&(c + 1), k - j as i64)),
+            Found::Open(c, j, fix) => (
+                dyadic(&c, k - j as i64),
+                dyadic(&(c + 1), k - j as i64),
+                fix,
+            ),
             Found::Exact(c, j) => {
                 let v = dyadic(&c, k - j as i64);
-                (v.clone(), v)
+                (v.clone(), v, false)
             }
         })
         .collect();
     found.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.cmp(&b.1)));
     found
         .into_iter()
-        .map(|(lo, hi)| {
+        .map(|(lo, hi, fix)| {
             let mut iv = RootInterval { lo, hi };
-            if !iv.is_exact() {
+            if fix && !iv.is_exact() {
                 fix_endpoints(p, &mut iv);
             }
             iv
@@ -212,9 +220,9 @@ fn isolate_positive(p: &ZPoly) -> Vec<RootInterval> {
 /// off `p'(lo)` when both ends are roots.
 fn fix_endpoints(p: &ZPoly, iv: &mut RootInterval) {
     let two = Q::from_integer(BigInt::from(2));
+    let mut s_lo = p.sign_at(&iv.lo);
+    let mut s_hi = p.sign_at(&iv.hi);
     loop {
-        let s_lo = p.sign_at(&iv.lo);
-        let s_hi = p.sign_at(&iv.hi);
         if s_lo != 0 && s_hi != 0 {
             return;
         }
@@ -234,8 +242,10 @@ fn fix_endpoints(p: &ZPoly, iv: &mut RootInterval) {
         }
         if s == sigma {
             iv.lo = m;
+            s_lo = s;
         } else {
             iv.hi = m;
+            s_hi = s;
         }
     }
 }
