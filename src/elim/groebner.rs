@@ -156,19 +156,7 @@ impl GPoly {
     /// positive leading coefficient (an ideal generator: the scale does not
     /// matter).
     pub fn from_zmpoly(p: &ZMPoly, slots: &[usize], ord: MonoOrder) -> GPoly {
-        let mut terms: Vec<(Mono, BigInt)> = p
-            .terms()
-            .iter()
-            .map(|(e, c)| {
-                let mut m = [0u16; GV];
-                for (i, &v) in slots.iter().enumerate() {
-                    m[i] = e[v] as u16;
-                }
-                (m, c.clone())
-            })
-            .collect();
-        terms.sort_by(|a, b| cmp_mono(&b.0, &a.0, ord));
-        let mut g = GPoly { terms };
+        let mut g = Self::from_zmpoly_exact(p, slots, ord);
         g.make_primitive();
         g
     }

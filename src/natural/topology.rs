@@ -26,7 +26,7 @@ use crate::error::Error;
 use crate::number::{Q, QSqrt, qi};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly};
-use crate::roots::{RealAlg, Rur, simplest_rational_in, solve_zero_dim, values_at};
+use crate::roots::{RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_at};
 use crate::tangent::QuadricForm;
 use crate::tangent::witness::eval_qsqrt;
 use num_traits::{One, Signed, Zero};
@@ -366,18 +366,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
             .collect();
         vals.sort_by(|a, b| a.cmp_exact(b));
         vals.dedup_by(|a, b| a.cmp_exact(b) == Ordering::Equal);
-        // separate neighbouring intervals
-        for i in 0..vals.len().saturating_sub(1) {
-            loop {
-                let (_, hi) = vals[i].interval();
-                let (lo, _) = vals[i + 1].interval();
-                if hi < lo {
-                    break;
-                }
-                vals[i].bisect();
-                vals[i + 1].bisect();
-            }
-        }
+        separate(&mut vals);
         let mut levels = Vec::new();
         let k = vals.len();
         if k == 0 {

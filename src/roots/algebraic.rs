@@ -311,6 +311,23 @@ impl RealAlg {
     }
 }
 
+/// Refines the isolating intervals of increasing, distinct real algebraic
+/// numbers until consecutive intervals are strictly separated
+/// (`hi_i < lo_{i+1}`), so that a rational fits between any two.
+pub fn separate(values: &mut [RealAlg]) {
+    for i in 0..values.len().saturating_sub(1) {
+        loop {
+            let (_, hi) = values[i].interval();
+            let (lo, _) = values[i + 1].interval();
+            if hi < lo {
+                break;
+            }
+            values[i].bisect();
+            values[i + 1].bisect();
+        }
+    }
+}
+
 /// True when `q` may have a root in the open interval `(a, b)`: Descartes'
 /// test of `q` transformed to `(0, ∞)`; `false` is a proof of no root.
 pub fn has_root_in_open(q: &ZPoly, a: &Q, b: &Q) -> bool {

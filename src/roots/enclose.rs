@@ -16,6 +16,21 @@ use crate::poly::mpoly::{MPoly, NVARS, T, U};
 use crate::poly::{QPoly, ZPoly};
 use num_traits::{Signed, Zero};
 
+/// The smallest and largest of four rationals (interval products).
+fn min_max(c: [Q; 4]) -> (Q, Q) {
+    let mut mn = c[0].clone();
+    let mut mx = c[0].clone();
+    for v in &c[1..] {
+        if *v < mn {
+            mn = v.clone();
+        }
+        if *v > mx {
+            mx = v.clone();
+        }
+    }
+    (mn, mx)
+}
+
 /// An enclosure `[lo, hi]` of `p(x)` for all `x ∈ [a, b]` (rational interval
 /// Horner scheme; exact rational arithmetic, so it is a true enclosure).
 pub fn eval_interval(p: &QPoly, a: &Q, b: &Q) -> (Q, Q) {
@@ -23,17 +38,7 @@ pub fn eval_interval(p: &QPoly, a: &Q, b: &Q) -> (Q, Q) {
     let mut hi = Q::zero();
     for c in p.coeffs().iter().rev() {
         // [lo, hi] * [a, b]
-        let cands = [&lo * a, &lo * b, &hi * a, &hi * b];
-        let mut mn = cands[0].clone();
-        let mut mx = cands[0].clone();
-        for v in &cands[1..] {
-            if *v < mn {
-                mn = v.clone();
-            }
-            if *v > mx {
-                mx = v.clone();
-            }
-        }
+        let (mn, mx) = min_max([&lo * a, &lo * b, &hi * a, &hi * b]);
         lo = mn + c;
         hi = mx + c;
     }
@@ -89,18 +94,7 @@ pub fn ratio_enclosure(num: &(ZPoly, Q), den: &(ZPoly, Q), a: &Q, b: &Q) -> Opti
     if dl <= Q::zero() && dh >= Q::zero() {
         return None;
     }
-    let cands = [&nl / &dl, &nl / &dh, &nh / &dl, &nh / &dh];
-    let mut mn = cands[0].clone();
-    let mut mx = cands[0].clone();
-    for v in &cands[1..] {
-        if *v < mn {
-            mn = v.clone();
-        }
-        if *v > mx {
-            mx = v.clone();
-        }
-    }
-    Some((mn, mx))
+    Some(min_max([&nl / &dl, &nl / &dh, &nh / &dl, &nh / &dh]))
 }
 
 fn scale_iv((l, h): (Q, Q), k: &Q) -> (Q, Q) {

@@ -16,7 +16,7 @@ mod report;
 mod sturm;
 mod zerodim;
 
-pub use algebraic::{RealAlg, has_root_in_open};
+pub use algebraic::{RealAlg, has_root_in_open, separate};
 pub use enclose::{
     enclose_mean_value, eval_interval, eval_q, eval_ratio_interval, eval_xyz, ratio_enclosure,
     value_at, value_polynomial, values_at,

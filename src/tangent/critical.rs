@@ -28,7 +28,7 @@ use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, U, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::{
-    RealAlg, Rur, simplest_rational_in, solve_zero_dim, value_polynomial, values_at,
+    RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, value_polynomial, values_at,
 };
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
@@ -194,17 +194,7 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
     let judging = elimination_ideal_values(gens, s)?;
     let mut roots = RealAlg::roots_of(&judging);
     // separate the isolating intervals so that rationals fit between roots
-    for i in 0..roots.len().saturating_sub(1) {
-        loop {
-            let (_, hi) = roots[i].interval();
-            let (lo, _) = roots[i + 1].interval();
-            if hi < lo || roots[i].as_rational().is_some() || roots[i + 1].as_rational().is_some() {
-                break;
-            }
-            roots[i].bisect();
-            roots[i + 1].bisect();
-        }
-    }
+    separate(&mut roots);
     // one rational test level in each gap
     let mut tests: Vec<Q> = Vec::new();
     let k = roots.len();

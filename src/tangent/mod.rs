@@ -306,27 +306,11 @@ fn finish(
     let (min, max) = match (values.first(), values.last()) {
         (Some(a), Some(b)) => (a.simplify(), b.simplify()),
         _ => {
-            return TangentReport {
-                ellipsoid: e.poly.clone(),
-                surface: surface.clone(),
-                verdict: Verdict::Undecided,
-                intersect: None,
-                touching: None,
-                side: None,
-                containment: None,
-                min: None,
-                max: None,
-                judging_poly: judging,
-                certificate: Certificate {
-                    critical_values: values,
-                    nonreal_point_values: nonreal,
-                    negative_witness: None,
-                    positive_witness: None,
-                    method,
-                    notes,
-                },
-                reason: Some("no real critical value was found (internal inconsistency)".into()),
-            };
+            return undecided(
+                e,
+                surface,
+                "no real critical value was found (internal inconsistency)".into(),
+            );
         }
     };
     let sn = min.sign();
