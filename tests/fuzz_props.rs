@@ -34,6 +34,24 @@ proptest! {
         prop_assert!(v.get("ok").and_then(|b| b.as_bool()).is_some());
     }
 
+    /// The natural-quadric parser never panics on arbitrary text.
+    #[test]
+    fn natural_parser_never_panics(s in "\\PC{0,60}") {
+        let _ = quadsect::natural::parse_natural(&s);
+    }
+
+    /// Text close to the short syntax reaches deep into the parser, and
+    /// whatever parses can be classified (against a fixed partner).
+    #[test]
+    fn natural_syntax_alphabet(kind in "(sphere|cylinder|cone|torus)", k1 in "(center|point|vertex|axis|radius2|tan2|tan|cos2|sin2|foo)",
+                               v1 in "[-0-9/.,e]{0,12}", k2 in "(axis|radius2|tan2|cos2)", v2 in "[-0-9/.,]{0,10}") {
+        let text = format!("{kind} {k1}={v1} {k2}={v2}");
+        if let Ok(q) = quadsect::natural::parse_natural(&text) {
+            let other = quadsect::natural::parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
+            let _ = quadsect::natural::classify(&q, &other);
+        }
+    }
+
     /// Well-formed JSON with random fields still answers.
     #[test]
     fn batch_json_fields(op in "(roots|resultant|tangent|natural|bogus)", a in "[-+*/^() xyzu0-9]{0,20}", b in "[-+*/^() xyzu0-9]{0,20}") {
@@ -41,5 +59,23 @@ proptest! {
             "ellipsoid": a, "surface": b, "a": a, "b": b}).to_string();
         let v = answer_line(&line);
         prop_assert_eq!(v.get("id").cloned(), Some(serde_json::json!(1)));
+    }
+}
+
+/// Inputs found by libFuzzer (`fuzz/`): huge constants must either be
+/// rejected with a size-limit error or print to text that parses back.
+#[test]
+fn fuzzer_regressions_round_trip() {
+    for s in [
+        "558^85887",
+        "85^54820",
+        "1e100000",
+        "9e99999",
+        "(10^99000)*(10^99000)",
+        "1/10^99999",
+    ] {
+        if let Ok(p) = parse_poly(s) {
+            assert_eq!(parse_poly(&p.to_string_canonical()).unwrap(), p, "{s}");
+        }
     }
 }

@@ -121,6 +121,18 @@ pub fn scan_number(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
             return Err(err("exponent sign must be followed by digits", j));
         }
     }
+    // the exact value must print within MAX_DIGITS digits (numerator and
+    // denominator), so that every printed number parses back
+    let e_total = exp - frac_part.len() as i64;
+    let mant_digits = int_part.len() + frac_part.len();
+    if (e_total >= 0 && mant_digits as i64 + e_total > MAX_DIGITS as i64)
+        || (e_total < 0 && -e_total > MAX_DIGITS as i64)
+    {
+        return Err(err(
+            format!("number has more than {MAX_DIGITS} digits (size limit)"),
+            pos,
+        ));
+    }
     let mut all = Vec::with_capacity(int_part.len() + frac_part.len());
     all.extend_from_slice(int_part);
     all.extend_from_slice(frac_part);

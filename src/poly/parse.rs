@@ -47,7 +47,9 @@ impl Default for Limits {
             max_degree: 10_000,
             max_terms: 200_000,
             max_work: 20_000_000,
-            max_coeff_bits: 1_000_000,
+            // below the 100 000-digit literal limit, so that every printed
+            // polynomial parses back
+            max_coeff_bits: 330_000,
         }
     }
 }
@@ -106,6 +108,7 @@ pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError
         return Err(p.err_at("empty expression", 0));
     }
     let v = p.expr()?;
+    p.check_size(&v, 0)?;
     p.skip_ws();
     if p.pos < p.s.len() {
         let c = p.current_char();
@@ -188,6 +191,21 @@ impl Parser<'_> {
                 at,
             ));
         }
+        let bits = p
+            .terms()
+            .iter()
+            .map(|(_, c)| c.numer().bits().max(c.denom().bits()))
+            .max()
+            .unwrap_or(0);
+        if bits > self.limits.max_coeff_bits {
+            return Err(self.err_at(
+                &format!(
+                    "a coefficient has more than {} bits (size limit)",
+                    self.limits.max_coeff_bits
+                ),
+                at,
+            ));
+        }
         Ok(())
     }
 
@@ -266,6 +284,7 @@ impl Parser<'_> {
                     }
                     let inv = Q::one() / c;
                     acc = acc.scale(&inv);
+                    self.check_size(&acc, at)?;
                 }
                 Some(c) if variable(c).is_some() || c == b'(' => {
                     let at = self.pos;
