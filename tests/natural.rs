@@ -739,3 +739,65 @@ proptest! {
         check_components(&a, &b, &r);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, .. ProptestConfig::default() })]
+
+    /// Two independent algorithms agree: a sphere is an ellipsoid, so the
+    /// tangent point method on (sphere, axial quadric's equation) must say
+    /// separated / touching / intersecting exactly when the natural-quadric
+    /// classification says empty / isolated points or a double conic /
+    /// a curve or crossing conics.
+    #[test]
+    fn sphere_classes_agree_with_the_tangent_method(c in (-3i64..4, -3i64..4, -3i64..4), r2 in 1i64..12,
+                                                    p in (-2i64..3, -2i64..3, -2i64..3), a in (-2i64..3, -2i64..3, 1i64..3),
+                                                    k in 1i64..5, cone in any::<bool>()) {
+        let s = format!("sphere center={},{},{} radius2={}", c.0, c.1, c.2, r2);
+        let q = if cone {
+            format!("cone vertex={},{},{} axis={},{},{} tan2={}/2", p.0, p.1, p.2, a.0, a.1, a.2, k)
+        } else {
+            format!("cylinder point={},{},{} axis={},{},{} radius2={}", p.0, p.1, p.2, a.0, a.1, a.2, k)
+        };
+        let (qs, qq) = (nat(&s), nat(&q));
+        let r = classify(&qs, &qq).unwrap();
+        let t = quadsect::tangent::decide(&qs.equation(), &qq.equation()).unwrap();
+        use quadsect::tangent::Verdict;
+        let double = r.components.iter().any(|c| matches!(c, Component::Conic { double: true, .. }));
+        let expected = match r.class {
+            Class::Empty => Verdict::Separated,
+            Class::Points => Verdict::Touching,
+            Class::Curve => Verdict::Intersecting,
+            Class::Conics if double => Verdict::Touching,
+            Class::Conics => Verdict::Intersecting,
+            other => panic!("unexpected class {other:?} for {s} | {q}"),
+        };
+        prop_assert_eq!(t.verdict, expected, "{} | {}: class {}", s, q, r.class.as_str());
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, .. ProptestConfig::default() })]
+
+    /// Random axial pairs: the class and counts do not depend on the order
+    /// of the arguments or on a rigid motion, and the paper's §7 decider
+    /// agrees with the curve topology wherever it applies.
+    #[test]
+    fn random_axial_pairs_are_consistent(p1 in (-3i64..4, -3i64..4, -3i64..4), a1 in (-2i64..3, -2i64..3, 1i64..3), k1 in 1i64..6,
+                                         p2 in (-3i64..4, -3i64..4, -3i64..4), a2 in (1i64..3, -2i64..3, -2i64..3), k2 in 1i64..6,
+                                         kinds in 0u8..3, rot in (-2i64..3, -2i64..3, -2i64..3, 1i64..3)) {
+        let mk = |cone: bool, p: (i64, i64, i64), a: (i64, i64, i64), k: i64| if cone {
+            format!("cone vertex={},{},{} axis={},{},{} tan2={}/3", p.0, p.1, p.2, a.0, a.1, a.2, k)
+        } else {
+            format!("cylinder point={},{},{} axis={},{},{} radius2={}", p.0, p.1, p.2, a.0, a.1, a.2, k)
+        };
+        let (x, y) = (nat(&mk(kinds != 1, p1, a1, k1)), nat(&mk(kinds != 2, p2, a2, k2)));
+        let r = classify(&x, &y).unwrap();
+        prop_assert!(!r.notes.iter().any(|n| n.contains("please report")), "{:?}", r.notes);
+        let s = classify(&y, &x).unwrap();
+        prop_assert_eq!((s.class, counts(&s)), (r.class, counts(&r)));
+        let m = classify(&moved(&x, rot, (1, -1, 2)), &moved(&y, rot, (1, -1, 2))).unwrap();
+        prop_assert_eq!((m.class, counts(&m)), (r.class, counts(&r)));
+        prop_assert!(section7_agrees(&section7(&x, &y), &r.components));
+        check_components(&x, &y, &r);
+    }
+}

@@ -170,14 +170,26 @@ fn bounding_test(cone: &Cone, u: &V3, axis2: &V3, s: &V3, rho2: &Q, v2: Option<&
         return Section7::NotApplicable("the line v lies inside the cone".into());
     };
     let v1 = sv(&cone.vertex);
-    // ℓ2 outside B(C, v): the cone occupies the quadrants of sign ±(σ1, σ2)
+    // ℓ2 outside B(C, v): the cone occupies the quadrants of sign ±(σ1, σ2).
+    // For two cones ℓ2 leaves v at V2 along a2, so its side is that of a2;
+    // for a cylinder ℓ2 is parallel to v, so its side is that of S − V.
     let sig: Vec<i32> = normals
         .iter()
         .map(|n| sdot(n, &sv(&cone.axis)).sign())
         .collect();
-    let dir: Vec<i32> = normals.iter().map(|n| sdot(n, &sv(axis2)).sign()).collect();
+    let probe = match v2 {
+        Some(_) => axis2.clone(),
+        None => sub(s, &cone.vertex),
+    };
+    let dir: Vec<i32> = normals
+        .iter()
+        .map(|n| sdot(n, &sv(&probe)).sign())
+        .collect();
+    if dir.contains(&0) {
+        return Section7::NotApplicable("the axis lies in a bounding plane".into());
+    }
     let inside = (dir[0] == sig[0] && dir[1] == sig[1]) || (dir[0] == -sig[0] && dir[1] == -sig[1]);
-    if dir[0] != 0 && dir[1] != 0 && inside {
+    if inside {
         return Section7::Transversal; // Lemma 7.2
     }
     // distances² from S to the bounding planes

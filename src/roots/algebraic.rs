@@ -67,28 +67,35 @@ impl RealAlg {
             .collect()
     }
 
-    /// The same number, as a `Rational` when it is rational.  A rational
-    /// root `a/b` of the primitive defining polynomial has `b | lc`, and two
-    /// such rationals are `1/lc²` apart: refine to that width and test the
-    /// simplest rational in the interval exactly.  (Skipped for leading
-    /// coefficients above 4096 bits.)
+    /// The same number, as a `Rational` when it is a rational of moderate
+    /// height (a representation change only: the value is exact either way).
+    ///
+    /// The simplest rational in a narrow isolating interval is the only
+    /// candidate of small height, and one exact evaluation tests it.  The
+    /// widths tried are 2^-16, 2^-40 and 2^-96, and finally `1/(2 lc²)`
+    /// when that is not narrower than 2^-128 — at that width the test is
+    /// complete, since a rational root `a/b` has `b | lc` and two such
+    /// rationals are `1/lc²` apart.
     pub fn simplify(&self) -> RealAlg {
         let RealAlg::Root { poly, .. } = self else {
             return self.clone();
         };
         let l = num_traits::Signed::abs(&poly.lc());
-        if l.bits() > 4096 {
-            return self.clone();
-        }
+        let complete = 2 * l.bits() + 1;
         let mut c = self.clone();
-        c.refine_to(&Q::new(BigInt::one(), &l * &l * BigInt::from(2)));
-        if c.as_rational().is_some() {
-            return c;
-        }
-        if let RealAlg::Root { poly, lo, hi } = &c {
-            let cand = super::rational::simplest_rational_in(lo, hi);
-            if poly.sign_at(&cand) == 0 {
-                return RealAlg::Rational(cand);
+        for bits in [16u64, 40, 96, complete.min(128)] {
+            c.refine_to(&Q::new(BigInt::one(), BigInt::one() << bits as usize));
+            if c.as_rational().is_some() {
+                return c;
+            }
+            if let RealAlg::Root { poly, lo, hi } = &c {
+                let cand = super::rational::simplest_rational_in(lo, hi);
+                if poly.sign_at(&cand) == 0 {
+                    return RealAlg::Rational(cand);
+                }
+            }
+            if bits >= complete {
+                break;
             }
         }
         // keep the original (coarser, shorter) interval

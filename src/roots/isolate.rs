@@ -308,9 +308,15 @@ pub fn isolate_squarefree(sq: &ZPoly) -> Vec<RootInterval> {
 }
 
 /// Bisects an isolating interval of the square-free `p` until its width is
-/// at most `width` (or the root is found exactly).
+/// at most `width` (or the root is found exactly).  Dyadic ends (the usual
+/// case: VCA produces them) are bisected in integer arithmetic, without the
+/// gcd of every rational operation.
 pub fn refine(p: &ZPoly, iv: &mut RootInterval, width: &Q) {
     if iv.is_exact() {
+        return;
+    }
+    if let (Some(kl), Some(kh)) = (pow2_exponent(iv.lo.denom()), pow2_exponent(iv.hi.denom())) {
+        refine_dyadic(p, iv, width, kl.max(kh));
         return;
     }
     let two = Q::from_integer(BigInt::from(2));
@@ -329,6 +335,46 @@ pub fn refine(p: &ZPoly, iv: &mut RootInterval, width: &Q) {
             iv.hi = m;
         }
     }
+}
+
+/// `k` when `d = 2^k`.
+fn pow2_exponent(d: &BigInt) -> Option<u64> {
+    let k = d.trailing_zeros()?;
+    if d.bits() == k + 1 { Some(k) } else { None }
+}
+
+fn refine_dyadic(p: &ZPoly, iv: &mut RootInterval, width: &Q, k0: u64) {
+    // lo = a/2^k, hi = b/2^k
+    let mut k = k0;
+    let scale = |q: &Q, k: u64| -> BigInt {
+        q.numer() << (k - pow2_exponent(q.denom()).unwrap_or(0)) as usize
+    };
+    let mut a = scale(&iv.lo, k);
+    let mut b = scale(&iv.hi, k);
+    let (wn, wd) = (width.numer().clone(), width.denom().clone());
+    let s_lo = p.sign_at_dyadic(&a, k);
+    // (b − a)/2^k > wn/wd  ⇔  (b − a)·wd > wn·2^k
+    while (&b - &a) * &wd > (&wn << k as usize) {
+        let m: BigInt = &a + &b;
+        k += 1;
+        let s = p.sign_at_dyadic(&m, k);
+        if s == 0 {
+            let v = Q::new(m, BigInt::one() << k as usize);
+            iv.lo = v.clone();
+            iv.hi = v;
+            return;
+        }
+        if s == s_lo {
+            a = m;
+            b <<= 1usize;
+        } else {
+            b = m;
+            a <<= 1usize;
+        }
+    }
+    let den = BigInt::one() << k as usize;
+    iv.lo = Q::new(a, den.clone());
+    iv.hi = Q::new(b, den);
 }
 
 /// One bisection step of an isolating interval (no-op on exact roots).
