@@ -427,3 +427,31 @@ fn witness_values_are_exact() {
     }
     let _ = (QSqrt::rational(Q::one()), BigInt::one());
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 12, .. ProptestConfig::default() })]
+
+    /// Random cubic and quartic S (no symmetry): every exact sample point of E
+    /// has ν ≤ S ≤ μ, and ν, μ are values of S at real critical points
+    /// (the witnesses near them have values on the right side of 0).
+    #[test]
+    fn higher_degree_sampling_stays_in_range(e in ellipsoid_strategy(), c in prop::collection::vec(-3i64..4, 6), quartic in any::<bool>(),
+                                             samples in prop::collection::vec((-20i64..20, -20i64..20, -20i64..20), 8)) {
+        let top = if quartic { format!("{}x^4 + {}y^2*z^2", c[0], c[1]) } else { format!("{}x^3 + {}x*y*z", c[0], c[1]) };
+        let s = format!("{top} + {}x*y + {}z^2 + {}y + {}", c[2], c[3], c[4], c[5]);
+        let ep = parse_poly(&e).unwrap();
+        let sp = parse_poly(&s).unwrap();
+        prop_assume!(sp.total_degree().unwrap_or(0) >= 3);
+        let r = decide(&ep, &sp).unwrap();
+        prop_assume!(r.verdict != Verdict::Undecided);
+        let ell = Ellipsoid::new(&ep).unwrap();
+        for (px, py, pz) in samples {
+            let p = [&ell.center[0] + q(px, 5), &ell.center[1] + q(py, 5), &ell.center[2] + q(pz, 5)];
+            if let Some(pt) = snap_to_ellipsoid(&ell, &p) {
+                let va = quadsect::natural::exact::Exact::Quad(eval_qsqrt(&sp, &pt)).to_alg();
+                prop_assert!(va.cmp_exact(r.min.as_ref().unwrap()) != Ordering::Less, "{} on {}: sample below ν", s, e);
+                prop_assert!(va.cmp_exact(r.max.as_ref().unwrap()) != Ordering::Greater, "{} on {}: sample above μ", s, e);
+            }
+        }
+    }
+}

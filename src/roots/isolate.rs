@@ -219,6 +219,56 @@ fn isolate_positive(p: &ZPoly) -> Vec<RootInterval> {
 /// σ on `(lo, r)` and `-σ` on `(r, hi)`.  σ is read off a non-root end, or
 /// off `p'(lo)` when both ends are roots.
 fn fix_endpoints(p: &ZPoly, iv: &mut RootInterval) {
+    // the ends are dyadic (VCA): bisect in integers, lo = a/2^k, hi = b/2^k
+    let (Some(kl), Some(kh)) = (pow2_exponent(iv.lo.denom()), pow2_exponent(iv.hi.denom())) else {
+        return fix_endpoints_rational(p, iv);
+    };
+    let mut k = kl.max(kh);
+    let scale = |q: &Q, k: u64| -> BigInt {
+        q.numer() << (k - pow2_exponent(q.denom()).unwrap_or(0)) as usize
+    };
+    let mut a = scale(&iv.lo, k);
+    let mut b = scale(&iv.hi, k);
+    let mut s_lo = p.sign_at_dyadic(&a, k);
+    let mut s_hi = p.sign_at_dyadic(&b, k);
+    let mut deriv: Option<i32> = None;
+    while s_lo == 0 || s_hi == 0 {
+        let sigma = if s_lo != 0 {
+            s_lo
+        } else if s_hi != 0 {
+            -s_hi
+        } else {
+            *deriv.get_or_insert_with(|| p.derivative().sign_at_dyadic(&a, k))
+        };
+        let m: BigInt = &a + &b;
+        k += 1;
+        let s = p.sign_at_dyadic(&m, k);
+        if s == 0 {
+            let v = Q::new(m, BigInt::one() << k as usize);
+            iv.lo = v.clone();
+            iv.hi = v;
+            return;
+        }
+        if s == sigma {
+            a = m;
+            b <<= 1usize;
+            s_lo = s;
+            if s_hi == 0 {
+                deriv = None;
+            }
+        } else {
+            b = m;
+            a <<= 1usize;
+            s_hi = s;
+        }
+    }
+    let den = BigInt::one() << k as usize;
+    iv.lo = Q::new(a, den.clone());
+    iv.hi = Q::new(b, den);
+}
+
+/// [`fix_endpoints`] for non-dyadic ends.
+fn fix_endpoints_rational(p: &ZPoly, iv: &mut RootInterval) {
     let two = Q::from_integer(BigInt::from(2));
     let mut s_lo = p.sign_at(&iv.lo);
     let mut s_hi = p.sign_at(&iv.hi);
