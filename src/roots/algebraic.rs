@@ -72,10 +72,9 @@ impl RealAlg {
     ///
     /// The simplest rational in a narrow isolating interval is the only
     /// candidate of small height, and one exact evaluation tests it.  The
-    /// widths tried are 2^-16, 2^-40 and 2^-96, and finally `1/(2 lc²)`
-    /// when that is not narrower than 2^-128 — at that width the test is
-    /// complete, since a rational root `a/b` has `b | lc` and two such
-    /// rationals are `1/lc²` apart.
+    /// widths tried are 2^-16, 2^-64 and finally `1/(2 lc²)` (capped at
+    /// 2^-2048) — at that width the test is complete, since a rational root
+    /// `a/b` has `b | lc` and two such rationals are `1/lc²` apart.
     pub fn simplify(&self) -> RealAlg {
         let RealAlg::Root { poly, .. } = self else {
             return self.clone();
@@ -83,7 +82,7 @@ impl RealAlg {
         let l = num_traits::Signed::abs(&poly.lc());
         let complete = 2 * l.bits() + 1;
         let mut c = self.clone();
-        for bits in [16u64, 40, 96, complete.min(128)] {
+        for bits in [16u64, 64, complete.min(2048)] {
             c.refine_to(&Q::new(BigInt::one(), BigInt::one() << bits as usize));
             if c.as_rational().is_some() {
                 return c;
