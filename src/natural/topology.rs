@@ -172,15 +172,6 @@ pub fn common_rulings(q: &Natural, other: &Natural) -> Vec<(EPoint, EPoint)> {
         Some(f) => f,
         None => return vec![],
     };
-    let quad = |d: &[QSqrt; 3]| -> QSqrt {
-        let mut acc = QSqrt::rational(Q::zero());
-        for r in 0..3 {
-            for c in 0..3 {
-                acc = acc.add(&d[r].mul(&d[c]).scale(&form.a[r][c]));
-            }
-        }
-        acc
-    };
     let mut out = Vec::new();
     match q {
         Natural::Cone(k) => {
@@ -272,7 +263,6 @@ pub fn common_rulings(q: &Natural, other: &Natural) -> Vec<(EPoint, EPoint)> {
                         .add(&ss.scale(&v[i]))
                 });
                 if eval_qsqrt(&fo, &p0).is_zero() {
-                    let _ = quad(&lift(a));
                     out.push((epoint(&p0), epoint(&lift(a))));
                 }
             }

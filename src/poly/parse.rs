@@ -330,7 +330,6 @@ impl Parser<'_> {
     }
 
     fn power(&mut self) -> Result<QMPoly, ParseError> {
-        let base_at = self.pos;
         let base = self.primary()?;
         if self.peek() != Some(b'^') {
             return Ok(base);
@@ -365,7 +364,6 @@ impl Parser<'_> {
         } else {
             digits.parse().unwrap_or(u64::MAX)
         };
-        let _ = base_at;
         if base.is_constant() {
             let c = base.constant_term();
             if c.is_zero() || c.is_one() || c == -Q::one() {

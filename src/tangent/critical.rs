@@ -38,7 +38,7 @@ use std::cmp::Ordering;
 pub struct CriticalAnalysis {
     /// The generators `E, (∇S × ∇E)₁, ₂, ₃`.
     pub generators: Vec<QMPoly>,
-    /// Gröbner basis size of the critical ideal.
+    /// The rational univariate representation of the critical points.
     pub rur: Rur,
     /// `S = U(t)` on the critical points.
     pub value_poly: QPoly,

@@ -232,7 +232,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         }
     };
     Ok(finish(
-        &e, ellipsoid, surface, values, nonreal, judging, method, witness_fn,
+        &e, surface, values, nonreal, judging, method, witness_fn,
     ))
 }
 
@@ -290,7 +290,6 @@ fn split_values(real: &[RealAlg], judging: &ZPoly) -> (Vec<RealAlg>, Vec<RealAlg
 #[allow(clippy::too_many_arguments)]
 fn finish(
     e: &Ellipsoid,
-    ellipsoid: &QMPoly,
     surface: &QMPoly,
     values: Vec<RealAlg>,
     nonreal: Vec<RealAlg>,
@@ -298,7 +297,6 @@ fn finish(
     method: Method,
     wf: WitnessFinder,
 ) -> TangentReport {
-    let _ = ellipsoid;
     let mut notes = Vec::new();
     if matches!(method, Method::LevelSets(_)) {
         notes.push("curves of critical points: ν and μ are exact; critical values strictly between them are not classified".into());
