@@ -158,11 +158,10 @@ impl Rng {
     }
 }
 
-/// The tangent point suite.
-pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
+/// The 16 random rotated ellipsoid pairs (E, S) of the quadric-S
+/// benchmark (fixed seed, so runs and profiles compare).
+pub fn quadric_pairs() -> Result<Vec<(crate::poly::QMPoly, crate::poly::QMPoly)>, Error> {
     use crate::poly::parse_poly;
-    use crate::tangent::decide;
-    // random rotated ellipsoid pairs (quadric S)
     let mut rng = Rng(0x9e3779b97f4a7c15);
     let mut pairs = Vec::new();
     for _ in 0..16 {
@@ -191,6 +190,14 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         let s = rotate(&s0, &r);
         pairs.push((e, s));
     }
+    Ok(pairs)
+}
+
+/// The tangent point suite.
+pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
+    use crate::poly::parse_poly;
+    use crate::tangent::decide;
+    let pairs = quadric_pairs()?;
     let mut k = 0;
     let (m, n) = measure(|| {
         let (e, s) = &pairs[k % pairs.len()];

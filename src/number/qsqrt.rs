@@ -49,6 +49,17 @@ impl QSqrt {
         QSqrt { a, b, d }
     }
 
+    /// The result of an operation on values of one field Q(√d): `d` is
+    /// already known not to be a square (it comes from an operand with
+    /// `b ≠ 0`), so only the rational case needs folding.
+    fn from_parts(a: Q, b: Q, d: Q) -> Self {
+        if b.is_zero() || d.is_zero() {
+            QSqrt::rational(a)
+        } else {
+            QSqrt { a, b, d }
+        }
+    }
+
     /// `√d` itself.
     pub fn sqrt(d: Q) -> Self {
         QSqrt::new(Q::zero(), Q::one(), d)
@@ -99,13 +110,13 @@ impl QSqrt {
     /// Sum (both operands must live in the same field Q(√d)).
     pub fn add(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
-        QSqrt::new(&self.a + &o.a, &self.b + &o.b, d)
+        QSqrt::from_parts(&self.a + &o.a, &self.b + &o.b, d)
     }
 
     /// Difference.
     pub fn sub(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
-        QSqrt::new(&self.a - &o.a, &self.b - &o.b, d)
+        QSqrt::from_parts(&self.a - &o.a, &self.b - &o.b, d)
     }
 
     /// Product.
@@ -113,22 +124,22 @@ impl QSqrt {
         let d = self.radicand_with(o);
         let a = &self.a * &o.a + &self.b * &o.b * &d;
         let b = &self.a * &o.b + &self.b * &o.a;
-        QSqrt::new(a, b, d)
+        QSqrt::from_parts(a, b, d)
     }
 
     /// Product with a rational.
     pub fn scale(&self, k: &Q) -> QSqrt {
-        QSqrt::new(&self.a * k, &self.b * k, self.d.clone())
+        QSqrt::from_parts(&self.a * k, &self.b * k, self.d.clone())
     }
 
     /// Negation.
     pub fn neg(&self) -> QSqrt {
-        QSqrt::new(-&self.a, -&self.b, self.d.clone())
+        QSqrt::from_parts(-&self.a, -&self.b, self.d.clone())
     }
 
     /// Conjugate `a - b√d`.
     pub fn conj(&self) -> QSqrt {
-        QSqrt::new(self.a.clone(), -&self.b, self.d.clone())
+        QSqrt::from_parts(self.a.clone(), -&self.b, self.d.clone())
     }
 
     /// Norm `a² - b²d` (a rational).

@@ -56,6 +56,15 @@ fn side_str(s: Option<i32>) -> Value {
 fn method_json(m: &Method) -> Value {
     match m {
         Method::Constant => json!({"method": "constant"}),
+        Method::Pencil(an) => json!({
+            "method": "pencil-discriminant",
+            "scale": an.scale.to_string(),
+            "char_poly": upoly_string(&an.char_poly, L),
+            "delta": upoly_string(&an.delta, L),
+            "secular_poly": upoly_string(&an.secular, L),
+            "test": "gcd(P, delta) = 1 and D(u) = disc_l(F - u delta) of degree 6 and square-free: every real root of D is S at a real critical point",
+            "extreme_multipliers": an.extreme_multipliers.as_ref().map(|(a, b)| vec![alg_json_in(a, L), alg_json_in(b, L)]),
+        }),
         Method::Lambda(an) => {
             let mults: Vec<Value> = an
                 .critical
@@ -221,6 +230,14 @@ pub fn tangent_human(r: &TangentReport) -> String {
     s.push_str("certificate\n");
     let method = match &c.method {
         Method::Constant => "S is constant".to_string(),
+        Method::Pencil(an) => format!(
+            "pencil: F(λ) = det(Ŝ − λÊ) = {}, δ(λ) = {}, P = F'δ − Fδ' = {} (Ŝ, Ê: {}·S, {}·E); gcd(P, δ) = 1 and D = disc_λ(F − uδ) square-free of degree 6, so every real root of D is a critical value at a real point",
+            upoly_string(&an.char_poly, L),
+            upoly_string(&an.delta, L),
+            upoly_string(&an.secular, L),
+            an.scale,
+            an.scale
+        ),
         Method::Lambda(an) => format!(
             "λ-parametrisation: secular polynomial P(λ) = {} (degree {}), δ(λ) = {}",
             upoly_string(&ZPoly::from_q(&an.secular).0, L),

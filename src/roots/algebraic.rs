@@ -79,6 +79,9 @@ impl RealAlg {
         let RealAlg::Root { poly, .. } = self else {
             return self.clone();
         };
+        if super::rational::no_rational_root_sieve(poly) {
+            return self.clone();
+        }
         let l = num_traits::Signed::abs(&poly.lc());
         let complete = 2 * l.bits() + 1;
         let mut c = self.clone();

@@ -25,7 +25,7 @@ pub use isolate::{
     RootInterval, bisect_once, descartes_bounds, isolate_real_roots, isolate_squarefree, refine,
     sign_variations,
 };
-pub use rational::{rational_roots, simplest_rational_in, split_cubic};
+pub use rational::{no_rational_root_sieve, rational_roots, simplest_rational_in, split_cubic};
 pub use report::{RealRoot, RootReport, analyze_roots};
 pub use sturm::{Point, SturmSequence, count_real_roots_in};
 pub use zerodim::{Rur, solve_zero_dim};

@@ -70,6 +70,49 @@ pub fn simplest_rational_in(lo: &Q, hi: &Q) -> Q {
     }
 }
 
+/// A quick proof that `p` has no rational root: a root `a/b` (lowest terms)
+/// has `b | lc(p)`, so for a prime `q ∤ lc(p)` it gives the root `a·b⁻¹` of
+/// `p mod q`; if `p mod q` has no root in `F_q` for one such prime, `p` has
+/// no rational root.  `false` means "unknown" (then a complete test is
+/// needed).  Cost: at most a few thousand word operations.
+///
+/// ```
+/// use quadsect::roots::no_rational_root_sieve;
+/// use quadsect::poly::ZPoly;
+/// assert!(no_rational_root_sieve(&ZPoly::from_i64s(&[-2, 0, 1]))); // x^2 - 2
+/// assert!(!no_rational_root_sieve(&ZPoly::from_i64s(&[-1, 3, -1, 3]))); // (3x - 1)(x^2 + 1)
+/// ```
+pub fn no_rational_root_sieve(p: &ZPoly) -> bool {
+    const PRIMES: [u64; 16] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59];
+    if p.degree().unwrap_or(0) == 0 {
+        return true;
+    }
+    if p.coeffs()[0].is_zero() {
+        return false; // 0 is a root
+    }
+    for q in PRIMES {
+        let c: Vec<u64> = p.coeffs().iter().map(|a| small_mod(a, q)).collect();
+        if c.last() == Some(&0) {
+            continue;
+        }
+        let has_root = (0..q).any(|x| c.iter().rev().fold(0, |acc, &a| (acc * x + a) % q) == 0);
+        if !has_root {
+            return true;
+        }
+    }
+    false
+}
+
+/// `a mod q` in `[0, q)` for a small prime `q`.
+fn small_mod(a: &BigInt, q: u64) -> u64 {
+    let r = a
+        .magnitude()
+        .iter_u32_digits()
+        .rev()
+        .fold(0u64, |acc, d| ((acc << 32) | d as u64) % q);
+    if a.is_negative() && r != 0 { q - r } else { r }
+}
+
 /// All rational roots of a non-zero integer polynomial, increasing.
 ///
 /// ```

@@ -5,7 +5,9 @@ use crate::error::Error;
 use crate::number::Q;
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, NVARS};
-use num_traits::{Signed, Zero};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
 
 /// A polynomial of degree ≤ 2 in x, y, z written as
 /// `q(p) = pᵀ A p + 2 bᵀ p + c` with `A` symmetric.
@@ -122,6 +124,52 @@ impl QuadricForm {
     }
 }
 
+/// A 4×4 integer matrix `[[A, b], [bᵀ, c]]`.
+pub type Mat4 = [[BigInt; 4]; 4];
+
+/// lcm of the denominators of every matrix entry of the forms: the
+/// smallest positive integer `L` with `L·q` integral for each form `q`.
+pub fn common_denominator(forms: &[&QuadricForm]) -> BigInt {
+    let mut l = BigInt::one();
+    for f in forms {
+        let entries = f.a.iter().flatten().chain(f.b.iter()).chain([&f.c]);
+        for q in entries {
+            if !q.denom().is_one() {
+                l = l.lcm(q.denom());
+            }
+        }
+    }
+    l
+}
+
+impl QuadricForm {
+    /// The 4×4 matrix of `l·q`; `l` must clear every denominator (see
+    /// [`common_denominator`]).
+    pub fn int_matrix(&self, l: &BigInt) -> Mat4 {
+        let z = |q: &Q| -> BigInt { (q.numer() * l) / q.denom() };
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| match (i, j) {
+                (3, 3) => z(&self.c),
+                (3, k) | (k, 3) => z(&self.b[k]),
+                (i, j) => z(&self.a[i][j]),
+            })
+        })
+    }
+}
+
+/// Adjugate and determinant of the leading 3×3 block of an integer matrix.
+pub fn adj3_int(m: &Mat4) -> ([[BigInt; 3]; 3], BigInt) {
+    let cof = |i: usize, j: usize| -> BigInt {
+        let (r0, r1) = ((i + 1) % 3, (i + 2) % 3);
+        let (c0, c1) = ((j + 1) % 3, (j + 2) % 3);
+        &m[r0][c0] * &m[r1][c1] - &m[r0][c1] * &m[r1][c0]
+    };
+    // adj[i][j] = cofactor(j, i); the cyclic index choice carries the sign
+    let adj: [[BigInt; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i)));
+    let det: BigInt = (0..3).map(|j| &m[0][j] * &adj[j][0]).sum();
+    (adj, det)
+}
+
 /// Determinant of a 3×3 rational matrix.
 pub fn det3(a: &[[Q; 3]; 3]) -> Q {
     &a[0][0] * (&a[1][1] * &a[2][2] - &a[1][2] * &a[2][1])
@@ -190,13 +238,23 @@ impl Ellipsoid {
         }
         let mut form = QuadricForm::from_poly(p)
             .ok_or_else(|| Error::Internal("degree-2 polynomial without a quadric form".into()))?;
-        let (m1, m2, m3) = form.principal_minors();
+        // integer arithmetic on L·E (L > 0 clears the denominators)
+        let l = common_denominator(&[&form]);
+        let mut m = form.int_matrix(&l);
+        let m1 = m[0][0].clone();
+        let m2 = &m[0][0] * &m[1][1] - &m[0][1] * &m[1][0];
+        let (_, m3) = adj3_int(&m);
         let negated;
         if m1.is_positive() && m2.is_positive() && m3.is_positive() {
             negated = false;
         } else if m1.is_negative() && m2.is_positive() && m3.is_negative() {
             negated = true;
             form = form.neg();
+            for row in m.iter_mut() {
+                for x in row.iter_mut() {
+                    *x = -&*x;
+                }
+            }
         } else if m3.is_zero() {
             return Err(Error::input(
                 "not-an-ellipsoid",
@@ -208,16 +266,13 @@ impl Ellipsoid {
                 "the quadratic part is not definite: a hyperboloid or cone, not an ellipsoid",
             ));
         }
-        let inv = inv3(&form.a)
-            .ok_or_else(|| Error::Internal("definite matrix not invertible".into()))?;
-        let center: [Q; 3] = std::array::from_fn(|i| {
-            let mut s = Q::zero();
-            for j in 0..3 {
-                s -= &inv[i][j] * &form.b[j];
-            }
-            s
-        });
-        let center_value = form.eval(&center);
+        // centre −A⁻¹b = −adj(A)·b / det A, and E(centre) = (c·det − bᵀ adj b)/(L det)
+        let (adj, det) = adj3_int(&m);
+        let ab: [BigInt; 3] =
+            std::array::from_fn(|i| (0..3).map(|j| &adj[i][j] * &m[j][3]).sum::<BigInt>());
+        let center: [Q; 3] = std::array::from_fn(|i| Q::new(-&ab[i], det.clone()));
+        let bab: BigInt = (0..3).map(|i| &m[i][3] * &ab[i]).sum();
+        let center_value = Q::new(&m[3][3] * &det - bab, &l * &det);
         if center_value.is_zero() {
             return Err(Error::input(
                 "not-an-ellipsoid",

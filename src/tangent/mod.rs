@@ -22,6 +22,7 @@ pub mod critical;
 pub mod ellipsoid;
 pub mod examples;
 pub mod judging;
+pub mod pencil;
 pub mod quadric;
 pub mod witness;
 
@@ -83,7 +84,9 @@ impl Containment {
 /// How the critical values were obtained.
 #[derive(Clone, Debug)]
 pub enum Method {
-    /// deg S ≤ 2.
+    /// deg S ≤ 2, generic case: the pencil discriminant.
+    Pencil(pencil::PencilAnalysis),
+    /// deg S ≤ 2: the complete λ-parametrisation.
     Lambda(quadric::LambdaAnalysis),
     /// deg S ≥ 3 with a finite critical set.
     CriticalIdeal(critical::CriticalAnalysis),
@@ -188,6 +191,18 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
     } else if deg <= 2 {
         let form = QuadricForm::from_poly(surface)
             .ok_or_else(|| Error::Internal("quadric form of a degree-2 surface".into()))?;
+        if let Some(pa) = pencil::analyze(&e, &form).map(|p| p.with_extremes()) {
+            let (vals, j) = (pa.values.clone(), pa.judging.clone());
+            return Ok(finish(
+                &e,
+                surface,
+                vals,
+                vec![],
+                j,
+                Method::Pencil(pa),
+                WitnessFinder::Pencil,
+            ));
+        }
         let an = quadric::analyze(&e, &form);
         let real: Vec<RealAlg> = an
             .critical
@@ -264,6 +279,7 @@ fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
 #[derive(Clone, Copy, Debug)]
 enum WitnessFinder {
     None,
+    Pencil,
     Lambda,
     Critical,
     Level,
@@ -389,6 +405,7 @@ fn witness_for(
                 .position(|c| c.real && c.value.cmp_exact(value) == Ordering::Equal)?;
             an.witness(i, e, s, want)
         }
+        (Method::Pencil(an), WitnessFinder::Pencil) => an.witness(e, s, want),
         (Method::CriticalIdeal(an), WitnessFinder::Critical) => an.witness(value, e, s, want),
         (Method::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
         (Method::Constant, _) => {

@@ -6,11 +6,13 @@
 //! approximation of a point of E by solving E = 0 for the coordinate along
 //! which E's gradient is largest (so the discriminant stays positive).
 
-use super::ellipsoid::Ellipsoid;
+use super::ellipsoid::{Ellipsoid, Mat4, common_denominator};
 use crate::number::{Q, QSqrt};
 use crate::poly::QMPoly;
 use crate::poly::mpoly::NVARS;
-use num_traits::{Signed, Zero};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
 
 /// A point of E: coordinates in Q(√d) (at most one irrational coordinate).
 #[derive(Clone, Debug)]
@@ -24,12 +26,58 @@ pub struct WitnessPoint {
 }
 
 /// Exact value of a polynomial in x, y, z at a point of Q(√d)³.
+///
+/// With at most one irrational coordinate `x_k` (the witnesses' shape) the
+/// rational coordinates are substituted first and the univariate rest is
+/// evaluated by Horner's rule in Q(√d): a handful of Q(√d) products instead
+/// of one per monomial factor.
 pub fn eval_qsqrt(p: &QMPoly, pt: &[QSqrt; 3]) -> QSqrt {
-    let d = pt
-        .iter()
-        .find(|c| !c.is_rational())
-        .map(|c| c.d.clone())
+    let irrational: Vec<usize> = (0..3).filter(|&i| !pt[i].is_rational()).collect();
+    let d = irrational
+        .first()
+        .map(|&i| pt[i].d.clone())
         .unwrap_or_else(Q::zero);
+    if irrational.len() > 1 {
+        return eval_qsqrt_terms(p, pt, &d);
+    }
+    let k = irrational.first().copied().unwrap_or(0);
+    // coefficients of p restricted to the line, as a polynomial in x_k
+    let deg = p
+        .terms()
+        .iter()
+        .map(|(e, _)| e[k] as usize)
+        .max()
+        .unwrap_or(0);
+    let mut coef = vec![Q::zero(); deg + 1];
+    let mut powers: [Vec<Q>; 3] = Default::default();
+    for (e, c) in p.terms() {
+        let mut t = c.clone();
+        for v in (0..3).filter(|&v| v != k) {
+            let ev = e[v] as usize;
+            if ev == 0 {
+                continue;
+            }
+            let pw = &mut powers[v];
+            if pw.is_empty() {
+                pw.push(Q::one());
+            }
+            while pw.len() <= ev {
+                let next = pw.last().expect("non-empty") * &pt[v].a;
+                pw.push(next);
+            }
+            t *= &pw[ev];
+        }
+        coef[e[k] as usize] += t;
+    }
+    let x = &pt[k];
+    let mut acc = QSqrt::new(Q::zero(), Q::zero(), d.clone());
+    for c in coef.iter().rev() {
+        acc = acc.mul(x).add(&QSqrt::new(c.clone(), Q::zero(), d.clone()));
+    }
+    acc
+}
+
+fn eval_qsqrt_terms(p: &QMPoly, pt: &[QSqrt; 3], d: &Q) -> QSqrt {
     let mut acc = QSqrt::new(Q::zero(), Q::zero(), d.clone());
     for (e, c) in p.terms() {
         let mut t = QSqrt::new(c.clone(), Q::zero(), d.clone());
@@ -92,27 +140,20 @@ pub fn snap_to_ellipsoid(e: &Ellipsoid, p: &[Q; 3]) -> Option<[QSqrt; 3]> {
 
 /// Tries to turn approximations of a point of E (given for increasing
 /// precision by `approx(bits)`) into a witness on which S has the sign
-/// `want`.  Gives up after 2^12 bits.
+/// `want`.  Gives up after 2^10 bits.
 pub fn find_witness(
     e: &Ellipsoid,
     s: &QMPoly,
     want: i32,
     approx: &dyn Fn(u32) -> Option<[Q; 3]>,
 ) -> Option<WitnessPoint> {
+    let fast = IntegerData::new(e, s);
     let mut bits = 8;
     while bits <= 1024 {
         if let Some(p) = approx(bits + 16)
-            && let Some(pt) = snap_to_ellipsoid(e, &round_point(&p, bits))
+            && let Some(w) = fast.witness(&round_point(&p, bits), Some(want))
         {
-            let v = eval_qsqrt(s, &pt);
-            let sg = v.sign();
-            if sg == want {
-                return Some(WitnessPoint {
-                    coords: pt,
-                    value: v,
-                    sign: sg,
-                });
-            }
+            return Some(w);
         }
         bits *= 2;
     }
@@ -122,19 +163,184 @@ pub fn find_witness(
 /// Replaces each coordinate by the simplest rational within `2^-bits`, so
 /// that witnesses have short coordinates.
 fn round_point(p: &[Q; 3], bits: u32) -> [Q; 3] {
-    let eps = Q::new(1.into(), num_bigint::BigInt::from(1) << bits as usize);
-    std::array::from_fn(|i| crate::roots::simplest_rational_in(&(&p[i] - &eps), &(&p[i] + &eps)))
+    std::array::from_fn(|i| {
+        // (n·2^b ∓ d) / (d·2^b), unreduced: the continued fraction needs no gcd
+        let (n, d) = (p[i].numer(), p[i].denom());
+        let n2 = n << bits as usize;
+        let d2 = d << bits as usize;
+        let lo = Q::new_raw(&n2 - d, d2.clone());
+        let hi = Q::new_raw(&n2 + d, d2);
+        crate::roots::simplest_rational_in(&lo, &hi)
+    })
 }
 
 /// An exact point of E with S evaluated there (for the sampling checks and
 /// the side of S when no critical point is needed).
 pub fn witness_at(e: &Ellipsoid, s: &QMPoly, p: &[Q; 3]) -> Option<WitnessPoint> {
-    let pt = snap_to_ellipsoid(e, p)?;
-    let v = eval_qsqrt(s, &pt);
-    let sign = v.sign();
-    Some(WitnessPoint {
-        coords: pt,
-        value: v,
-        sign,
-    })
+    IntegerData::new(e, s).witness(p, None)
+}
+
+/// E and S in integers, for the inner loop of the witness search: the
+/// snapping of a rational point onto E and the exact sign of S there use
+/// integer arithmetic in Z[√Δ] only (no rational normalisation), and the
+/// exact Q(√d) coordinates and value are built once, for the answer.
+struct IntegerData {
+    /// The 4×4 matrix of L·E (E oriented, so `m[k][k] > 0`).
+    m: Mat4,
+    /// S times the lcm of its denominators: (exponents, integer coefficient).
+    s_terms: Vec<([u32; 3], BigInt)>,
+    /// That lcm (> 0).
+    s_den: BigInt,
+    /// Total degree of S.
+    s_deg: u32,
+}
+
+impl IntegerData {
+    fn new(e: &Ellipsoid, s: &QMPoly) -> IntegerData {
+        let l = common_denominator(&[&e.form]);
+        let m = e.form.int_matrix(&l);
+        let mut s_den = BigInt::one();
+        for (_, c) in s.terms() {
+            if !c.denom().is_one() {
+                s_den = s_den.lcm(c.denom());
+            }
+        }
+        let s_terms = s
+            .terms()
+            .iter()
+            .map(|(ex, c)| ([ex[0], ex[1], ex[2]], c.numer() * (&s_den / c.denom())))
+            .collect();
+        let s_deg = s.total_degree().unwrap_or(0);
+        IntegerData {
+            m,
+            s_terms,
+            s_den,
+            s_deg,
+        }
+    }
+
+    /// Snaps `p` onto E along the axis of the largest gradient component
+    /// (the root nearer to p) and evaluates S there; with `want`, only a
+    /// point where S has that sign is returned.
+    fn witness(&self, p: &[Q; 3], want: Option<i32>) -> Option<WitnessPoint> {
+        let m = &self.m;
+        // p = P / D with a common denominator D
+        let mut dd = BigInt::one();
+        for c in p {
+            if !c.denom().is_one() {
+                dd = dd.lcm(c.denom());
+            }
+        }
+        let pp: [BigInt; 3] = std::array::from_fn(|i| p[i].numer() * (&dd / p[i].denom()));
+        // D·L·(A p + b): pick the axis of the largest |component|
+        let grad: [BigInt; 3] = std::array::from_fn(|i| {
+            (0..3).map(|j| &m[i][j] * &pp[j]).sum::<BigInt>() + &m[i][3] * &dd
+        });
+        let mut k = 0;
+        for i in 1..3 {
+            if grad[i].abs() > grad[k].abs() {
+                k = i;
+            }
+        }
+        let others: Vec<usize> = (0..3).filter(|&j| j != k).collect();
+        // D²·L·E on the line x_k = T/D:  α T² + 2β T + γ
+        let alpha = m[k][k].clone();
+        let beta = &m[k][3] * &dd + others.iter().map(|&j| &m[k][j] * &pp[j]).sum::<BigInt>();
+        let mut gamma = &m[3][3] * &dd * &dd;
+        for &i in &others {
+            gamma += BigInt::from(2) * &dd * &m[i][3] * &pp[i];
+            for &j in &others {
+                gamma += &m[i][j] * &pp[i] * &pp[j];
+            }
+        }
+        let disc = &beta * &beta - &alpha * &gamma;
+        if disc.is_negative() {
+            return None;
+        }
+        // the root nearer to P_k: T = (−β + s√Δ)/α
+        let s: i64 = if (&alpha * &pp[k] + &beta).is_negative() {
+            -1
+        } else {
+            1
+        };
+        // D^deg·S'(x) = Σ C_j T^j  (S' = s_den·S)
+        let n = self.s_terms.iter().map(|(ex, _)| ex[k]).max().unwrap_or(0) as usize;
+        let mut cs = vec![BigInt::zero(); n + 1];
+        for (ex, c) in &self.s_terms {
+            let mut t = c.clone();
+            for &j in &others {
+                if ex[j] > 0 {
+                    t *= num_traits::pow(pp[j].clone(), ex[j] as usize);
+                }
+            }
+            let rest = self.s_deg - ex.iter().sum::<u32>();
+            if rest > 0 {
+                t *= num_traits::pow(dd.clone(), rest as usize);
+            }
+            cs[ex[k] as usize] += t;
+        }
+        // α^n · Σ C_j T^j = Σ C_j N^j α^(n−j), N = −β + s√Δ, in Z[√Δ]
+        let (nr, ni) = (-&beta, BigInt::from(s));
+        let (mut hr, mut hi) = (cs[n].clone(), BigInt::zero());
+        let mut apow = BigInt::one();
+        for j in (0..n).rev() {
+            apow *= &alpha;
+            let r = &hr * &nr + &hi * &ni * &disc;
+            let i = &hr * &ni + &hi * &nr;
+            hr = r + &cs[j] * &apow;
+            hi = i;
+        }
+        let sign = sign_sqrt(&hr, &hi, &disc);
+        if want.is_some_and(|w| w != sign) {
+            return None;
+        }
+        // the exact answer, built once
+        let ad = &alpha * &dd;
+        let mut coords: [QSqrt; 3] = std::array::from_fn(|i| QSqrt::rational(p[i].clone()));
+        coords[k] = QSqrt::new(
+            Q::new(-&beta, ad.clone()),
+            Q::new(BigInt::from(s), ad),
+            Q::from_integer(disc.clone()),
+        )
+        .normalized();
+        // S = h / (s_den · D^deg · α^n)
+        let den = &self.s_den * num_traits::pow(dd.clone(), self.s_deg as usize) * &apow;
+        let value = QSqrt::new(
+            Q::new(hr, den.clone()),
+            Q::new(hi, den),
+            Q::from_integer(disc),
+        )
+        .normalized();
+        debug_assert_eq!(value.sign(), sign);
+        Some(WitnessPoint {
+            coords,
+            value,
+            sign,
+        })
+    }
+}
+
+/// The sign of `a + b√d` (`d ≥ 0`), exactly.
+fn sign_sqrt(a: &BigInt, b: &BigInt, d: &BigInt) -> i32 {
+    let sg = |x: &BigInt| -> i32 {
+        if x.is_positive() {
+            1
+        } else if x.is_negative() {
+            -1
+        } else {
+            0
+        }
+    };
+    let (sa, sb) = (sg(a), if d.is_zero() { 0 } else { sg(b) });
+    if sb == 0 {
+        return sa;
+    }
+    if sa == 0 || sa == sb {
+        return sb;
+    }
+    match (a * a).cmp(&(b * b * d)) {
+        std::cmp::Ordering::Greater => sa,
+        std::cmp::Ordering::Less => sb,
+        std::cmp::Ordering::Equal => 0,
+    }
 }
