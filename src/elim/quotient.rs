@@ -17,6 +17,7 @@ use super::groebner::{GPoly, GV, GroebnerBasis, Mono};
 use crate::number::Q;
 use crate::poly::QPoly;
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Zero};
 use std::collections::HashMap;
 
@@ -139,114 +140,158 @@ pub fn mat_comb(terms: &[(Q, &QMatrix)]) -> QMatrix {
     out
 }
 
-/// Incremental row-echelon form used to detect the first linear dependency
-/// in a sequence of vectors and to express it.
-struct Echelon {
-    /// Reduced vectors with their pivot index and the combination of the
-    /// original vectors they equal.
-    rows: Vec<(usize, Vec<Q>, Vec<Q>)>,
+/// Scales a rational vector to integers: `(v·l, l)` with `l` the lcm of the
+/// denominators.
+fn to_integers(v: &[Q]) -> (Vec<BigInt>, BigInt) {
+    let l = crate::number::denom_lcm(v);
+    let z = v.iter().map(|c| c.numer() * (&l / c.denom())).collect();
+    (z, l)
 }
 
-impl Echelon {
-    fn new() -> Echelon {
-        Echelon { rows: Vec::new() }
-    }
-
-    /// Reduces `v` (the k-th input); returns `Some(coeffs)` with
-    /// `v = Σ coeffs[i] · input_i` when dependent, else records it.
-    fn push(&mut self, v: Vec<Q>, k: usize) -> Option<Vec<Q>> {
-        let mut w = v;
-        // comb: w = input_k − Σ c_i input_i
-        let mut comb = vec![Q::zero(); k + 1];
-        comb[k] = Q::one();
-        for (p, row, rc) in &self.rows {
-            if w[*p].is_zero() {
+/// Fraction-free Gauss–Jordan elimination (Bareiss' rule applied to every
+/// row) on a row-major integer matrix, pivoting on the columns
+/// `0, 1, …` in order and stopping at the first column with no pivot.
+///
+/// After the steps on the pivot columns `c_0 < … < c_(k-1)` (pivot rows
+/// `r_i`), every entry is a `k × k` minor of the input, so each division by
+/// the previous pivot is exact, and each later column `j` satisfies
+/// `column_j = Σ (A[r_i][j] / D) · column_(c_i)` restricted to the pivot
+/// rows, with `D` the last pivot (the determinant of the pivot block).
+/// Returns the pivot rows, `D`, and the index of the first column without
+/// a pivot (`None` when every column in `0..stop` has one).
+fn gauss_jordan_ff(
+    a: &mut [Vec<BigInt>],
+    stop: usize,
+) -> Result<(Vec<usize>, BigInt, Option<usize>), crate::error::Error> {
+    let rows = a.len();
+    let width = a.first().map(|r| r.len()).unwrap_or(0);
+    let mut used = vec![false; rows];
+    let mut pivots = Vec::new();
+    let mut prev = BigInt::one();
+    for c in 0..stop {
+        let Some(r) = (0..rows).find(|&i| !used[i] && !a[i][c].is_zero()) else {
+            return Ok((pivots, prev, Some(c)));
+        };
+        used[r] = true;
+        pivots.push(r);
+        let prow = a[r].clone();
+        let p = &prow[c];
+        for (i, row) in a.iter_mut().enumerate() {
+            if i == r {
                 continue;
             }
-            let f = w[*p].clone() / &row[*p];
-            for (wi, ri) in w.iter_mut().zip(row.iter()) {
-                if !ri.is_zero() {
-                    *wi -= &f * ri;
+            let f = std::mem::take(&mut row[c]);
+            for j in c + 1..width {
+                let mut t = p * &row[j];
+                if !f.is_zero() && !prow[j].is_zero() {
+                    t -= &f * &prow[j];
                 }
-            }
-            for (ci, rci) in comb.iter_mut().zip(rc.iter()) {
-                if !rci.is_zero() {
-                    *ci -= &f * rci;
+                if !prev.is_one() && !t.is_zero() {
+                    let (q, rem) = t.div_rem(&prev);
+                    if !rem.is_zero() {
+                        return Err(crate::error::Error::Internal(
+                            "fraction-free elimination: inexact division".into(),
+                        ));
+                    }
+                    t = q;
                 }
+                row[j] = t;
             }
         }
-        match w.iter().position(|x| !x.is_zero()) {
-            Some(p) => {
-                self.rows.push((p, w, comb));
-                None
-            }
-            None => {
-                // 0 = input_k + Σ comb_i input_i  (comb[k] = 1)
-                Some(comb[..k].iter().map(|c| -c).collect())
-            }
-        }
+        prev = p.clone();
     }
+    Ok((pivots, prev, None))
 }
+
+/// A minimal polynomial and, when the Krylov basis is complete, the
+/// coordinates of the right-hand sides in it (see [`krylov_shape`]).
+pub type KrylovShape = (QPoly, Option<Vec<Vec<Q>>>);
 
 /// The minimal polynomial of `m` relative to `v` (the monic generator of
-/// the polynomials `p` with `p(m) v = 0`), and the Krylov vectors
-/// `v, m v, …, m^(d−1) v`.
-pub fn krylov_minpoly(m: &QMatrix, v: &[Q]) -> (QPoly, Vec<Vec<Q>>) {
-    let mut ech = Echelon::new();
-    let mut vecs: Vec<Vec<Q>> = Vec::new();
-    let mut cur = v.to_vec();
-    for k in 0..=v.len() {
-        if let Some(coeffs) = ech.push(cur.clone(), k) {
-            // m^k v = Σ coeffs_i m^i v  →  T^k − Σ coeffs_i T^i
-            let mut c: Vec<Q> = coeffs.iter().map(|x| -x).collect();
-            c.push(Q::one());
-            return (QPoly::new(c), vecs);
-        }
-        vecs.push(cur.clone());
-        cur = mat_vec(m, &cur);
-    }
-    unreachable!("a Krylov sequence in dimension n is dependent after n steps")
-}
-
-/// Solves `[cols] c = rhs` for an invertible square system given by
-/// columns; `None` if singular.
-pub fn solve_columns(cols: &[Vec<Q>], rhs: &[Vec<Q>]) -> Option<Vec<Vec<Q>>> {
-    let n = cols.len();
-    // augmented row-major matrix
-    let mut a: Vec<Vec<Q>> = (0..n)
-        .map(|i| {
-            let mut row: Vec<Q> = cols.iter().map(|c| c[i].clone()).collect();
-            row.extend(rhs.iter().map(|r| r[i].clone()));
-            row
-        })
+/// the polynomials `p` with `p(m) v = 0`) and, when its degree is the full
+/// dimension `n` (so `v, m v, …, m^(n−1) v` is a basis), the coordinates of
+/// each `rhs` vector in that basis (`rhs_j = Σ_i sol_j[i] · mⁱ v`).
+///
+/// Everything runs over the integers: with `m = M / L` (`M` integral) the
+/// Krylov vectors `Mᵏ V` are integral, one fraction-free Gauss–Jordan pass
+/// finds the first dependency and solves the right-hand sides, and the
+/// powers of `L` are put back at the end.
+pub fn krylov_shape(
+    m: &QMatrix,
+    v: &[Q],
+    rhs: &[Vec<Q>],
+) -> Result<KrylovShape, crate::error::Error> {
+    let n = v.len();
+    let l = crate::number::denom_lcm(m.iter().flatten());
+    let mi: Vec<Vec<BigInt>> = m
+        .iter()
+        .map(|col| col.iter().map(|c| c.numer() * (&l / c.denom())).collect())
         .collect();
-    let w = n + rhs.len();
-    for col in 0..n {
-        let p = (col..n).find(|&i| !a[i][col].is_zero())?;
-        a.swap(col, p);
-        let inv = Q::one() / &a[col][col];
-        for j in col..w {
-            if !a[col][j].is_zero() {
-                a[col][j] = &a[col][j] * &inv;
+    let (v0, lv) = to_integers(v);
+    // Krylov vectors w_0 … w_n (integral)
+    let mut ws: Vec<Vec<BigInt>> = Vec::with_capacity(n + 1);
+    ws.push(v0);
+    for _ in 0..n {
+        let cur = ws.last().expect("non-empty");
+        let mut out = vec![BigInt::zero(); n];
+        for (j, cj) in cur.iter().enumerate() {
+            if cj.is_zero() {
+                continue;
             }
-        }
-        let prow = a[col].clone();
-        for (i, row) in a.iter_mut().enumerate() {
-            if i != col && !row[col].is_zero() {
-                let f = row[col].clone();
-                for j in col..w {
-                    if !prow[j].is_zero() {
-                        row[j] -= &f * &prow[j];
-                    }
+            for (o, mij) in out.iter_mut().zip(mi[j].iter()) {
+                if !mij.is_zero() {
+                    *o += mij * cj;
                 }
             }
         }
+        ws.push(out);
     }
-    Some(
-        (0..rhs.len())
-            .map(|k| (0..n).map(|i| a[i][n + k].clone()).collect())
-            .collect(),
-    )
+    let scaled: Vec<(Vec<BigInt>, BigInt)> = rhs.iter().map(|r| to_integers(r)).collect();
+    let mut a: Vec<Vec<BigInt>> = (0..n)
+        .map(|i| {
+            ws.iter()
+                .map(|w| w[i].clone())
+                .chain(scaled.iter().map(|(r, _)| r[i].clone()))
+                .collect()
+        })
+        .collect();
+    let (pivots, d, dep) = gauss_jordan_ff(&mut a, n + 1)?;
+    let k = dep.ok_or_else(|| {
+        crate::error::Error::Internal("n + 1 Krylov vectors in dimension n are independent".into())
+    })?;
+    // w_k = Σ c_i w_i with c_i = A[r_i][k] / D;  mᵏ v = Σ c_i L^(i−k) mⁱ v
+    let lq = Q::from_integer(l.clone());
+    let mut coeffs = Vec::with_capacity(k + 1);
+    let mut lpow = Q::one(); // L^(i−k), built from i = k − 1 down
+    let mut low: Vec<Q> = Vec::with_capacity(k);
+    for i in (0..k).rev() {
+        lpow = &lpow / &lq;
+        low.push(-Q::new(a[pivots[i]][k].clone(), d.clone()) * &lpow);
+    }
+    low.reverse();
+    coeffs.extend(low);
+    coeffs.push(Q::one());
+    let minpoly = QPoly::new(coeffs);
+    if k < n {
+        return Ok((minpoly, None));
+    }
+    // rhs_j · l_j = Σ b_i w_i with b_i = A[r_i][n+1+j] / D;  w_i = Lⁱ mⁱ (lv·v)
+    let sol = scaled
+        .iter()
+        .enumerate()
+        .map(|(j, (_, lj))| {
+            let dl = &d * lj;
+            let mut lp = lv.clone();
+            (0..n)
+                .map(|i| {
+                    let c = Q::new(&a[pivots[i]][n + 1 + j] * &lp, dl.clone());
+                    lp *= &l;
+                    c
+                })
+                .collect()
+        })
+        .collect();
+    Ok((minpoly, Some(sol)))
 }
 
 #[cfg(test)]
@@ -264,8 +309,79 @@ mod tests {
         let q = Quotient::new(g).unwrap();
         assert_eq!(q.dim(), 4); // (±1, ±2), (±2, ±1)
         let mx = q.var_matrix(0);
-        let (mp, _) = krylov_minpoly(&mx, &q.one());
+        let (mp, _) = krylov_shape(&mx, &q.one(), &[]).unwrap();
         // x ∈ {1, 2, -1, -2}: (x²-1)(x²-4) = x⁴ - 5x² + 4
         assert_eq!(mp, QPoly::new(vec![qi(4), qi(0), qi(-5), qi(0), qi(1)]));
+    }
+
+    /// `Σ cᵢ mⁱ v` for a column-stored rational matrix.
+    fn krylov_combination(m: &QMatrix, v: &[Q], c: &[Q]) -> Vec<Q> {
+        let mut acc = vec![Q::zero(); v.len()];
+        let mut cur = v.to_vec();
+        for ci in c {
+            for (a, x) in acc.iter_mut().zip(cur.iter()) {
+                *a += ci * x;
+            }
+            cur = mat_vec(m, &cur);
+        }
+        acc
+    }
+
+    #[test]
+    fn krylov_shape_solves_rational_systems() {
+        // a deterministic rational 5×5 matrix, a start vector with
+        // denominators, and two right-hand sides
+        let mut seed = 12345u64;
+        let mut next = |lo: i64, hi: i64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            lo + ((seed >> 33) % ((hi - lo + 1) as u64)) as i64
+        };
+        let n = 5;
+        let m: QMatrix = (0..n)
+            .map(|_| {
+                (0..n)
+                    .map(|_| Q::new(next(-9, 9).into(), next(1, 4).into()))
+                    .collect()
+            })
+            .collect();
+        let v: Vec<Q> = (0..n)
+            .map(|_| Q::new(next(-5, 5).into(), next(1, 3).into()))
+            .collect();
+        let rhs: Vec<Vec<Q>> = (0..2)
+            .map(|_| {
+                (0..n)
+                    .map(|_| Q::new(next(-7, 7).into(), next(1, 6).into()))
+                    .collect()
+            })
+            .collect();
+        let (mp, sol) = krylov_shape(&m, &v, &rhs).unwrap();
+        // mp(m) v = 0
+        assert!(
+            krylov_combination(&m, &v, mp.coeffs())
+                .iter()
+                .all(|x| x.is_zero())
+        );
+        let sol = sol.expect("a random start vector is cyclic");
+        assert_eq!(mp.degree(), Some(n));
+        for (r, c) in rhs.iter().zip(sol.iter()) {
+            assert_eq!(&krylov_combination(&m, &v, c), r);
+        }
+    }
+
+    #[test]
+    fn krylov_shape_finds_early_dependencies() {
+        // diag(2, 2, 3): the minimal polynomial relative to (1, 1, 1) is
+        // (T − 2)(T − 3), of degree 2 < 3, so no shape
+        let d = |i: usize, x: i64| -> Vec<Q> {
+            let mut c = vec![Q::zero(); 3];
+            c[i] = qi(x);
+            c
+        };
+        let m: QMatrix = vec![d(0, 2), d(1, 2), d(2, 3)];
+        let (mp, sol) = krylov_shape(&m, &[qi(1), qi(1), qi(1)], &[vec![qi(1); 3]]).unwrap();
+        assert_eq!(mp, QPoly::new(vec![qi(6), qi(-5), qi(1)]));
+        assert!(sol.is_none());
     }
 }

@@ -153,6 +153,30 @@ pub fn values_at(
     num: &QPoly,
     den: &QPoly,
 ) -> Vec<Option<RealAlg>> {
+    values_inner(phi, alphas, num, den, None)
+}
+
+/// [`values_at`] when a square-free polynomial `values` vanishing at every
+/// `num(α)/den(α)` (α a root of `phi`) is already known, e.g. a minimal
+/// polynomial from a quotient algebra.  The values are identified by
+/// interval evaluation against its isolated roots, as in [`values_at`].
+pub fn values_with(
+    phi: &ZPoly,
+    alphas: &[RealAlg],
+    num: &QPoly,
+    den: &QPoly,
+    values: &ZPoly,
+) -> Vec<Option<RealAlg>> {
+    values_inner(phi, alphas, num, den, Some(values))
+}
+
+fn values_inner(
+    phi: &ZPoly,
+    alphas: &[RealAlg],
+    num: &QPoly,
+    den: &QPoly,
+    known: Option<&ZPoly>,
+) -> Vec<Option<RealAlg>> {
     let mut r: Option<(ZPoly, Vec<RootInterval>)> = None;
     let mut zs: Option<((ZPoly, Q), (ZPoly, Q))> = None;
     alphas
@@ -165,7 +189,10 @@ pub fn values_at(
                 return Some(RealAlg::Rational(eval_q(num, a) / eval_q(den, a)));
             }
             let (rp, ivs) = r.get_or_insert_with(|| {
-                let rp = value_polynomial(phi, num, den);
+                let rp = match known {
+                    Some(v) => v.clone(),
+                    None => value_polynomial(phi, num, den),
+                };
                 let ivs = isolate_squarefree(&rp);
                 (rp, ivs)
             });

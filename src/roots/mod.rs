@@ -19,7 +19,7 @@ mod zerodim;
 pub use algebraic::{RealAlg, has_root_in_open, separate};
 pub use enclose::{
     enclose_mean_value, eval_interval, eval_q, eval_ratio_interval, eval_xyz, ratio_enclosure,
-    value_at, value_polynomial, values_at,
+    value_at, value_polynomial, values_at, values_with,
 };
 pub use isolate::{
     RootInterval, bisect_once, descartes_bounds, isolate_real_roots, isolate_squarefree, refine,

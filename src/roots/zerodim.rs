@@ -5,7 +5,7 @@
 
 use super::{RealAlg, eval_q};
 use crate::elim::groebner::{GPoly, MonoOrder, groebner};
-use crate::elim::quotient::{Quotient, krylov_minpoly, mat_comb, solve_columns};
+use crate::elim::quotient::{QMatrix, Quotient, krylov_shape, mat_comb, mat_vec};
 use crate::error::Error;
 use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
@@ -29,6 +29,11 @@ pub struct Rur {
     pub coords: [QPoly; 3],
     /// Extra polynomials (e.g. S) as polynomials in `t`.
     pub extra: Vec<QPoly>,
+    /// For each extra polynomial `p`, the square-free integer polynomial
+    /// whose roots are exactly the values `p(ξ)` at the zeros ξ (complex
+    /// ones included): the minimal polynomial of multiplication by `p` on
+    /// the (radical) quotient algebra.
+    pub extra_values: Vec<ZPoly>,
     /// The real roots of `f`, increasing: one per real zero.
     pub real_roots: Vec<RealAlg>,
     /// True when the ideal had to be made radical.
@@ -55,6 +60,7 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
             f: ZPoly::constant(1.into()),
             coords: [QPoly::zero(), QPoly::zero(), QPoly::zero()],
             extra: extra.iter().map(|_| QPoly::zero()).collect(),
+            extra_values: extra.iter().map(|_| ZPoly::constant(1.into())).collect(),
             real_roots: vec![],
             made_radical: false,
         }));
@@ -69,15 +75,16 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
     // minimal polynomials of x, y, z must be square-free.
     let mut made_radical = false;
     let mut mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
+    let mut rhs = shape_targets(&quo, &mats, extra);
     let mut sq_add: Vec<QMPoly> = Vec::new();
     let mut cyclic = false;
     let mut ready = None;
     for (a, b) in [(1i64, 1i64), (2, -1), (-1, 3)] {
         let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
-        let (mp, vecs) = krylov_minpoly(&mt, &quo.one());
-        if mp.degree() == Some(quo.dim()) {
+        let (mp, sol) = krylov_shape(&mt, &quo.one(), &rhs)?;
+        if let Some(sol) = sol {
             cyclic = true;
-            ready = Some(([qi(1), qi(a), qi(b)], mp.clone(), vecs));
+            ready = Some(([qi(1), qi(a), qi(b)], mp.clone(), sol));
             let (mz, _) = ZPoly::from_q(&mp);
             let sq = mz.squarefree_part();
             if sq.degree() != mz.degree() {
@@ -91,7 +98,7 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
     }
     if !cyclic {
         for (v, m) in mats.iter().enumerate() {
-            let (mp, _) = krylov_minpoly(m, &quo.one());
+            let (mp, _) = krylov_shape(m, &quo.one(), &[])?;
             let (mz, _) = ZPoly::from_q(&mp);
             let sq = mz.squarefree_part();
             if sq.degree() != mz.degree() {
@@ -109,10 +116,13 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
             Error::Internal("radical of a zero-dimensional ideal is not zero-dimensional".into())
         })?;
         mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
+        rhs = shape_targets(&quo, &mats, extra);
     }
     let d = quo.dim();
-    // a separating linear form
-    let candidates: [(i64, i64); 12] = [
+    // a separating linear form: one whose minimal polynomial has degree
+    // dim A; the shape (x, y, z and the extras as polynomials in t) comes
+    // with it
+    let candidates = [
         (1, 1),
         (2, -1),
         (-1, 3),
@@ -125,7 +135,9 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         (3, 5),
         (5, -7),
         (7, 11),
-    ];
+    ]
+    .into_iter()
+    .chain((-20i64..=20).flat_map(|a| (-20i64..=20).map(move |b| (a, b))));
     let one = quo.one();
     let mut chosen = ready;
     for (a, b) in candidates {
@@ -133,43 +145,20 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
             break;
         }
         let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
-        let (mp, vecs) = krylov_minpoly(&mt, &one);
-        if mp.degree() == Some(d) {
-            chosen = Some(([qi(1), qi(a), qi(b)], mp, vecs));
-            break;
+        if let (mp, Some(sol)) = krylov_shape(&mt, &one, &rhs)? {
+            chosen = Some(([qi(1), qi(a), qi(b)], mp, sol));
         }
     }
-    let (form, mp, vecs) = match chosen {
-        Some(c) => c,
-        None => {
-            // deterministic wider search
-            let mut found = None;
-            'outer: for a in -20i64..=20 {
-                for b in -20i64..=20 {
-                    let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
-                    let (mp, vecs) = krylov_minpoly(&mt, &one);
-                    if mp.degree() == Some(d) {
-                        found = Some(([qi(1), qi(a), qi(b)], mp, vecs));
-                        break 'outer;
-                    }
-                }
-            }
-            found.ok_or_else(|| Error::Internal("no separating linear form found".into()))?
-        }
-    };
-    // shape: coordinates of x, y, z, extras in the basis 1, t, …, t^(d-1)
-    let mut rhs: Vec<Vec<Q>> = (0..3)
-        .map(|v| crate::elim::quotient::mat_vec(&mats[v], &one))
-        .collect();
-    for p in extra {
-        rhs.push(nf_rational(&quo, p));
-    }
-    let sol = solve_columns(&vecs, &rhs).ok_or_else(|| {
-        Error::Internal("Krylov basis of a separating element is singular".into())
-    })?;
+    let (form, mp, sol) =
+        chosen.ok_or_else(|| Error::Internal("no separating linear form found".into()))?;
+    debug_assert_eq!(mp.degree(), Some(d));
     let polys: Vec<QPoly> = sol.into_iter().map(QPoly::new).collect();
     let (f, _) = ZPoly::from_q(&mp);
     let real_roots = RealAlg::roots_of(&f);
+    let extra_values = extra
+        .iter()
+        .map(|p| value_minpoly(&quo, p))
+        .collect::<Result<Vec<_>, _>>()?;
     Ok(Some(Rur {
         multiplicity_dim,
         points: d,
@@ -177,9 +166,35 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         f,
         coords: [polys[0].clone(), polys[1].clone(), polys[2].clone()],
         extra: polys[3..].to_vec(),
+        extra_values,
         real_roots,
         made_radical,
     }))
+}
+
+/// The vectors whose shape is wanted: the coordinates x, y, z and the
+/// extras, in the monomial basis of the quotient.
+fn shape_targets(quo: &Quotient, mats: &[QMatrix; 3], extra: &[QMPoly]) -> Vec<Vec<Q>> {
+    let one = quo.one();
+    let mut rhs: Vec<Vec<Q>> = mats.iter().map(|m| mat_vec(m, &one)).collect();
+    rhs.extend(extra.iter().map(|p| nf_rational(quo, p)));
+    rhs
+}
+
+/// The minimal polynomial of multiplication by `p` on the radical quotient
+/// `A`: `∏ (u − v)` over the distinct values `v = p(ξ)` at the zeros, as a
+/// primitive square-free integer polynomial.  (Its Krylov sequence starts
+/// at 1, which generates `A` as a module over itself, so the relative
+/// minimal polynomial is the full one.)
+fn value_minpoly(quo: &Quotient, p: &QMPoly) -> Result<ZPoly, Error> {
+    if p.is_zero() {
+        return Ok(ZPoly::from_i64s(&[0, 1]));
+    }
+    let (z, k) = p.to_primitive_z();
+    let g = GPoly::from_zmpoly_exact(&z, &SLOTS, MonoOrder::GrevLex);
+    let m = mat_comb(&[(k, &quo.mult_matrix(&g))]);
+    let (mp, _) = krylov_shape(&m, &quo.one(), &[])?;
+    Ok(ZPoly::from_q(&mp).0.squarefree_part())
 }
 
 /// Normal-form coordinates of a rational polynomial.
@@ -198,5 +213,70 @@ impl Rur {
     pub fn approx_point(&self, i: usize, bits: u32) -> [Q; 3] {
         let t = self.real_roots[i].to_rational_approx(bits);
         std::array::from_fn(|k| eval_q(&self.coords[k], &t))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::poly::parse_poly;
+    use crate::roots::value_polynomial;
+
+    fn check(gens: &[&str], extra: &str) -> Rur {
+        let gens: Vec<QMPoly> = gens.iter().map(|g| parse_poly(g).unwrap()).collect();
+        let p = parse_poly(extra).unwrap();
+        let rur = solve_zero_dim(&gens, std::slice::from_ref(&p))
+            .unwrap()
+            .unwrap();
+        // the quotient's minimal polynomial agrees with the resultant
+        // Res_t(f(t), u − p(t)) made square-free
+        let by_resultant = value_polynomial(&rur.f, &rur.extra[0], &QPoly::constant(qi(1)));
+        assert_eq!(rur.extra_values[0], by_resultant);
+        // and the shape really parametrises the zeros: the generators vanish
+        // on (x(t), y(t), z(t)) modulo f
+        let fq = rur.f.to_q();
+        for g in &gens {
+            let mut acc = QPoly::zero();
+            for (e, c) in g.terms() {
+                let mut t = QPoly::constant(c.clone());
+                for (k, &v) in SLOTS.iter().enumerate() {
+                    for _ in 0..e[v] {
+                        t = (&t * &rur.coords[k]).rem(&fq);
+                    }
+                }
+                acc = &acc + &t;
+            }
+            assert!(
+                acc.rem(&fq).is_zero(),
+                "generator does not vanish on the shape"
+            );
+        }
+        rur
+    }
+
+    #[test]
+    fn shape_and_values_of_a_sphere_and_two_planes() {
+        // x² + y² + z² = 9, x = y, z = 1: two points (±2, ±2, 1)
+        let r = check(&["x^2+y^2+z^2-9", "x-y", "z-1"], "x + 3z");
+        assert_eq!(r.points, 2);
+        assert_eq!(r.real_roots.len(), 2);
+    }
+
+    #[test]
+    fn shape_and_values_of_a_critical_system() {
+        // critical points of a cubic on an ellipsoid: 3 equations
+        let r = check(
+            &["x^2+2y^2+3z^2-6", "x*y - z", "y^2 - x*z + 1"],
+            "x*y*z + x^2",
+        );
+        assert!(r.points > 0);
+    }
+
+    #[test]
+    fn repeated_values_give_a_smaller_value_polynomial() {
+        // four points (±1, ±2, 0) and (±2, ±1, 0): p = x² + y² is 5 at all
+        let r = check(&["x^2+y^2-5", "x*y-2", "z"], "x^2+y^2");
+        assert_eq!(r.points, 4);
+        assert_eq!(r.extra_values[0], ZPoly::from_i64s(&[-5, 1]));
     }
 }

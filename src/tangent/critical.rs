@@ -27,9 +27,7 @@ use crate::error::Error;
 use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, U, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
-use crate::roots::{
-    RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, value_polynomial, values_at,
-};
+use crate::roots::{RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_with};
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
@@ -122,8 +120,8 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
             }
             let value_poly = rur.extra[0].clone();
             let one = QPoly::constant(Q::one());
-            let judging = value_polynomial(&rur.f, &value_poly, &one);
-            let values = values_at(&rur.f, &rur.real_roots, &value_poly, &one)
+            let judging = rur.extra_values[0].clone();
+            let values = values_with(&rur.f, &rur.real_roots, &value_poly, &one, &judging)
                 .into_iter()
                 .map(|v| v.expect("denominator 1"))
                 .collect();
