@@ -66,6 +66,32 @@ fn check_isolation(p: &ZPoly) {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 200, .. ProptestConfig::default() })]
 
+    /// Interval enclosures are true enclosures: at random exact points of
+    /// a random interval the value of p (and of p/q where q keeps its sign)
+    /// lies inside, and a point interval gives the exact value.
+    #[test]
+    fn enclosures_contain_exact_values(p in zpoly(7, 40), q in zpoly(3, 8),
+                                       a in (-400i64..400, 1i64..50), w in (0i64..300, 1i64..90),
+                                       ts in prop::collection::vec(0i64..=64, 1..6)) {
+        use quadsect::roots::{enclose_mean_value, ratio_enclosure};
+        let a = Q::new(a.0.into(), a.1.into());
+        let b = &a + Q::new(w.0.into(), w.1.into());
+        let (lo, hi) = enclose_mean_value(&p, &a, &b);
+        let (qz, qk) = (q.clone(), Q::new(3.into(), (-7).into()));
+        let ratio = ratio_enclosure(&(p.clone(), Q::new(5.into(), 2.into())), &(qz.clone(), qk.clone()), &a, &b);
+        for t in ts {
+            let x = &a + (&b - &a) * Q::new(t.into(), 64.into());
+            let v = p.eval_q(&x);
+            prop_assert!(lo <= v && v <= hi, "p({}) = {} outside [{}, {}]", x, v, lo, hi);
+            if let Some((rl, rh)) = &ratio {
+                let r = v * Q::new(5.into(), 2.into()) / (qz.eval_q(&x) * &qk);
+                prop_assert!(rl <= &r && &r <= rh, "ratio outside its enclosure");
+            }
+        }
+        let (el, eh) = enclose_mean_value(&p, &a, &a);
+        prop_assert!(el == p.eval_q(&a) && eh == el);
+    }
+
     /// Sturm count == number of VCA intervals == count via the square-free
     /// factorisation (per-factor isolation in `analyze_roots`).
     #[test]

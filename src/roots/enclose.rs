@@ -14,7 +14,9 @@ use crate::elim::resultant_mpoly;
 use crate::number::Q;
 use crate::poly::mpoly::{MPoly, NVARS, T, U};
 use crate::poly::{QPoly, ZPoly};
-use num_traits::{Signed, Zero};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
 
 /// The smallest and largest of four rationals (interval products).
 fn min_max(c: [Q; 4]) -> (Q, Q) {
@@ -45,37 +47,104 @@ pub fn eval_interval(p: &QPoly, a: &Q, b: &Q) -> (Q, Q) {
     (lo, hi)
 }
 
-/// An enclosure of `p(x)` for all `x ∈ [a, b]` by the mean-value form
-/// around the midpoint `m`: `p(x) ∈ p(m) ± r·Σ i|pᵢ|Rⁱ⁻¹` with `r = (b − a)/2`
-/// and `R = 2^e ≥ max(|a|, |b|)`.  One exact evaluation and one integer sum:
-/// much cheaper than interval Horner, and as tight as the interval shrinks.
-pub fn enclose_mean_value(p: &ZPoly, a: &Q, b: &Q) -> (Q, Q) {
-    let two = Q::from_integer(2.into());
-    let m = (a + b) / &two;
-    let r = (b - a) / &two;
-    let c = p.eval_q(&m);
+/// An unreduced rational `n / d` with `d > 0`: enclosures are built from
+/// products and sums only, and reduced (or rounded) once at the end.
+#[derive(Clone, Debug)]
+struct Frac(BigInt, BigInt);
+
+impl Frac {
+    fn of(q: &Q) -> Frac {
+        Frac(q.numer().clone(), q.denom().clone())
+    }
+    fn add(&self, o: &Frac) -> Frac {
+        if self.1 == o.1 {
+            return Frac(&self.0 + &o.0, self.1.clone());
+        }
+        Frac(&self.0 * &o.1 + &o.0 * &self.1, &self.1 * &o.1)
+    }
+    fn neg(&self) -> Frac {
+        Frac(-&self.0, self.1.clone())
+    }
+    fn mul(&self, o: &Frac) -> Frac {
+        Frac(&self.0 * &o.0, &self.1 * &o.1)
+    }
+    /// `self / o` for `o != 0`.
+    fn div(&self, o: &Frac) -> Frac {
+        let (n, d) = (&self.0 * &o.1, &self.1 * &o.0);
+        if d.is_negative() {
+            Frac(-n, -d)
+        } else {
+            Frac(n, d)
+        }
+    }
+    fn cmp(&self, o: &Frac) -> std::cmp::Ordering {
+        (&self.0 * &o.1).cmp(&(&o.0 * &self.1))
+    }
+    fn sign(&self) -> i32 {
+        crate::number::sign_z(&self.0)
+    }
+}
+
+/// The mean-value enclosure of `p` on `[a, b]` as (centre, radius):
+/// `p(x) ∈ p(m) ± r·Σ i|pᵢ|Rⁱ⁻¹` with `m` the midpoint, `r = (b − a)/2` and
+/// `R = 2^e ≥ max(|a|, |b|)`.
+fn mean_value_ball(p: &ZPoly, a: &Q, b: &Q) -> (Frac, Frac) {
+    let (an, ad, bn, bd) = (a.numer(), a.denom(), b.numer(), b.denom());
+    let md: BigInt = ad * bd * 2;
+    let mn = an * bd + bn * ad;
+    let rn = bn * ad - an * bd;
+    let (cn, cd) = p.eval_homogeneous(&mn, &md);
     let big = if a.abs() > b.abs() { a.abs() } else { b.abs() };
     let e = if big.is_zero() {
         0
     } else {
         crate::number::floor_log2_q(&big) + 1
     };
-    // Σ i|p_i| 2^(e(i−1))
-    let mut bound = Q::zero();
+    // Σ i|p_i| 2^(e(i−1)) = bound / 2^sh, in integers
+    let deg = p.degree().unwrap_or(0) as i64;
+    let sh = if e < 0 {
+        (-e * (deg - 1).max(0)) as usize
+    } else {
+        0
+    };
+    let mut bound = BigInt::zero();
     for (i, pi) in p.coeffs().iter().enumerate().skip(1) {
-        if pi.is_zero() {
-            continue;
+        if !pi.is_zero() {
+            let k = (e * (i as i64 - 1) + sh as i64) as usize;
+            bound += (pi.abs() * BigInt::from(i)) << k;
         }
-        let k = e * (i as i64 - 1);
-        let pow = if k >= 0 {
-            Q::from_integer(num_bigint::BigInt::from(1) << (k as usize))
-        } else {
-            Q::new(1.into(), num_bigint::BigInt::from(1) << ((-k) as usize))
-        };
-        bound += Q::from_integer(pi.abs() * num_bigint::BigInt::from(i)) * pow;
     }
-    let w = bound * r;
-    (&c - &w, c + w)
+    (Frac(cn, cd), Frac(bound * rn, md << sh))
+}
+
+/// Rounds `[lo, hi]` outward to dyadic rationals a little finer than its
+/// width (2⁻²⁴ of it), so the endpoints stay small; exact when `lo = hi`.
+fn round_outward(lo: &Frac, hi: &Frac) -> (Q, Q) {
+    let w = hi.add(&lo.neg());
+    if w.0.is_zero() {
+        let v = Q::new(lo.0.clone(), lo.1.clone());
+        return (v.clone(), v);
+    }
+    let prec = (24 + w.1.bits() as i64 - w.0.bits() as i64).max(0) as usize;
+    let fl = (&lo.0 << prec).div_floor(&lo.1);
+    let ce = -((-(&hi.0 << prec)).div_floor(&hi.1));
+    (dyadic(fl, prec), dyadic(ce, prec))
+}
+
+/// `n / 2^k` in lowest terms (no gcd needed: only powers of two cancel).
+fn dyadic(n: BigInt, k: usize) -> Q {
+    let tz = n.trailing_zeros().map_or(k, |t| (t as usize).min(k));
+    Q::new_raw(n >> tz, BigInt::one() << (k - tz))
+}
+
+/// An enclosure of `p(x)` for all `x ∈ [a, b]` by the mean-value form
+/// around the midpoint `m`: `p(x) ∈ p(m) ± r·Σ i|pᵢ|Rⁱ⁻¹` with `r = (b − a)/2`
+/// and `R = 2^e ≥ max(|a|, |b|)`.  One exact evaluation and one integer sum
+/// (no gcd: the endpoints are rounded outward to dyadic rationals), much
+/// cheaper than interval Horner, and as tight as the interval shrinks.
+pub fn enclose_mean_value(p: &ZPoly, a: &Q, b: &Q) -> (Q, Q) {
+    let (c, r) = mean_value_ball(p, a, b);
+    round_outward(&c.add(&r.neg()), &c.add(&r))
 }
 
 /// Enclosure of `num(x)/den(x)` on `[a, b]`, or `None` when the enclosure of
@@ -86,23 +155,41 @@ pub fn eval_ratio_interval(num: &QPoly, den: &QPoly, a: &Q, b: &Q) -> Option<(Q,
     ratio_enclosure(&n, &d, a, b)
 }
 
+/// `k·P` enclosed on `[a, b]` as unreduced endpoints (low, high).
+fn scaled_ends(p: &(ZPoly, Q), a: &Q, b: &Q) -> (Frac, Frac) {
+    let (c, r) = if p.0.degree().unwrap_or(0) == 0 {
+        (
+            Frac(p.0.coeff(0), BigInt::one()),
+            Frac(BigInt::zero(), BigInt::one()),
+        )
+    } else {
+        mean_value_ball(&p.0, a, b)
+    };
+    let k = Frac::of(&p.1);
+    let (l, h) = (c.add(&r.neg()).mul(&k), c.add(&r).mul(&k));
+    if k.sign() < 0 { (h, l) } else { (l, h) }
+}
+
 /// [`eval_ratio_interval`] with numerator and denominator already written
 /// as `k·P` with `P` integer (see [`ZPoly::from_q`]).
 pub fn ratio_enclosure(num: &(ZPoly, Q), den: &(ZPoly, Q), a: &Q, b: &Q) -> Option<(Q, Q)> {
-    let (nl, nh) = scale_iv(enclose_mean_value(&num.0, a, b), &num.1);
-    let (dl, dh) = scale_iv(enclose_mean_value(&den.0, a, b), &den.1);
-    if dl <= Q::zero() && dh >= Q::zero() {
+    let (nl, nh) = scaled_ends(num, a, b);
+    let (dl, dh) = scaled_ends(den, a, b);
+    if dl.sign() <= 0 && dh.sign() >= 0 {
         return None;
     }
-    Some(min_max([&nl / &dl, &nl / &dh, &nh / &dl, &nh / &dh]))
-}
-
-fn scale_iv((l, h): (Q, Q), k: &Q) -> (Q, Q) {
-    if k.is_negative() {
-        (&h * k, &l * k)
-    } else {
-        (&l * k, &h * k)
+    let c = [nl.div(&dl), nl.div(&dh), nh.div(&dl), nh.div(&dh)];
+    let mut lo = &c[0];
+    let mut hi = &c[0];
+    for v in &c[1..] {
+        if v.cmp(lo).is_lt() {
+            lo = v;
+        }
+        if v.cmp(hi).is_gt() {
+            hi = v;
+        }
     }
+    Some(round_outward(lo, hi))
 }
 
 fn meets(iv: &RootInterval, lo: &Q, hi: &Q) -> bool {
