@@ -171,6 +171,19 @@ pub fn approx_decimal(x: &Q, digits: usize) -> String {
     }
 }
 
+/// `n / 2^k` in lowest terms (only powers of two can cancel, so no gcd).
+pub fn dyadic(n: Z, k: usize) -> Q {
+    let tz = n.trailing_zeros().map_or(k, |t| (t as usize).min(k));
+    Q::new_raw(n >> tz, Z::from(1) << (k - tz))
+}
+
+/// `⌊n / d · 2^k⌋ / 2^k` (`d > 0`): a dyadic rational within `2^-k` below
+/// `n / d`, found with one division and no gcd.
+pub fn dyadic_floor(n: &Z, d: &Z, k: usize) -> Q {
+    use num_integer::Integer;
+    dyadic((n << k).div_floor(d), k)
+}
+
 /// Least common multiple of the denominators of a list of rationals.
 pub fn denom_lcm<'a>(xs: impl IntoIterator<Item = &'a Q>) -> Z {
     xs.into_iter().fold(Z::one(), |acc, x| acc.lcm(x.denom()))

@@ -11,11 +11,10 @@
 use super::algebraic::RealAlg;
 use super::isolate::{RootInterval, bisect_once, isolate_squarefree};
 use crate::elim::resultant_mpoly;
-use crate::number::Q;
+use crate::number::{Q, dyadic_floor};
 use crate::poly::mpoly::{MPoly, NVARS, T, U};
 use crate::poly::{QPoly, ZPoly};
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 /// The smallest and largest of four rationals (interval products).
@@ -126,15 +125,9 @@ fn round_outward(lo: &Frac, hi: &Frac) -> (Q, Q) {
         return (v.clone(), v);
     }
     let prec = (24 + w.1.bits() as i64 - w.0.bits() as i64).max(0) as usize;
-    let fl = (&lo.0 << prec).div_floor(&lo.1);
-    let ce = -((-(&hi.0 << prec)).div_floor(&hi.1));
-    (dyadic(fl, prec), dyadic(ce, prec))
-}
-
-/// `n / 2^k` in lowest terms (no gcd needed: only powers of two cancel).
-fn dyadic(n: BigInt, k: usize) -> Q {
-    let tz = n.trailing_zeros().map_or(k, |t| (t as usize).min(k));
-    Q::new_raw(n >> tz, BigInt::one() << (k - tz))
+    let fl = dyadic_floor(&lo.0, &lo.1, prec);
+    let ce = -dyadic_floor(&-&hi.0, &hi.1, prec);
+    (fl, ce)
 }
 
 /// An enclosure of `p(x)` for all `x ∈ [a, b]` by the mean-value form

@@ -3,7 +3,7 @@
 //! rational univariate representation; the real zeros are the real roots of
 //! the RUR's univariate polynomial (the form separates conjugate zeros).
 
-use super::{RealAlg, eval_q};
+use super::RealAlg;
 use crate::elim::groebner::{GPoly, MonoOrder, groebner};
 use crate::elim::quotient::{QMatrix, Quotient, krylov_shape, mat_comb, mat_vec};
 use crate::error::Error;
@@ -27,6 +27,9 @@ pub struct Rur {
     pub f: ZPoly,
     /// `x, y, z` as polynomials in `t` (degree < deg f).
     pub coords: [QPoly; 3],
+    /// The same as `k·P(t)` with `P` a primitive integer polynomial (see
+    /// [`ZPoly::from_q`]), for fast evaluation.
+    pub coords_z: [(ZPoly, Q); 3],
     /// Extra polynomials (e.g. S) as polynomials in `t`.
     pub extra: Vec<QPoly>,
     /// For each extra polynomial `p`, the square-free integer polynomial
@@ -59,6 +62,7 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
             form: [qi(1), qi(0), qi(0)],
             f: ZPoly::constant(1.into()),
             coords: [QPoly::zero(), QPoly::zero(), QPoly::zero()],
+            coords_z: std::array::from_fn(|_| (ZPoly::zero(), Q::zero())),
             extra: extra.iter().map(|_| QPoly::zero()).collect(),
             extra_values: extra.iter().map(|_| ZPoly::constant(1.into())).collect(),
             real_roots: vec![],
@@ -165,6 +169,7 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         form,
         f,
         coords: [polys[0].clone(), polys[1].clone(), polys[2].clone()],
+        coords_z: std::array::from_fn(|k| ZPoly::from_q(&polys[k])),
         extra: polys[3..].to_vec(),
         extra_values,
         real_roots,
@@ -209,10 +214,16 @@ fn nf_rational(quo: &Quotient, p: &QMPoly) -> Vec<Q> {
 }
 
 impl Rur {
-    /// A rational approximation of the real zero number `i`.
+    /// A rational approximation of the real zero number `i`: the
+    /// coordinates at a `2^-bits` approximation of its `t`, rounded down to
+    /// dyadics with `bits + 16` fractional bits.
     pub fn approx_point(&self, i: usize, bits: u32) -> [Q; 3] {
         let t = self.real_roots[i].to_rational_approx(bits);
-        std::array::from_fn(|k| eval_q(&self.coords[k], &t))
+        std::array::from_fn(|k| {
+            let (p, c) = &self.coords_z[k];
+            let (n, d) = p.eval_homogeneous(t.numer(), t.denom());
+            crate::number::dyadic_floor(&(n * c.numer()), &(d * c.denom()), bits as usize + 16)
+        })
     }
 }
 
