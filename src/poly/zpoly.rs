@@ -237,15 +237,14 @@ impl UPoly<BigInt> {
         if o.is_zero() {
             return self.primitive_part();
         }
+        // the common case first, before any content is computed: a constant
+        // modular gcd proves coprimality whatever the contents
+        if self.degree() == Some(0) || o.degree() == Some(0) || coprime_mod_p(self, o) {
+            return ZPoly::constant(BigInt::one());
+        }
         let (mut a, mut b) = (self.primitive_part(), o.primitive_part());
         if a.degree() < b.degree() {
             std::mem::swap(&mut a, &mut b);
-        }
-        if b.degree() == Some(0) {
-            return ZPoly::constant(BigInt::one());
-        }
-        if coprime_mod_p(&a, &b) {
-            return ZPoly::constant(BigInt::one());
         }
         modular_gcd(&a, &b)
     }
