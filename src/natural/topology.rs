@@ -26,7 +26,10 @@ use crate::error::Error;
 use crate::number::{Q, QSqrt, qi};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly};
-use crate::roots::{RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_at};
+use crate::roots::{
+    GENERIC_FORMS, RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_at,
+    values_with,
+};
 use crate::tangent::QuadricForm;
 use crate::tangent::witness::eval_qsqrt;
 use num_traits::{One, Signed, Zero};
@@ -334,13 +337,7 @@ fn common_binary_roots(p: &[Q; 3], q: &[Q; 3]) -> Vec<[QSqrt; 2]> {
 pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
     let g1 = grad(f1);
     let g2 = grad(f2);
-    for l in [
-        [1i64, 2, 3],
-        [3, -1, 2],
-        [2, 5, -3],
-        [7, 3, 11],
-        [-5, 13, 4],
-    ] {
+    for l in GENERIC_FORMS {
         let lin: QMPoly = &(&MPoly::var(X).scale(&qi(l[0])) + &MPoly::var(Y).scale(&qi(l[1])))
             + &MPoly::var(Z).scale(&qi(l[2]));
         let gl: [QMPoly; 3] = std::array::from_fn(|k| MPoly::constant(qi(l[k])));
@@ -350,10 +347,16 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
             continue;
         };
         let one = QPoly::constant(Q::one());
-        let mut vals: Vec<RealAlg> = values_at(&rur.f, &rur.real_roots, &rur.extra[0], &one)
-            .into_iter()
-            .map(|v| v.expect("denominator 1"))
-            .collect();
+        let mut vals: Vec<RealAlg> = values_with(
+            &rur.f,
+            &rur.real_roots,
+            &rur.extra[0],
+            &one,
+            &rur.extra_values[0],
+        )
+        .into_iter()
+        .map(|v| v.expect("denominator 1"))
+        .collect();
         vals.sort_by(|a, b| a.cmp_exact(b));
         vals.dedup_by(|a, b| a.cmp_exact(b) == Ordering::Equal);
         separate(&mut vals);

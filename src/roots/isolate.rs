@@ -167,7 +167,7 @@ fn dyadic(c: &BigInt, j: i64) -> Q {
     if j >= 0 {
         Q::from_integer(c << (j as usize))
     } else {
-        Q::new(c.clone(), BigInt::one() << ((-j) as usize))
+        crate::number::dyadic(c.clone(), (-j) as usize)
     }
 }
 
@@ -244,7 +244,7 @@ fn fix_endpoints(p: &ZPoly, iv: &mut RootInterval) {
         k += 1;
         let s = p.sign_at_dyadic(&m, k);
         if s == 0 {
-            let v = Q::new(m, BigInt::one() << k as usize);
+            let v = crate::number::dyadic(m, k as usize);
             iv.lo = v.clone();
             iv.hi = v;
             return;
@@ -409,7 +409,7 @@ fn refine_dyadic(p: &ZPoly, iv: &mut RootInterval, width: &Q, k0: u64) {
         k += 1;
         let s = p.sign_at_dyadic(&m, k);
         if s == 0 {
-            let v = Q::new(m, BigInt::one() << k as usize);
+            let v = crate::number::dyadic(m, k as usize);
             iv.lo = v.clone();
             iv.hi = v;
             return;

@@ -28,4 +28,4 @@ pub use isolate::{
 pub use rational::{no_rational_root_sieve, rational_roots, simplest_rational_in, split_cubic};
 pub use report::{RealRoot, RootReport, analyze_roots};
 pub use sturm::{Point, SturmSequence, count_real_roots_in};
-pub use zerodim::{Rur, solve_zero_dim};
+pub use zerodim::{GENERIC_FORMS, Rur, solve_zero_dim};

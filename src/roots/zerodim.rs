@@ -45,6 +45,11 @@ pub struct Rur {
 
 const SLOTS: [usize; 3] = [X, Y, Z];
 
+/// Linear forms `l·(x, y, z)` tried in turn where a generic direction is
+/// needed (sweeps and level curves): fixed, so results are reproducible.
+pub const GENERIC_FORMS: [[i64; 3]; 5] =
+    [[1, 2, 3], [3, -1, 2], [2, 5, -3], [7, 3, 11], [-5, 13, 4]];
+
 fn to_g(p: &QMPoly) -> GPoly {
     GPoly::from_mpoly(p, &SLOTS, MonoOrder::GrevLex)
 }

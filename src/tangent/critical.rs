@@ -27,7 +27,9 @@ use crate::error::Error;
 use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, U, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
-use crate::roots::{RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_with};
+use crate::roots::{
+    GENERIC_FORMS, RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_with,
+};
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
@@ -172,13 +174,7 @@ fn elimination_ideal_values(gens: &[QMPoly], s: &QMPoly) -> Result<ZPoly, Error>
 fn level_has_real_point(e: &Ellipsoid, s: &QMPoly, q: &Q) -> Result<Option<(Rur, [Q; 3])>, Error> {
     let cross = cross_gradients(s, &e.poly);
     let sq = s - &MPoly::constant(q.clone());
-    for l in [
-        [1i64, 2, 3],
-        [3, -1, 2],
-        [2, 5, -3],
-        [7, 3, 11],
-        [-5, 13, 4],
-    ] {
+    for l in GENERIC_FORMS {
         let det =
             &(&cross[0].scale(&qi(l[0])) + &cross[1].scale(&qi(l[1]))) + &cross[2].scale(&qi(l[2]));
         if let Some(rur) = solve_zero_dim(&[e.poly.clone(), sq.clone(), det], &[])? {
