@@ -455,3 +455,59 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, .. ProptestConfig::default() })]
+
+    /// Separable S against an axis-parallel E: the branch-wise route
+    /// (`Method::Separable`) and the critical-ideal route (Gröbner basis and
+    /// RUR of E = 0, ∇S × ∇E = 0) are independent deciders and must agree
+    /// exactly — the same real critical values and the same D(u), or, with
+    /// curves of critical points, the same ν and μ.
+    #[test]
+    fn separable_route_agrees_with_critical_ideal(
+        axes in (1i64..5, 1i64..5, 1i64..5), centre in (-2i64..3, -2i64..3, -2i64..3), r in 1i64..20,
+        f in prop::collection::vec(-3i64..4, 4), kappa in (-2i64..3, -2i64..3), general in 0usize..3, k_den in 1i64..4)
+    {
+        let names = ["x", "y", "z"];
+        let ax = [axes.0, axes.1, axes.2];
+        let ce = [centre.0, centre.1, centre.2];
+        let sq = |i: usize| format!("({}-({}))^2", names[i], ce[i]);
+        let e = format!("{}{}+{}{}+{}{}-{r}", ax[0], sq(0), ax[1], sq(1), ax[2], sq(2));
+        let g = names[general];
+        let (j1, j2) = ((general + 1) % 3, (general + 2) % 3);
+        // a general quartic/cubic in g, proportional parts in the other two
+        let s = format!(
+            "{}{g}^4+{}{g}^3+{}{g}^2+{}{g} + ({}/{k_den})*{}*{} + ({}/{k_den})*{}*{} + 1",
+            f[0], f[1] + 1, f[2], f[3], kappa.0, ax[j1], sq(j1), kappa.1, ax[j2], sq(j2)
+        );
+        let ep = parse_poly(&e).unwrap();
+        let sp = parse_poly(&s).unwrap();
+        prop_assume!(sp.total_degree().unwrap_or(0) >= 3);
+        let ell = Ellipsoid::new(&ep).unwrap();
+        let sep = quadsect::tangent::separable::analyze(&ell, &sp).expect("separable shape");
+        let r = decide(&ep, &sp).unwrap();
+        prop_assert!(matches!(r.certificate.method, quadsect::tangent::Method::Separable(_)));
+        match quadsect::tangent::critical::analyze(&ell, &sp).unwrap() {
+            quadsect::tangent::critical::Outcome::Finite(an) => {
+                prop_assert_eq!(&an.judging, &sep.judging, "{} on {}", s, e);
+                let mut a = an.real_values();
+                a.sort_by(|x, y| x.cmp_exact(y));
+                a.dedup_by(|x, y| x.cmp_exact(y) == Ordering::Equal);
+                let b = &r.certificate.critical_values;
+                prop_assert_eq!(a.len(), b.len(), "{} on {}", s, e);
+                for (x, y) in a.iter().zip(b) {
+                    prop_assert_eq!(x.cmp_exact(y), Ordering::Equal);
+                }
+            }
+            quadsect::tangent::critical::Outcome::Curves(ls) => {
+                prop_assert!(ls.attained.first().unwrap().cmp_exact(r.min.as_ref().unwrap()) == Ordering::Equal);
+                prop_assert!(ls.attained.last().unwrap().cmp_exact(r.max.as_ref().unwrap()) == Ordering::Equal);
+            }
+        }
+        for w in [&r.certificate.negative_witness, &r.certificate.positive_witness].into_iter().flatten() {
+            prop_assert!(eval_qsqrt(&ep, &w.coords).is_zero());
+            prop_assert_eq!(eval_qsqrt(&sp, &w.coords).sign(), w.sign);
+        }
+    }
+}

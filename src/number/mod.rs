@@ -184,6 +184,72 @@ pub fn dyadic_floor(n: &Z, d: &Z, k: usize) -> Q {
     dyadic((n << k).div_floor(d), k)
 }
 
+/// `gcd(|a|, |b|)`, fast when the sizes differ or a value fits a word.
+///
+/// num-bigint's gcd is binary (Stein): every step shifts the whole
+/// operands, so `gcd(huge, small)` costs as much as `gcd(huge, huge)`.
+/// Here unbalanced operands take a Euclidean remainder step first (one
+/// division shrinks the larger to the size of the smaller), and word-size
+/// operands finish in native arithmetic; only balanced multi-word pairs go
+/// to num-bigint.  Content computations (`gcd(g, cᵢ)` with a small running
+/// g) become one short division per coefficient.
+pub fn gcd_z(a: &Z, b: &Z) -> Z {
+    use num_bigint::BigUint;
+    use num_traits::ToPrimitive;
+    let (mut x, mut y): (BigUint, BigUint) = (a.magnitude().clone(), b.magnitude().clone());
+    loop {
+        if y.is_zero() {
+            return Z::from(x);
+        }
+        if x.is_zero() {
+            return Z::from(y);
+        }
+        if let Some(v) = y.to_u64() {
+            let u = if let Some(u) = x.to_u64() {
+                u
+            } else {
+                (&x % v).to_u64().unwrap_or(0)
+            };
+            return Z::from(gcd_u64(u, v));
+        }
+        if let Some(u) = x.to_u64() {
+            let v = (&y % u).to_u64().unwrap_or(0);
+            return Z::from(gcd_u64(u, v));
+        }
+        let (bx, by) = (x.bits(), y.bits());
+        if bx.abs_diff(by) < 16 {
+            return Z::from(x.gcd(&y));
+        }
+        if bx > by {
+            x %= &y;
+        } else {
+            y %= &x;
+        }
+    }
+}
+
+/// Binary gcd of machine words.
+fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let k = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << k;
+        }
+    }
+}
+
 /// Least common multiple of the denominators of a list of rationals.
 pub fn denom_lcm<'a>(xs: impl IntoIterator<Item = &'a Q>) -> Z {
     xs.into_iter().fold(Z::one(), |acc, x| acc.lcm(x.denom()))
@@ -222,6 +288,25 @@ mod tests {
             approx_decimal(&Q::from_integer(num_traits::pow(BigInt::from(10), 30)), 3),
             "1e30"
         );
+    }
+
+    #[test]
+    fn gcd_z_agrees_with_num_bigint() {
+        let big = BigInt::from(3u32).pow(200) * BigInt::from(14u32);
+        let cases = [
+            (BigInt::from(0), BigInt::from(0)),
+            (BigInt::from(0), BigInt::from(-12)),
+            (BigInt::from(-18), BigInt::from(12)),
+            (big.clone(), BigInt::from(21)),
+            (BigInt::from(-21), big.clone()),
+            (big.clone(), BigInt::from(2u32).pow(90) * 7),
+            (big.clone() * 5, big.clone() * 10 + &big),
+            (BigInt::from(u64::MAX), BigInt::from(u64::MAX - 1)),
+            (BigInt::from(1u128 << 100), BigInt::from(1u128 << 40)),
+        ];
+        for (a, b) in cases {
+            assert_eq!(gcd_z(&a, &b), a.gcd(&b), "gcd({a}, {b})");
+        }
     }
 
     #[test]

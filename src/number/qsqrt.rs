@@ -214,19 +214,19 @@ impl QSqrt {
             return self.clone();
         }
         // √(n/m) = √(n·m)/m
-        let nm = self.d.numer() * self.d.denom();
-        let mut rad = nm.clone();
+        let mut rad = self.d.numer() * self.d.denom();
         let mut out = BigInt::one();
-        let mut p = BigInt::from(2u32);
-        let mut tries = 0;
-        while tries < 200 && &p * &p <= rad {
-            let p2 = &p * &p;
-            while (&rad % &p2).is_zero() {
-                rad /= &p2;
-                out *= &p;
+        // the primes below 200 (composite squares are products of these);
+        // remainders by word-size divisors, no big temporaries
+        for p in (2u64..200).filter(|&p| (2..p).take_while(|k| k * k <= p).all(|k| p % k != 0)) {
+            let p2 = p * p;
+            if rad.bits() < 2 * (64 - p.leading_zeros() as u64) - 1 {
+                break; // p² > rad
             }
-            p += 1u32;
-            tries += 1;
+            while (&rad % p2).is_zero() {
+                rad /= p2;
+                out *= p;
+            }
         }
         let coef = Q::new(out, self.d.denom().clone());
         QSqrt::new(self.a.clone(), &self.b * coef, Q::from_integer(rad))

@@ -24,7 +24,7 @@ impl UPoly<BigInt> {
     pub fn content(&self) -> BigInt {
         let mut g = BigInt::zero();
         for c in self.coeffs().iter().rev() {
-            g = g.gcd(c);
+            g = crate::number::gcd_z(&g, c);
             if g.is_one() {
                 break;
             }

@@ -92,6 +92,35 @@ fn method_json(m: &Method) -> Value {
                 "multipliers": mults,
             })
         }
+        Method::Separable(sa) => {
+            let names = ["x", "y", "z"];
+            let branches: Vec<Value> = sa
+                .branches
+                .iter()
+                .map(|b| {
+                    json!({
+                        "lambda": b.lambda.as_ref().map(crate::number::fmt_q),
+                        "free": b.free.iter().map(|&j| names[j]).collect::<Vec<_>>(),
+                        "coordinate_poly": upoly_string(&b.coordinate_poly, sa.general),
+                        "value_map": MPoly::from_univariate(&b.value_map, sa.general).to_string_canonical(),
+                        "value_poly": upoly_string(&b.value_poly, U),
+                        "real_points": b.real_points.iter().map(|(x, v)| json!({
+                            "coordinate": alg_json_in(x, sa.general),
+                            "value": crate::report::alg_json(v),
+                        })).collect::<Vec<_>>(),
+                        "roots_with_nonreal_points": b.nonreal_roots,
+                        "curves": b.curves,
+                    })
+                })
+                .collect();
+            json!({
+                "method": "separable-branches",
+                "general_coordinate": names[sa.general],
+                "kappa": sa.kappa.iter().map(|k| k.as_ref().map(crate::number::fmt_q)).collect::<Vec<_>>(),
+                "rho": MPoly::from_univariate(&sa.rho, sa.general).to_string_canonical(),
+                "branches": branches,
+            })
+        }
         Method::CriticalIdeal(an) => {
             let elim = an.elimination.as_ref().map(|e| {
                 json!({
@@ -244,6 +273,34 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.secular.degree().unwrap_or(0),
             upoly_string(&ZPoly::from_q(&an.delta).0, L)
         ),
+        Method::Separable(sa) => {
+            let names = ["x", "y", "z"];
+            let g = names[sa.general];
+            let parts: Vec<String> = sa
+                .branches
+                .iter()
+                .map(|b| {
+                    let head = match &b.lambda {
+                        None => "others at the centre".to_string(),
+                        Some(k) => {
+                            let f: Vec<&str> = b.free.iter().map(|&j| names[j]).collect();
+                            format!("λ = {}, {} free", crate::number::fmt_q(k), f.join(", "))
+                        }
+                    };
+                    format!(
+                        "[{head}: {} = 0, values {} = 0, {} real]",
+                        upoly_string(&b.coordinate_poly, sa.general),
+                        upoly_string(&b.value_poly, U),
+                        b.real_points.len()
+                    )
+                })
+                .collect();
+            format!(
+                "separable S, general coordinate {g}: {} branches, D(u) = product of Res_{g}(branch, u − S) {}",
+                sa.branches.len(),
+                parts.join(" ")
+            )
+        }
         Method::CriticalIdeal(an) => format!(
             "critical ideal E = 0, ∇S×∇E = 0: {} critical points ({} with multiplicity), RUR in t = {}·x + {}·y + {}·z, {} real",
             an.rur.points,

@@ -138,9 +138,16 @@ pub fn paper_examples() -> Vec<ExampleResult> {
                 None => {}
             }
         }
-        if let Method::CriticalIdeal(an) = &r.certificate.method
-            && let Some(el) = &an.elimination
-        {
+        // the paper's route for comparison: resultants of the whole Lagrange
+        // system in two orders (the separable route eliminates branch-wise)
+        let elimination = match &r.certificate.method {
+            Method::CriticalIdeal(an) => an.elimination.clone(),
+            Method::Separable(_) => super::Ellipsoid::new(&r.ellipsoid)
+                .ok()
+                .and_then(|e| super::judging::eliminate(&e, &r.surface)),
+            _ => None,
+        };
+        if let Some(el) = &elimination {
             ours.push_str(&format!(
                 "resultant elimination: order (λ, x, y, z) gives degree {}, order (λ, z, y, x) degree {}, gcd degree {} = {}\n",
                 el.first.degree().unwrap_or(0),

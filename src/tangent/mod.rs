@@ -8,7 +8,10 @@
 //!
 //! * deg S ≤ 2: the λ-parametrisation ([`quadric`]), exact and complete,
 //!   including the singular multipliers where `det(A_S − λA_E) = 0`;
-//! * deg S ≥ 3: the critical points as the zero set of
+//! * deg S ≥ 3, separable S (`f(x) + g(y) + h(z)` with one coordinate not
+//!   proportional to E's square) against an axis-parallel E: the Lagrange
+//!   system splits into univariate branches ([`separable`]);
+//! * deg S ≥ 3 otherwise: the critical points as the zero set of
 //!   `E = 0, ∇S × ∇E = 0` (no λ), solved by a Gröbner basis and a rational
 //!   univariate representation ([`critical`]); real critical points are
 //!   exactly the real roots of the RUR's univariate polynomial.
@@ -24,6 +27,7 @@ pub mod examples;
 pub mod judging;
 pub mod pencil;
 pub mod quadric;
+pub mod separable;
 pub mod witness;
 
 pub use ellipsoid::{Ellipsoid, QuadricForm};
@@ -88,6 +92,9 @@ pub enum Method {
     Pencil(pencil::PencilAnalysis),
     /// deg S ≤ 2: the complete λ-parametrisation.
     Lambda(quadric::LambdaAnalysis),
+    /// deg S ≥ 3, S separable with one general coordinate against an
+    /// axis-parallel E: branch-wise univariate elimination.
+    Separable(separable::SeparableAnalysis),
     /// deg S ≥ 3 with a finite critical set.
     CriticalIdeal(critical::CriticalAnalysis),
     /// deg S ≥ 3 with curves of critical points (symmetric inputs).
@@ -213,6 +220,17 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         let (vals, nonreal) = split_values(&real, &an.judging);
         let j = an.judging.clone();
         (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
+    } else if let Some(sa) = separable::analyze(&e, surface) {
+        let real = sa.real_values();
+        let (vals, nonreal) = split_values(&real, &sa.judging);
+        let j = sa.judging.clone();
+        (
+            vals,
+            nonreal,
+            j,
+            Method::Separable(sa),
+            WitnessFinder::Separable,
+        )
     } else {
         let outcome = match critical::analyze(&e, surface) {
             Ok(o) => o,
@@ -281,6 +299,7 @@ enum WitnessFinder {
     None,
     Pencil,
     Lambda,
+    Separable,
     Critical,
     Level,
 }
@@ -316,6 +335,11 @@ fn finish(
     let mut notes = Vec::new();
     if matches!(method, Method::LevelSets(_)) {
         notes.push("curves of critical points: ν and μ are exact; critical values strictly between them are not classified".into());
+    }
+    if let Method::Separable(sa) = &method
+        && sa.has_curves()
+    {
+        notes.push("curves of critical points on a branch with two free coordinates; every critical value is exact".into());
     }
     let (min, max) = match (values.first(), values.last()) {
         (Some(a), Some(b)) => (a.simplify(), b.simplify()),
@@ -406,6 +430,7 @@ fn witness_for(
             an.witness(i, e, s, want)
         }
         (Method::Pencil(an), WitnessFinder::Pencil) => an.witness(e, s, want),
+        (Method::Separable(an), WitnessFinder::Separable) => an.witness(value, e, s, want),
         (Method::CriticalIdeal(an), WitnessFinder::Critical) => an.witness(value, e, s, want),
         (Method::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
         (Method::Constant, _) => {
