@@ -403,6 +403,12 @@ fn refine_dyadic(p: &ZPoly, iv: &mut RootInterval, width: &Q, k0: u64) {
     let mut b = scale(&iv.hi, k);
     let (wn, wd) = (width.numer().clone(), width.denom().clone());
     let s_lo = p.sign_at_dyadic(&a, k);
+    // many bits to gain: bisection with verified Newton steps
+    let need = ((&b - &a) * &wd).bits() as i64 - (&wn << k as usize).bits() as i64;
+    if need > 8 && s_lo != 0 {
+        super::newton::refine_dyadic_newton(p, iv, a, b, k, s_lo, width);
+        return;
+    }
     // (b − a)/2^k > wn/wd  ⇔  (b − a)·wd > wn·2^k
     while (&b - &a) * &wd > (&wn << k as usize) {
         let m: BigInt = &a + &b;

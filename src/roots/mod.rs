@@ -11,6 +11,7 @@
 mod algebraic;
 mod enclose;
 mod isolate;
+mod newton;
 mod rational;
 mod report;
 mod sturm;

@@ -210,6 +210,19 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
                 WitnessFinder::Pencil,
             ));
         }
+        if let Some(sa) = separable::analyze(&e, surface) {
+            let (vals, nonreal) = split_values(&sa.real_values(), &sa.judging);
+            let j = sa.judging.clone();
+            return Ok(finish(
+                &e,
+                surface,
+                vals,
+                nonreal,
+                j,
+                Method::Separable(sa),
+                WitnessFinder::Separable,
+            ));
+        }
         let an = quadric::analyze(&e, &form);
         let real: Vec<RealAlg> = an
             .critical
@@ -221,8 +234,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         let j = an.judging.clone();
         (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
     } else if let Some(sa) = separable::analyze(&e, surface) {
-        let real = sa.real_values();
-        let (vals, nonreal) = split_values(&real, &sa.judging);
+        let (vals, nonreal) = split_values(&sa.real_values(), &sa.judging);
         let j = sa.judging.clone();
         (
             vals,
