@@ -138,6 +138,30 @@ proptest! {
         }
     }
 
+    /// The sign at a dyadic point `m/2^k` (fixed-width Horner under a
+    /// headroom bound, `BigInt` beyond it) equals the sign of the exact
+    /// rational value, for points of every size, at built-in roots too.
+    #[test]
+    fn dyadic_signs_equal_rational_signs(p in prop_oneof![zpoly(30, 62), big_zpoly(), structured()],
+                                         root in (-300i64..300, 0u32..12),
+                                         m in prop_oneof![any::<i64>().prop_map(BigInt::from),
+                                                          (any::<i64>(), 0usize..80).prop_map(|(a, s)| BigInt::from(a) << s)],
+                                         k in 0u64..90) {
+        use quadsect::poly::zpoly::DyadicSigner;
+        // p with a dyadic root a/2^e, evaluated there and at m/2^k
+        let (a, e) = root;
+        let pr = &p * &ZPoly::new(vec![BigInt::from(-a), BigInt::one() << e as usize]);
+        for poly in [&p, &pr] {
+            let s = DyadicSigner::new(poly);
+            for (x, kx) in [(m.clone(), k), (BigInt::from(a) << (k as usize), k + u64::from(e))] {
+                let exact = poly.sign_at(&Q::new(x.clone(), BigInt::one() << kx as usize));
+                prop_assert_eq!(s.sign_at(&x, kx), exact, "p = {:?} at {}/2^{}", poly, x, kx);
+                prop_assert_eq!(poly.sign_at_dyadic(&x, kx), exact);
+            }
+        }
+        prop_assert_eq!(DyadicSigner::new(&pr).sign_at(&(BigInt::from(a) << (k as usize)), k + u64::from(e)), 0);
+    }
+
     /// Res(f, g) = 0 iff deg gcd(f, g) > 0.
     #[test]
     fn resultant_vanishes_iff_common_root(f in zpoly(6, 6), g in zpoly(6, 6), h in zpoly(2, 3)) {

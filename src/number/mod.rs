@@ -1,12 +1,15 @@
 //! Exact scalars: parsing of exact numbers, rational helpers, the quadratic
 //! field elements `a + b√d` ([`QSqrt`]), word-size modular arithmetic for the
-//! multi-modular algorithms, and decimal approximations for printing.
+//! multi-modular algorithms, fixed-width integers for inner loops whose
+//! operands a headroom bound keeps small ([`fixed::Fixed`]), and decimal
+//! approximations for printing.
 //!
 //! Key idea: every number that enters quadsect is an exact rational.  A
 //! decimal such as `1.77777777777` is `177777777777/10^11`, never a float.
 //! Floats appear only in printed approximations, and those are computed from
 //! the exact value by integer arithmetic ([`approx_decimal`]).
 
+pub mod fixed;
 pub mod modular;
 mod parse;
 pub mod qsqrt;

@@ -8,11 +8,14 @@
 //! primitive integer polynomial, and rationals appear only at the edges.
 
 use super::upoly::UPoly;
+use crate::number::fixed::{AtWidth, Fixed, MAX_LIMBS, at_width, push_limbs};
 use crate::number::modular::{Digits, Modulus, primes};
 use crate::number::{Q, sign_z};
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::borrow::Cow;
+use std::ops::AddAssign;
 
 /// Polynomials with integer coefficients.
 pub type ZPoly = UPoly<BigInt>;
@@ -107,22 +110,10 @@ impl UPoly<BigInt> {
         sign_z(&self.eval_homogeneous(x.numer(), x.denom()).0)
     }
 
-    /// Sign of the value at the dyadic point `m / 2^k`.
+    /// Sign of the value at the dyadic point `m / 2^k` (see
+    /// [`DyadicSigner`], which also serves repeated evaluations).
     pub fn sign_at_dyadic(&self, m: &BigInt, k: u64) -> i32 {
-        let c = self.coeffs();
-        if c.is_empty() {
-            return 0;
-        }
-        let mut acc = c[c.len() - 1].clone();
-        let mut sh = 0u64;
-        for ci in c.iter().rev().skip(1) {
-            sh += k;
-            acc *= m;
-            if !ci.is_zero() {
-                acc += ci << (sh as usize);
-            }
-        }
-        sign_z(&acc)
+        DyadicSigner::new(self).sign_at(m, k)
     }
 
     /// `x^n p(1/x)`: the coefficients reversed.
@@ -319,15 +310,173 @@ impl UPoly<BigInt> {
     }
 }
 
-/// In-place Taylor shift by one, `p(x) -> p(x + 1)`, on ascending
-/// coefficients: `n(n+1)/2` big additions, no multiplications.
-pub fn taylor_shift_one(c: &mut [BigInt]) {
-    let n = c.len();
-    for i in 0..n.saturating_sub(1) {
-        for j in (i..n - 1).rev() {
-            let (lo, hi) = c.split_at_mut(j + 1);
-            lo[j] += &hi[0];
+/// An integer polynomial prepared for exact signs at many dyadic points
+/// `m / 2^k` (bisection): the sign of `2^(k·n) p(m/2^k) = Σ c_i m^i 2^(k(n-i))`
+/// by Horner's rule, in [`Fixed`] arithmetic when `|m| < 2^64` and the
+/// headroom bound below allows, else in `BigInt`.  The coefficients are
+/// converted to two's-complement limbs once, in [`DyadicSigner::new`].
+///
+/// Headroom: let `|c_i| < 2^B` and `L = max(bits(|m|), k)`, so `|m| < 2^L`
+/// and `2^k <= 2^L`.  After the step for `c_i` the accumulator is
+/// `Σ_{l>=i} c_l m^(l-i) 2^(k(n-l))`, and before adding `c_i 2^(k(n-i))` it
+/// is the same sum without that term; each term is below `2^(B+nL)` in
+/// absolute value, so every number met is below
+/// `(n+1) 2^(B+nL) <= 2^(B + nL + bits(n))`.  Hence
+/// `B + nL + bits(n) + 1 <= 64·N` bits of two's complement hold them all
+/// exactly (products and sums modulo `2^(64N)` are exact when the true
+/// value fits).  `m < 0` is `|m|` with the odd coefficients negated.
+///
+/// ```
+/// use num_bigint::BigInt;
+/// use quadsect::poly::ZPoly;
+/// use quadsect::poly::zpoly::DyadicSigner;
+/// let p = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
+/// let s = DyadicSigner::new(&p);
+/// assert_eq!(s.sign_at(&BigInt::from(181), 7), -1); // 181/128 < √2
+/// assert_eq!(s.sign_at(&BigInt::from(-182), 7), 1); // -182/128 < -√2
+/// assert_eq!(s.sign_at(&BigInt::from(-4), 1), 1);
+/// ```
+pub struct DyadicSigner<'a> {
+    p: Cow<'a, ZPoly>,
+    /// The coefficients, `width` limbs each.
+    limbs: Vec<u64>,
+    width: usize,
+    /// `B`: every `|c_i| < 2^B`.
+    coeff_bits: u64,
+}
+
+impl<'a> DyadicSigner<'a> {
+    /// Prepares `p`: `O(n)` conversions.
+    pub fn new(p: &'a ZPoly) -> Self {
+        Self::prepare(Cow::Borrowed(p))
+    }
+
+    /// As [`DyadicSigner::new`], owning `p`.
+    pub fn owned(p: ZPoly) -> DyadicSigner<'static> {
+        DyadicSigner::prepare(Cow::Owned(p))
+    }
+
+    fn prepare(p: Cow<'a, ZPoly>) -> Self {
+        let coeff_bits = p.coeffs().iter().map(|x| x.bits()).max().unwrap_or(0);
+        let width = usize::try_from((coeff_bits + 1).div_ceil(64)).unwrap_or(usize::MAX);
+        let mut limbs = Vec::new();
+        if width <= MAX_LIMBS {
+            limbs.reserve_exact(width * p.coeffs().len());
+            for c in p.coeffs() {
+                let fits = push_limbs(c, width, &mut limbs);
+                debug_assert!(fits);
+            }
         }
+        DyadicSigner {
+            p,
+            limbs,
+            width,
+            coeff_bits,
+        }
+    }
+
+    /// Exact sign (-1, 0, 1) of `p(m / 2^k)`.  `O(n)` operations on numbers
+    /// of `B + n·max(bits(m), k)` bits.
+    pub fn sign_at(&self, m: &BigInt, k: u64) -> i32 {
+        let c = self.p.coeffs();
+        if c.is_empty() {
+            return 0;
+        }
+        if let Some(s) = self.sign_at_fixed(m, k) {
+            return s;
+        }
+        let mut acc = c[c.len() - 1].clone();
+        let mut sh = 0u64;
+        for ci in c.iter().rev().skip(1) {
+            sh += k;
+            acc *= m;
+            if !ci.is_zero() {
+                acc += ci << (sh as usize);
+            }
+        }
+        sign_z(&acc)
+    }
+
+    /// The [`Fixed`] path, when the headroom bound allows it.
+    fn sign_at_fixed(&self, m: &BigInt, k: u64) -> Option<i32> {
+        if self.limbs.is_empty() {
+            return None;
+        }
+        let mag = m.magnitude().to_u64()?;
+        let n = (self.p.coeffs().len() - 1) as u64;
+        let l = k.max(64 - u64::from(mag.leading_zeros()));
+        let bits = l
+            .checked_mul(n)?
+            .checked_add(self.coeff_bits + (64 - u64::from(n.leading_zeros())) + 1)?;
+        let job = Horner {
+            signer: self,
+            m: mag,
+            m_negative: m.is_negative(),
+            k,
+        };
+        at_width(usize::try_from(bits.div_ceil(64)).ok()?, job).ok()
+    }
+}
+
+/// One Horner evaluation of a [`DyadicSigner`] at a width the headroom
+/// bound allows.
+struct Horner<'s, 'a> {
+    signer: &'s DyadicSigner<'a>,
+    m: u64,
+    m_negative: bool,
+    k: u64,
+}
+
+impl AtWidth for Horner<'_, '_> {
+    type Output = i32;
+    fn run<const N: usize>(self) -> i32 {
+        let w = self.signer.width;
+        let term = |i: usize| -> Fixed<N> {
+            let t = Fixed::<N>::from_limbs(&self.signer.limbs[i * w..(i + 1) * w]);
+            if self.m_negative && i % 2 == 1 {
+                t.neg()
+            } else {
+                t
+            }
+        };
+        let n = self.signer.limbs.len() / w - 1;
+        let mut acc = term(n);
+        for i in (0..n).rev() {
+            acc = acc.mul_u64(self.m);
+            let t = term(i);
+            if !t.is_zero() {
+                // k(n-i) <= nL < 64N by the bound
+                acc += &t.shl((self.k * (n - i) as u64) as u32);
+            }
+        }
+        i32::from(acc.signum())
+    }
+}
+
+/// In-place Taylor shift by one, `p(x) -> p(x + 1)`, on ascending
+/// coefficients: `n(n+1)/2` additions, no multiplications.  Generic over
+/// the integer type (`BigInt`, or a fixed-width integer under a proven
+/// headroom bound, as in VCA isolation).
+pub fn taylor_shift_one<T>(c: &mut [T])
+where
+    T: for<'a> AddAssign<&'a T>,
+{
+    for i in 0..c.len().saturating_sub(1) {
+        taylor_shift_stage(&mut c[i..]);
+    }
+}
+
+/// One stage of [`taylor_shift_one`]: `c_j += c_{j+1}` for `j` from the top
+/// down (synthetic division by `x - 1`).  After stage `i` (on `c[i..]`) the
+/// coefficient `c_i` of `p(x + 1)` is final.
+#[inline]
+pub fn taylor_shift_stage<T>(c: &mut [T])
+where
+    T: for<'a> AddAssign<&'a T>,
+{
+    for j in (0..c.len().saturating_sub(1)).rev() {
+        let (lo, hi) = c.split_at_mut(j + 1);
+        lo[j] += &hi[0];
     }
 }
 
