@@ -196,18 +196,7 @@ pub fn identify_root(r: &ZPoly, enclose: &dyn Fn(u32) -> (Q, Q)) -> RealAlg {
     }
 }
 
-/// Rational bounds `(l, h)` with `l <= √x <= h` and `h − l` about `2^-bits`
-/// (`x >= 0`).
-pub fn sqrt_bounds(x: &Q, bits: u32) -> (Q, Q) {
-    if !x.is_positive() {
-        return (Q::zero(), Q::zero());
-    }
-    let k = bits as usize + 4;
-    let nd = x.numer() * x.denom();
-    let s = (nd << (2 * k)).sqrt();
-    let den = x.denom() << k;
-    (Q::new(s.clone(), den.clone()), Q::new(s + 1u32, den))
-}
+pub use crate::number::sqrt_bounds;
 
 /// `a + b√d + m·s·√(α + β√d)` (s = ±1) exactly, as a real algebraic number
 /// (or in Q(√·) when no nesting happens).  Requires `α + β√d > 0`.

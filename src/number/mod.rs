@@ -258,6 +258,19 @@ pub fn denom_lcm<'a>(xs: impl IntoIterator<Item = &'a Q>) -> Z {
     xs.into_iter().fold(Z::one(), |acc, x| acc.lcm(x.denom()))
 }
 
+/// Rational bounds `(l, h)` with `l <= √x <= h` and `h − l` about `2^-bits`
+/// (`x >= 0`).
+pub fn sqrt_bounds(x: &Q, bits: u32) -> (Q, Q) {
+    if !x.is_positive() {
+        return (Q::zero(), Q::zero());
+    }
+    let k = bits as usize + 4;
+    let nd = x.numer() * x.denom();
+    let s = (nd << (2 * k)).sqrt();
+    let den = x.denom() << k;
+    (Q::new(s.clone(), den.clone()), Q::new(s + 1u32, den))
+}
+
 /// Integer square root test: `Some(r)` with `r*r == x` when `x >= 0` is a
 /// perfect square.
 pub fn exact_sqrt_z(x: &Z) -> Option<Z> {

@@ -218,7 +218,7 @@ impl QSqrt {
         let mut out = BigInt::one();
         // the primes below 200 (composite squares are products of these);
         // remainders by word-size divisors, no big temporaries
-        for p in (2u64..200).filter(|&p| (2..p).take_while(|k| k * k <= p).all(|k| p % k != 0)) {
+        for p in PRIMES_BELOW_200 {
             let p2 = p * p;
             if rad.bits() < 2 * (64 - p.leading_zeros() as u64) - 1 {
                 break; // p² > rad
@@ -232,6 +232,13 @@ impl QSqrt {
         QSqrt::new(self.a.clone(), &self.b * coef, Q::from_integer(rad))
     }
 }
+
+/// The primes below 200 (trial division in [`QSqrt::normalized`]).
+const PRIMES_BELOW_200: [u64; 46] = [
+    2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97,
+    101, 103, 107, 109, 113, 127, 131, 137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191, 193,
+    197, 199,
+];
 
 impl fmt::Display for QSqrt {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

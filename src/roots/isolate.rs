@@ -526,14 +526,14 @@ impl<'a> EndFixer<'a> {
 
 /// A dyadic interval `(a/2^k, b/2^k)` around one simple root of a
 /// square-free polynomial, bisected in integer arithmetic (no gcds).
-struct DyadicBracket {
-    a: BigInt,
-    b: BigInt,
-    k: u64,
+pub(crate) struct DyadicBracket {
+    pub(crate) a: BigInt,
+    pub(crate) b: BigInt,
+    pub(crate) k: u64,
 }
 
 /// The result of [`DyadicBracket::halve`].
-enum Halved {
+pub(crate) enum Halved {
     /// The midpoint is the root.
     Root(Q),
     /// The root is in the lower half; the new upper end has this sign.
@@ -557,10 +557,16 @@ impl DyadicBracket {
 
     /// Halves the bracket given the sign `sigma` of the polynomial between
     /// the lower end and the root (its sign above the root is `-sigma`).
-    fn halve(&mut self, signs: &DyadicSigner, sigma: i32) -> Halved {
+    pub(crate) fn halve(&mut self, signs: &DyadicSigner, sigma: i32) -> Halved {
         let m: BigInt = &self.a + &self.b;
+        let s = signs.sign_at(&m, self.k + 1);
+        self.halve_at(m, s, sigma)
+    }
+
+    /// [`DyadicBracket::halve`] when the sign `s` of the polynomial at the
+    /// midpoint `m/2^(k+1)` (`m = a + b`) is already known.
+    pub(crate) fn halve_at(&mut self, m: BigInt, s: i32, sigma: i32) -> Halved {
         self.k += 1;
-        let s = signs.sign_at(&m, self.k);
         if s == 0 {
             return Halved::Root(crate::number::dyadic(m, self.k as usize));
         }
@@ -575,7 +581,7 @@ impl DyadicBracket {
         }
     }
 
-    fn interval(self) -> RootInterval {
+    pub(crate) fn interval(self) -> RootInterval {
         let den = BigInt::one() << self.k as usize;
         RootInterval {
             lo: Q::new(self.a, den.clone()),
@@ -719,7 +725,7 @@ fn refine_dyadic(p: &ZPoly, iv: &mut RootInterval, width: &Q, mut br: DyadicBrac
     // many bits to gain: bisection with verified Newton steps
     let need = ((&br.b - &br.a) * wd).bits() as i64 - (wn << br.k as usize).bits() as i64;
     if need > 8 && s_lo != 0 {
-        super::newton::refine_dyadic_newton(p, iv, br.a, br.b, br.k, s_lo, width);
+        super::newton::refine_dyadic_newton(p, &signs, iv, br, s_lo, width);
         return;
     }
     // (b − a)/2^k > wn/wd  ⇔  (b − a)·wd > wn·2^k

@@ -13,11 +13,14 @@
 //! result is exactly that of bisection, only reached in far fewer rounds
 //! (about log₂(bits) instead of bits).
 
+use super::isolate::{DyadicBracket, Halved};
+use crate::number::{Q, sign_z};
 use crate::poly::ZPoly;
+use crate::poly::zpoly::DyadicSigner;
 use crate::roots::RootInterval;
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Zero};
+use num_traits::Zero;
 
 /// `(2^{kn} p(m/2^k), 2^{k(n−1)} p'(m/2^k))` for `n = deg p`: the
 /// homogenised `P(m, h) = Σ cᵢ mⁱ h^{n−i}` (h = 2^k) and `∂P/∂m`, by one
@@ -37,78 +40,69 @@ fn eval_with_derivative(p: &ZPoly, m: &BigInt, k: u64) -> (BigInt, BigInt) {
     (v, dv)
 }
 
-/// Refines `lo = a/2^k < root < hi = b/2^k` (`s_lo` = sign of p at `lo`,
-/// non-zero) until `hi − lo ≤ wn/wd`; returns the exact root if one is hit.
+/// Refines the bracket `br` around a simple root of `p` (`s_lo` = sign of p
+/// at its lower end, non-zero) until its width is at most `width`; sets
+/// `iv` to the result (an exact root if one is hit).
 pub(crate) fn refine_dyadic_newton(
     p: &ZPoly,
+    signs: &DyadicSigner,
     iv: &mut RootInterval,
-    mut a: BigInt,
-    mut b: BigInt,
-    mut k: u64,
+    mut br: DyadicBracket,
     s_lo: i32,
-    width: &crate::number::Q,
+    width: &Q,
 ) {
-    let (wn, wd) = (width.numer().clone(), width.denom().clone());
+    let (wn, wd) = (width.numer(), width.denom());
     // smallest K with 2^{1−K} ≤ wn/wd (or a little more)
-    let k_target = ((&wd << 1usize).bits() as i64 - wn.bits() as i64 + 1).max(0) as u64;
+    let k_target = ((wd << 1usize).bits() as i64 - wn.bits() as i64 + 1).max(0) as u64;
     // `slack`: bits of Newton's gain given up (grows when a check fails,
     // e.g. near clustered roots); `wait`: rounds of plain bisection before
     // the next attempt (doubles on failure), so a failing Newton costs
     // a bounded fraction of the work
     let (mut slack, mut wait, mut backoff) = (0u64, 0u32, 1u32);
-    while (&b - &a) * &wd > (&wn << k as usize) {
-        let m: BigInt = &a + &b;
-        let km = k + 1;
-        let newton = wait == 0;
-        let (s, v, dv) = if newton {
-            let (v, dv) = eval_with_derivative(p, &m, km);
-            (crate::number::sign_z(&v), v, dv)
-        } else {
-            wait -= 1;
-            (p.sign_at_dyadic(&m, km), BigInt::zero(), BigInt::zero())
+    let exact = |iv: &mut RootInterval, x: Q| {
+        *iv = RootInterval {
+            lo: x.clone(),
+            hi: x,
         };
-        if s == 0 {
-            let x = crate::number::dyadic(m, km as usize);
-            iv.lo = x.clone();
-            iv.hi = x;
-            return;
+    };
+    while (&br.b - &br.a) * wd > (wn << br.k as usize) {
+        if wait > 0 {
+            wait -= 1;
+            if let Halved::Root(r) = br.halve(signs, s_lo) {
+                return exact(iv, r);
+            }
+            continue;
         }
-        // bisection
-        if s == s_lo {
-            a = m.clone();
-            b <<= 1usize;
-        } else {
-            b = m.clone();
-            a <<= 1usize;
+        // one Horner pass gives the midpoint's sign (bisection) and p'
+        let m: BigInt = &br.a + &br.b;
+        let km = br.k + 1;
+        let (v, dv) = eval_with_derivative(p, &m, km);
+        if let Halved::Root(r) = br.halve_at(m.clone(), sign_z(&v), s_lo) {
+            return exact(iv, r);
         }
-        k = km;
-        if !newton || dv.is_zero() {
+        if dv.is_zero() {
             continue;
         }
         // Newton from the midpoint, verified at ±2^-kn
         let kn = (2 * km + 2).saturating_sub(slack).min(k_target).max(km + 2);
-        let sh = (kn - km) as usize;
-        let t = ((&m * &dv - &v) << sh).div_floor(&dv);
+        let t = ((&m * &dv - &v) << (kn - km) as usize).div_floor(&dv);
         let (tl, th) = (&t - 1, &t + 1);
-        let (al, bh) = (&a << (kn - k) as usize, &b << (kn - k) as usize);
-        let ok = tl > al && th < bh && {
-            let sl = p.sign_at_dyadic(&tl, kn);
-            let sr = p.sign_at_dyadic(&th, kn);
+        let up = (kn - br.k) as usize;
+        let inside = tl > (&br.a << up) && th < (&br.b << up);
+        let ok = inside && {
+            let (sl, sr) = (signs.sign_at(&tl, kn), signs.sign_at(&th, kn));
             if sl == 0 || sr == 0 {
-                let x = crate::number::dyadic(
-                    if sl == 0 { tl.clone() } else { th.clone() },
-                    kn as usize,
-                );
-                iv.lo = x.clone();
-                iv.hi = x;
-                return;
+                let root = if sl == 0 { tl } else { th };
+                return exact(iv, crate::number::dyadic(root, kn as usize));
             }
             sl == s_lo && sr == -s_lo
         };
         if ok {
-            a = tl;
-            b = th;
-            k = kn;
+            br = DyadicBracket {
+                a: tl,
+                b: th,
+                k: kn,
+            };
             backoff = 1;
         } else {
             slack += 2;
@@ -116,9 +110,7 @@ pub(crate) fn refine_dyadic_newton(
             backoff = (backoff * 2).min(8);
         }
     }
-    let den = BigInt::one() << k as usize;
-    iv.lo = crate::number::Q::new(a, den.clone());
-    iv.hi = crate::number::Q::new(b, den);
+    *iv = br.interval();
 }
 
 #[cfg(test)]

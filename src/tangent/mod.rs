@@ -180,6 +180,30 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         ));
     }
     let deg = surface.total_degree().unwrap_or(0);
+    // deg S ≤ 2: the pencil discriminant decides generic pairs; the others
+    // go to the separable route when it applies, else the λ-parametrisation
+    let quadric_form = if deg == 1 || deg == 2 {
+        Some(
+            QuadricForm::from_poly(surface)
+                .ok_or_else(|| Error::Internal("quadric form of a degree-2 surface".into()))?,
+        )
+    } else {
+        None
+    };
+    if let Some(form) = &quadric_form
+        && let Some(pa) = pencil::analyze(&e, form).map(|p| p.with_extremes())
+    {
+        let (vals, j) = (pa.values.clone(), pa.judging.clone());
+        return Ok(finish(
+            &e,
+            surface,
+            vals,
+            vec![],
+            j,
+            Method::Pencil(pa),
+            WitnessFinder::Pencil,
+        ));
+    }
     let (values, nonreal, judging, method, witness_fn): (
         Vec<RealAlg>,
         Vec<RealAlg>,
@@ -195,44 +219,6 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
             Method::Constant,
             WitnessFinder::None,
         )
-    } else if deg <= 2 {
-        let form = QuadricForm::from_poly(surface)
-            .ok_or_else(|| Error::Internal("quadric form of a degree-2 surface".into()))?;
-        if let Some(pa) = pencil::analyze(&e, &form).map(|p| p.with_extremes()) {
-            let (vals, j) = (pa.values.clone(), pa.judging.clone());
-            return Ok(finish(
-                &e,
-                surface,
-                vals,
-                vec![],
-                j,
-                Method::Pencil(pa),
-                WitnessFinder::Pencil,
-            ));
-        }
-        if let Some(sa) = separable::analyze(&e, surface) {
-            let (vals, nonreal) = split_values(&sa.real_values(), &sa.judging);
-            let j = sa.judging.clone();
-            return Ok(finish(
-                &e,
-                surface,
-                vals,
-                nonreal,
-                j,
-                Method::Separable(sa),
-                WitnessFinder::Separable,
-            ));
-        }
-        let an = quadric::analyze(&e, &form);
-        let real: Vec<RealAlg> = an
-            .critical
-            .iter()
-            .filter(|c| c.real)
-            .map(|c| c.value.clone())
-            .collect();
-        let (vals, nonreal) = split_values(&real, &an.judging);
-        let j = an.judging.clone();
-        (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
     } else if let Some(sa) = separable::analyze(&e, surface) {
         let (vals, nonreal) = split_values(&sa.real_values(), &sa.judging);
         let j = sa.judging.clone();
@@ -243,6 +229,17 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
             Method::Separable(sa),
             WitnessFinder::Separable,
         )
+    } else if let Some(form) = &quadric_form {
+        let an = quadric::analyze(&e, form);
+        let real: Vec<RealAlg> = an
+            .critical
+            .iter()
+            .filter(|c| c.real)
+            .map(|c| c.value.clone())
+            .collect();
+        let (vals, nonreal) = split_values(&real, &an.judging);
+        let j = an.judging.clone();
+        (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
     } else {
         let outcome = match critical::analyze(&e, surface) {
             Ok(o) => o,

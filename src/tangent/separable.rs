@@ -29,8 +29,7 @@
 
 use super::ellipsoid::Ellipsoid;
 use super::witness::{WitnessPoint, find_witness};
-use crate::natural::exact::sqrt_bounds;
-use crate::number::Q;
+use crate::number::{Q, sqrt_bounds};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::{RealAlg, value_polynomial, values_with};
