@@ -219,16 +219,62 @@ pub fn gcd_z(a: &Z, b: &Z) -> Z {
             let v = (&y % u).to_u64().unwrap_or(0);
             return Z::from(gcd_u64(u, v));
         }
-        let (bx, by) = (x.bits(), y.bits());
-        if bx.abs_diff(by) < 16 {
-            return Z::from(x.gcd(&y));
+        if x < y {
+            std::mem::swap(&mut x, &mut y);
         }
-        if bx > by {
+        // balanced operands: Lehmer's step; else (or when it certifies no
+        // quotient) one Euclidean remainder
+        if x.bits() - y.bits() >= 16 || !lehmer_step(&mut x, &mut y) {
             x %= &y;
-        } else {
-            y %= &x;
+            std::mem::swap(&mut x, &mut y);
         }
     }
+}
+
+/// One step of Lehmer's gcd (Knuth, TAOCP vol. 2, §4.5.2, Algorithm L) on
+/// `x ≥ y ≥ 2^64`: Euclid's quotients are computed on the leading 63 bits
+/// of both, with the cofactors `(a, b; c, d)` tracking the two extreme
+/// ratios the truncation allows; a quotient is used only when both
+/// extremes give the same one, so the quotients are those of the full
+/// numbers.  Then `(x, y) ← (a·x + b·y, c·x + d·y)`, two consecutive
+/// remainders of the full sequence, for four word-size products.  `false`
+/// when not even the first quotient is certified.
+fn lehmer_step(x: &mut num_bigint::BigUint, y: &mut num_bigint::BigUint) -> bool {
+    use num_traits::ToPrimitive;
+    let shift = x.bits().saturating_sub(63);
+    let top = |z: &num_bigint::BigUint| (z >> shift).to_u64().unwrap_or(0) as i128;
+    let (mut u, mut v) = (top(x), top(y));
+    let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
+    loop {
+        let (den1, den2) = (v + c, v + d);
+        if den1 <= 0 || den2 <= 0 || u + a < 0 || u + b < 0 {
+            break;
+        }
+        let q = (u + a) / den1;
+        if q != (u + b) / den2 {
+            break;
+        }
+        (a, c) = (c, a - q * c);
+        (b, d) = (d, b - q * d);
+        (u, v) = (v, u - q * v);
+    }
+    if b == 0 {
+        return false;
+    }
+    // a·x + b·y with a, b of opposite signs (likewise c, d): both results
+    // are remainders of Euclid's sequence, hence non-negative
+    let comb = |p: i128, q: i128| -> num_bigint::BigUint {
+        let (pm, qm) = (p.unsigned_abs() as u64, q.unsigned_abs() as u64);
+        if q <= 0 {
+            &*x * pm - &*y * qm
+        } else {
+            &*y * qm - &*x * pm
+        }
+    };
+    let (nx, ny) = (comb(a, b), comb(c, d));
+    *x = nx;
+    *y = ny;
+    true
 }
 
 /// Binary gcd of machine words.
@@ -255,7 +301,22 @@ fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
 
 /// Least common multiple of the denominators of a list of rationals.
 pub fn denom_lcm<'a>(xs: impl IntoIterator<Item = &'a Q>) -> Z {
-    xs.into_iter().fold(Z::one(), |acc, x| acc.lcm(x.denom()))
+    let mut l = Z::one();
+    for x in xs {
+        lcm_assign(&mut l, x.denom());
+    }
+    l
+}
+
+/// `l ← lcm(l, d)` for positive `l` and `d`, with no gcd when `d` already
+/// divides `l` (the usual case when clearing the denominators of a matrix
+/// or a polynomial: a handful of distinct denominators, many repeats).
+pub fn lcm_assign(l: &mut Z, d: &Z) {
+    if d.is_one() || (&*l % d).is_zero() {
+        return;
+    }
+    let g = gcd_z(l, d);
+    *l = &*l / g * d;
 }
 
 /// Rational bounds `(l, h)` with `l <= √x <= h` and `h − l` about `2^-bits`
@@ -322,6 +383,27 @@ mod tests {
         ];
         for (a, b) in cases {
             assert_eq!(gcd_z(&a, &b), a.gcd(&b), "gcd({a}, {b})");
+        }
+    }
+
+    proptest::proptest! {
+        /// Lehmer steps on balanced multi-word operands (with a large
+        /// common factor, so the answer is not 1) give num-bigint's gcd.
+        #[test]
+        fn lehmer_gcd_agrees(
+            a in proptest::collection::vec(proptest::num::u64::ANY, 1..6),
+            b in proptest::collection::vec(proptest::num::u64::ANY, 1..6),
+            g in proptest::collection::vec(proptest::num::u64::ANY, 0..3),
+        ) {
+            let make = |v: &[u64]| -> BigInt {
+                v.iter().fold(BigInt::zero(), |acc, &w| (acc << 64usize) + w)
+            };
+            let g = make(&g) + 1;
+            let (x, y) = (make(&a) * &g, -make(&b) * &g);
+            proptest::prop_assert_eq!(gcd_z(&x, &y), x.gcd(&y));
+            // near-equal operands: long runs of quotient 1
+            let z = &x + &g;
+            proptest::prop_assert_eq!(gcd_z(&x, &z), x.gcd(&z));
         }
     }
 

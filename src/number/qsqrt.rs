@@ -216,21 +216,51 @@ impl QSqrt {
         // √(n/m) = √(n·m)/m
         let mut rad = self.d.numer() * self.d.denom();
         let mut out = BigInt::one();
-        // the primes below 200 (composite squares are products of these);
-        // remainders by word-size divisors, no big temporaries
-        for p in PRIMES_BELOW_200 {
-            let p2 = p * p;
+        // the primes below 200 (composite squares are products of these):
+        // one pass over the words of rad per group of primes whose squares
+        // multiply to less than 2^64, then word-size remainders
+        let mut group: Vec<u64> = Vec::with_capacity(4);
+        let mut i = 0;
+        while i < PRIMES_BELOW_200.len() {
+            let p = PRIMES_BELOW_200[i];
             if rad.bits() < 2 * (64 - p.leading_zeros() as u64) - 1 {
                 break; // p² > rad
             }
-            while (&rad % p2).is_zero() {
-                rad /= p2;
-                out *= p;
+            group.clear();
+            let mut modulus: u64 = 1;
+            while i < PRIMES_BELOW_200.len() {
+                let p2 = PRIMES_BELOW_200[i] * PRIMES_BELOW_200[i];
+                match modulus.checked_mul(p2) {
+                    Some(m) => {
+                        modulus = m;
+                        group.push(PRIMES_BELOW_200[i]);
+                        i += 1;
+                    }
+                    None => break,
+                }
+            }
+            let r = rem_u64(&rad, modulus);
+            for &p in &group {
+                if !r.is_multiple_of(p * p) {
+                    continue;
+                }
+                while rem_u64(&rad, p * p) == 0 {
+                    rad /= p * p;
+                    out *= p;
+                }
             }
         }
         let coef = Q::new(out, self.d.denom().clone());
         QSqrt::new(self.a.clone(), &self.b * coef, Q::from_integer(rad))
     }
+}
+
+/// `|x| mod m` (`m > 0`) by one pass over the 64-bit words, most
+/// significant first, with no big temporary.
+fn rem_u64(x: &BigInt, m: u64) -> u64 {
+    x.magnitude().iter_u64_digits().rev().fold(0u64, |r, w| {
+        ((((r as u128) << 64) | w as u128) % m as u128) as u64
+    })
 }
 
 /// The primes below 200 (trial division in [`QSqrt::normalized`]).

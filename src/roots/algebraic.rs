@@ -7,7 +7,7 @@ use crate::number::{Q, approx_decimal, fmt_q};
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{MPoly, U};
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
 /// An exact real algebraic number.
@@ -36,11 +36,19 @@ impl RealAlg {
     /// The root of the square-free `poly` isolated by `iv`.  An exact
     /// interval gives a rational.
     pub fn from_interval(poly: &ZPoly, iv: &RootInterval) -> RealAlg {
+        Self::from_primitive(&poly.primitive_part(), iv)
+    }
+
+    /// [`RealAlg::from_interval`] for a `poly` already primitive with a
+    /// positive leading coefficient (e.g. from
+    /// [`ZPoly::squarefree_part`]): no content computed again.
+    pub fn from_primitive(poly: &ZPoly, iv: &RootInterval) -> RealAlg {
+        debug_assert!(poly.content().is_one() && poly.lc().is_positive());
         if iv.is_exact() {
             RealAlg::Rational(iv.lo.clone())
         } else {
             RealAlg::Root {
-                poly: poly.primitive_part(),
+                poly: poly.clone(),
                 lo: iv.lo.clone(),
                 hi: iv.hi.clone(),
             }
@@ -63,7 +71,7 @@ impl RealAlg {
         let sq = p.squarefree_part();
         isolate_squarefree(&sq)
             .iter()
-            .map(|iv| RealAlg::from_interval(&sq, iv))
+            .map(|iv| RealAlg::from_primitive(&sq, iv))
             .collect()
     }
 

@@ -26,10 +26,29 @@ pub fn simplest_rational_in(lo: &Q, hi: &Q) -> Q {
     if !hi.is_positive() {
         return -simplest_rational_in(&-hi, &-lo);
     }
-    // 0 <= a/b < c/d; convergent matrix [[p0, p1], [q0, q1]] maps the
-    // remaining interval back: x = (p1 t + p0)/(q1 t + q0)
-    let (mut a, mut b) = (lo.numer().clone(), lo.denom().clone());
-    let (mut c, mut d) = (hi.numer().clone(), hi.denom().clone());
+    let word = |x: &BigInt| u128::try_from(x).ok();
+    if let (Some(a), Some(b), Some(c), Some(d)) = (
+        word(lo.numer()),
+        word(lo.denom()),
+        word(hi.numer()),
+        word(hi.denom()),
+    ) && let Some((n, m)) = simplest_u128(a, b, c, d)
+    {
+        // a Stern–Brocot fraction is in lowest terms
+        return Q::new_raw(n.into(), m.into());
+    }
+    simplest_big(
+        lo.numer().clone(),
+        lo.denom().clone(),
+        hi.numer().clone(),
+        hi.denom().clone(),
+    )
+}
+
+/// [`simplest_rational_in`] on big integers: `0 ≤ a/b < c/d`.
+fn simplest_big(mut a: BigInt, mut b: BigInt, mut c: BigInt, mut d: BigInt) -> Q {
+    // convergent matrix [[p0, p1], [q0, q1]] maps the remaining interval
+    // back: x = (p1 t + p0)/(q1 t + q0)
     let (mut p0, mut p1) = (BigInt::zero(), BigInt::one());
     let (mut q0, mut q1) = (BigInt::one(), BigInt::zero());
     loop {
@@ -67,6 +86,28 @@ pub fn simplest_rational_in(lo: &Q, hi: &Q) -> Q {
         b = nb;
         c = nc;
         d = nd;
+    }
+}
+
+/// [`simplest_rational_in`] on machine words: `0 ≤ a/b < c/d`, `b, d > 0`;
+/// `None` if an intermediate overflows (then the big-integer loop runs).
+fn simplest_u128(mut a: u128, mut b: u128, mut c: u128, mut d: u128) -> Option<(u128, u128)> {
+    let (mut p0, mut p1, mut q0, mut q1) = (0u128, 1u128, 1u128, 0u128);
+    let conv = |p0: u128, p1: u128, k: u128| p1.checked_mul(k)?.checked_add(p0);
+    loop {
+        let (fa, ra) = (a / b, a % b);
+        let candidate = fa.checked_add(1)?;
+        if d == 0 || candidate.checked_mul(d)? < c {
+            return Some((conv(p0, p1, candidate)?, conv(q0, q1, candidate)?));
+        }
+        (p0, p1) = (p1, conv(p0, p1, fa)?);
+        (q0, q1) = (q1, conv(q0, q1, fa)?);
+        let cr = c - fa * d; // fa·d ≤ c here
+        if ra == 0 {
+            let k = (d / cr).checked_add(1)?;
+            return Some((conv(p0, p1, k)?, conv(q0, q1, k)?));
+        }
+        (a, b, c, d) = (d, cr, b, ra);
     }
 }
 
@@ -168,6 +209,23 @@ pub fn split_cubic(p: &ZPoly) -> (Vec<Q>, ZPoly) {
 
 #[cfg(test)]
 mod tests {
+    proptest::proptest! {
+        /// The machine-word continued fraction gives the big-integer one.
+        #[test]
+        fn word_and_big_simplest_agree(a in 0u64..1 << 40, b in 1u64..1 << 40,
+                                       w in 1u64..1 << 30, d in 1u64..1 << 40) {
+            // a/b < c/d with c/d = a/b + w/(b·d)
+            let (a, b, d) = (a as u128, b as u128, d as u128);
+            let c = a * d + w as u128;
+            let d2 = b * d;
+            let big = simplest_big(a.into(), b.into(), c.into(), d2.into());
+            let (n, m) = simplest_u128(a, b, c, d2).unwrap();
+            proptest::prop_assert_eq!(big.clone(), Q::new(n.into(), m.into()));
+            proptest::prop_assert!(Q::new(a.into(), b.into()) < big);
+            proptest::prop_assert!(big < Q::new(c.into(), d2.into()));
+        }
+    }
+
     use super::*;
     use crate::number::q;
 

@@ -71,7 +71,7 @@ impl CriticalAnalysis {
             .iter()
             .position(|v| v.cmp_exact(value) == Ordering::Equal)?;
         let approx = |bits: u32| Some(self.rur.approx_point(i, bits));
-        find_witness(e, s, want, &approx)
+        find_witness(e, s, want, false, &approx)
     }
 }
 
@@ -313,6 +313,6 @@ impl LevelSetAnalysis {
             return None;
         }
         let approx = |bits: u32| Some(rur.approx_point(0, bits));
-        find_witness(e, s, want, &approx)
+        find_witness(e, s, want, false, &approx)
     }
 }

@@ -21,6 +21,16 @@ pub struct QuadricForm {
     pub c: Q,
 }
 
+/// `k/2` of a reduced rational, without a gcd.
+fn half(k: &Q) -> Q {
+    let n = k.numer();
+    if n.is_even() {
+        Q::new_raw(n >> 1usize, k.denom().clone())
+    } else {
+        Q::new_raw(n.clone(), k.denom() << 1usize)
+    }
+}
+
 fn zero3() -> [Q; 3] {
     std::array::from_fn(|_| Q::zero())
 }
@@ -34,20 +44,27 @@ impl QuadricForm {
         let mut a: [[Q; 3]; 3] = std::array::from_fn(|_| zero3());
         let mut b = zero3();
         let mut c = Q::zero();
-        let two = Q::from_integer(2.into());
         for (e, k) in p.terms() {
-            let idx: Vec<usize> = (0..3)
-                .flat_map(|v| std::iter::repeat_n(v, e[v] as usize))
-                .collect();
-            match idx.as_slice() {
-                [] => c = k.clone(),
-                [i] => b[*i] = k / &two,
-                [i, j] if i == j => a[*i][*i] = k.clone(),
-                [i, j] => {
-                    a[*i][*j] = k / &two;
-                    a[*j][*i] = k / &two;
+            // the variables of the monomial, with multiplicity (at most two)
+            let mut idx = [0usize; 2];
+            let mut n = 0;
+            for v in 0..3 {
+                for _ in 0..e[v] {
+                    if n == 2 {
+                        return None;
+                    }
+                    idx[n] = v;
+                    n += 1;
                 }
-                _ => return None,
+            }
+            match (n, idx[0], idx[1]) {
+                (0, _, _) => c = k.clone(),
+                (1, i, _) => b[i] = half(k),
+                (_, i, j) if i == j => a[i][i] = k.clone(),
+                (_, i, j) => {
+                    a[i][j] = half(k);
+                    a[j][i] = a[i][j].clone();
+                }
             }
         }
         Some(QuadricForm { a, b, c })
@@ -134,9 +151,7 @@ pub fn common_denominator(forms: &[&QuadricForm]) -> BigInt {
     for f in forms {
         let entries = f.a.iter().flatten().chain(f.b.iter()).chain([&f.c]);
         for q in entries {
-            if !q.denom().is_one() {
-                l = l.lcm(q.denom());
-            }
+            crate::number::lcm_assign(&mut l, q.denom());
         }
     }
     l
@@ -240,56 +255,47 @@ impl Ellipsoid {
             .ok_or_else(|| Error::Internal("degree-2 polynomial without a quadric form".into()))?;
         // integer arithmetic on L·E (L > 0 clears the denominators)
         let l = common_denominator(&[&form]);
-        let mut m = form.int_matrix(&l);
-        let m1 = m[0][0].clone();
-        let m2 = &m[0][0] * &m[1][1] - &m[0][1] * &m[1][0];
-        let (_, m3) = adj3_int(&m);
-        let negated;
-        if m1.is_positive() && m2.is_positive() && m3.is_positive() {
-            negated = false;
-        } else if m1.is_negative() && m2.is_positive() && m3.is_negative() {
-            negated = true;
-            form = form.neg();
-            for row in m.iter_mut() {
-                for x in row.iter_mut() {
-                    *x = -&*x;
-                }
+        let shape = IntEllipsoid::of(&form.int_matrix(&l));
+        let c = match shape {
+            Ok(c) => c,
+            Err(Shape::Singular) => {
+                return Err(Error::input(
+                    "not-an-ellipsoid",
+                    "the quadratic part is singular (det = 0): a paraboloid, cylinder or plane pair, not an ellipsoid",
+                ));
             }
-        } else if m3.is_zero() {
-            return Err(Error::input(
-                "not-an-ellipsoid",
-                "the quadratic part is singular (det = 0): a paraboloid, cylinder or plane pair, not an ellipsoid",
-            ));
-        } else {
-            return Err(Error::input(
-                "not-an-ellipsoid",
-                "the quadratic part is not definite: a hyperboloid or cone, not an ellipsoid",
-            ));
+            Err(Shape::Indefinite) => {
+                return Err(Error::input(
+                    "not-an-ellipsoid",
+                    "the quadratic part is not definite: a hyperboloid or cone, not an ellipsoid",
+                ));
+            }
+            Err(Shape::Point(c)) => {
+                let center = c.center();
+                return Err(Error::input(
+                    "not-an-ellipsoid",
+                    format!(
+                        "the zero set is a single point ({}, {}, {}), not an ellipsoid",
+                        crate::number::fmt_q(&center[0]),
+                        crate::number::fmt_q(&center[1]),
+                        crate::number::fmt_q(&center[2])
+                    ),
+                ));
+            }
+            Err(Shape::Empty) => {
+                return Err(Error::input(
+                    "not-an-ellipsoid",
+                    "the zero set is empty (an imaginary ellipsoid: the polynomial never vanishes on real points)",
+                ));
+            }
+        };
+        let negated = c.negated;
+        if negated {
+            form = form.neg();
         }
-        // centre −A⁻¹b = −adj(A)·b / det A, and E(centre) = (c·det − bᵀ adj b)/(L det)
-        let (adj, det) = adj3_int(&m);
-        let ab: [BigInt; 3] =
-            std::array::from_fn(|i| (0..3).map(|j| &adj[i][j] * &m[j][3]).sum::<BigInt>());
-        let center: [Q; 3] = std::array::from_fn(|i| Q::new(-&ab[i], det.clone()));
-        let bab: BigInt = (0..3).map(|i| &m[i][3] * &ab[i]).sum();
-        let center_value = Q::new(&m[3][3] * &det - bab, &l * &det);
-        if center_value.is_zero() {
-            return Err(Error::input(
-                "not-an-ellipsoid",
-                format!(
-                    "the zero set is a single point ({}, {}, {}), not an ellipsoid",
-                    crate::number::fmt_q(&center[0]),
-                    crate::number::fmt_q(&center[1]),
-                    crate::number::fmt_q(&center[2])
-                ),
-            ));
-        }
-        if center_value.is_positive() {
-            return Err(Error::input(
-                "not-an-ellipsoid",
-                "the zero set is empty (an imaginary ellipsoid: the polynomial never vanishes on real points)",
-            ));
-        }
+        let center = c.center();
+        // E(centre) = value / (L·det), oriented
+        let center_value = Q::new(c.value, &l * &c.det);
         let poly = if negated { -p } else { p.clone() };
         Ok(Ellipsoid {
             poly,
@@ -299,4 +305,90 @@ impl Ellipsoid {
             negated,
         })
     }
+}
+
+/// Why an integer quadric matrix is not an ellipsoid.
+pub(crate) enum Shape {
+    /// `det A = 0`.
+    Singular,
+    /// `A` is not definite.
+    Indefinite,
+    /// The zero set is the centre alone.
+    Point(Box<IntEllipsoid>),
+    /// The zero set is empty.
+    Empty,
+}
+
+/// The centre of a quadric with a definite quadratic part, from its
+/// integer matrix `M` (of `L·q`, `L > 0`), oriented so that `A` is
+/// positive definite: centre `= −adj(A)·b / det A` with `det A > 0`.
+pub(crate) struct IntEllipsoid {
+    /// True when `q` was negated to make `A` positive definite.
+    pub negated: bool,
+    /// `−adj(A)·b` (oriented).
+    pub numer: [BigInt; 3],
+    /// `det A > 0` (oriented).
+    pub det: BigInt,
+    /// `det A · (L·q)(centre)` (oriented): negative for an ellipsoid.
+    pub value: BigInt,
+}
+
+impl IntEllipsoid {
+    /// Classifies the quadric of the integer matrix `m` (no rational
+    /// arithmetic: leading principal minors, adjugate, one value).
+    pub(crate) fn of(m: &Mat4) -> Result<IntEllipsoid, Shape> {
+        let m1 = &m[0][0];
+        let m2 = &m[0][0] * &m[1][1] - &m[0][1] * &m[1][0];
+        let (adj, m3) = adj3_int(m);
+        let negated = if m1.is_positive() && m2.is_positive() && m3.is_positive() {
+            false
+        } else if m1.is_negative() && m2.is_positive() && m3.is_negative() {
+            true
+        } else if m3.is_zero() {
+            return Err(Shape::Singular);
+        } else {
+            return Err(Shape::Indefinite);
+        };
+        // adj(−A) = adj(A) (3×3), det(−A) = −det A; b and c change sign
+        let sg = if negated { -1 } else { 1 };
+        let ab: [BigInt; 3] =
+            std::array::from_fn(|i| (0..3).map(|j| &adj[i][j] * &m[j][3]).sum::<BigInt>());
+        let bab: BigInt = (0..3).map(|i| &m[i][3] * &ab[i]).sum();
+        // det·q(centre) = c·det − bᵀ adj b, the same for −q:
+        // (−c)(−det) − (−b)ᵀ adj (−b)
+        let value = &m[3][3] * &m3 - bab;
+        let c = IntEllipsoid {
+            negated,
+            numer: std::array::from_fn(|i| -&ab[i] * sg),
+            det: m3 * sg,
+            value,
+        };
+        if c.value.is_zero() {
+            Err(Shape::Point(Box::new(c)))
+        } else if c.value.is_positive() {
+            Err(Shape::Empty)
+        } else {
+            Ok(c)
+        }
+    }
+
+    /// The centre as rationals.
+    pub(crate) fn center(&self) -> [Q; 3] {
+        std::array::from_fn(|i| Q::new(self.numer[i].clone(), self.det.clone()))
+    }
+}
+
+/// The sign of the quadric of the integer matrix `m` at the rational point
+/// `n/d` (`d > 0`): the sign of `nᵀAn + 2d·bᵀn + c·d²`.
+pub(crate) fn sign_at_int(m: &Mat4, n: &[BigInt; 3], d: &BigInt) -> i32 {
+    let mut acc = &m[3][3] * d * d;
+    for i in 0..3 {
+        let mut row = (&m[i][3] * d) << 1usize;
+        row += &m[i][i] * &n[i];
+        for j in (i + 1)..3 {
+            row += (&m[i][j] * &n[j]) << 1usize;
+        }
+        acc += row * &n[i];
+    }
+    crate::number::sign_z(&acc)
 }

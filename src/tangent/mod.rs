@@ -454,12 +454,17 @@ fn witness_for(
 
 /// Containment when S is an ellipsoid and does not meet E.
 fn containment_of(e: &Ellipsoid, s: &QMPoly, side: i32) -> Option<Containment> {
-    let se = Ellipsoid::new(s).ok()?;
+    use ellipsoid::{IntEllipsoid, common_denominator, sign_at_int};
+    let form = QuadricForm::from_poly(s)?;
+    let se = IntEllipsoid::of(&form.int_matrix(&common_denominator(&[&form]))).ok()?;
     // S oriented negative inside: the sign of the oriented S on E
     let oriented = if se.negated { -side } else { side };
     if oriented < 0 {
-        Some(Containment::EInsideS)
-    } else if e.form.eval(&se.center) < crate::number::Q::from_integer(0.into()) {
+        return Some(Containment::EInsideS);
+    }
+    // S's centre inside E (in integers: no rational normalisation)
+    let em = e.form.int_matrix(&common_denominator(&[&e.form]));
+    if sign_at_int(&em, &se.numer, &se.det) < 0 {
         Some(Containment::SInsideE)
     } else {
         Some(Containment::Apart)

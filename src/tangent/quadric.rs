@@ -15,12 +15,17 @@
 //! be irrational (a root of an irreducible quadratic or cubic factor of δ):
 //! the linear algebra then runs in the number field Q(λ₀).
 
-use super::ellipsoid::{Ellipsoid, QuadricForm};
+use super::ellipsoid::Mat4;
+use super::ellipsoid::{Ellipsoid, QuadricForm, common_denominator};
+use super::pencil::{CentreApprox, pencil_polys};
 use super::witness::{WitnessPoint, find_witness};
 use crate::number::{Q, QSqrt};
 use crate::poly::extension::{NfElem, NumberField};
 use crate::poly::{QMPoly, QPoly, ZPoly};
-use crate::roots::{RealAlg, eval_q, split_cubic, value_at, value_polynomial};
+use crate::roots::{
+    RealAlg, eval_q, isolate_squarefree, split_cubic, value_at, value_polynomial, values_with,
+};
+use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
 /// Where a critical value comes from.
@@ -66,14 +71,15 @@ pub struct LambdaAnalysis {
     pub judging: ZPoly,
     /// Witness approximations for each entry of `critical`.
     approximants: Vec<Approximant>,
+    /// The integer matrices of `L·S` and `L·E`.
+    s_mat: Mat4,
+    e_mat: Mat4,
 }
 
 #[derive(Clone, Debug)]
 enum Approximant {
-    Generic {
-        numer: [QPoly; 3],
-        delta: QPoly,
-    },
+    /// `p(λ)`: the centre of `S − λE` (integer matrices below).
+    Generic,
     Singular {
         xp: [NfElem; 3],
         kernel: Vec<[NfElem; 3]>,
@@ -82,40 +88,6 @@ enum Approximant {
 
 fn lin(c0: &Q, c1: &Q) -> QPoly {
     QPoly::new(vec![c0.clone(), c1.clone()])
-}
-
-fn det3p(m: &[[QPoly; 3]; 3]) -> QPoly {
-    let t = |a: &QPoly, b: &QPoly, c: &QPoly, d: &QPoly| &(a * b) - &(c * d);
-    &(&(&m[0][0] * &t(&m[1][1], &m[2][2], &m[1][2], &m[2][1]))
-        - &(&m[0][1] * &t(&m[1][0], &m[2][2], &m[1][2], &m[2][0])))
-        + &(&m[0][2] * &t(&m[1][0], &m[2][1], &m[1][1], &m[2][0]))
-}
-
-fn adj3p(m: &[[QPoly; 3]; 3]) -> [[QPoly; 3]; 3] {
-    let cof = |i: usize, j: usize| -> QPoly {
-        let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
-        let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
-        let v = &(&m[r[0]][c[0]] * &m[r[1]][c[1]]) - &(&m[r[0]][c[1]] * &m[r[1]][c[0]]);
-        if (i + j).is_multiple_of(2) { v } else { -v }
-    };
-    std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i)))
-}
-
-/// `pᵀ F p·… `: the value `q(N/δ)·δ²` of a quadric form at `N/δ`.
-fn form_at_rational_point(f: &QuadricForm, n: &[QPoly; 3], d: &QPoly) -> QPoly {
-    let two = Q::from_integer(2.into());
-    let mut acc = QPoly::zero();
-    for i in 0..3 {
-        for j in 0..3 {
-            if !f.a[i][j].is_zero() {
-                acc = &acc + &(&n[i] * &n[j]).map(|c| c * &f.a[i][j]);
-            }
-        }
-        if !f.b[i].is_zero() {
-            acc = &acc + &(d * &n[i]).map(|c| c * &f.b[i] * &two);
-        }
-    }
-    &acc + &(d * d).map(|c| c * &f.c)
 }
 
 fn form_eval_k(k: &NumberField, f: &QuadricForm, p: &[NfElem; 3]) -> NfElem {
@@ -232,22 +204,19 @@ pub fn analyze(e: &Ellipsoid, s: &QuadricForm) -> LambdaAnalysis {
     let m: [[QPoly; 3]; 3] =
         std::array::from_fn(|i| std::array::from_fn(|j| lin(&s.a[i][j], &-&a[i][j])));
     let r: [QPoly; 3] = std::array::from_fn(|i| lin(&-&s.b[i], &e.form.b[i]));
-    let delta = det3p(&m);
-    let adj = adj3p(&m);
-    let numer: [QPoly; 3] = std::array::from_fn(|i| {
-        let mut acc = QPoly::zero();
-        for j in 0..3 {
-            acc = &acc + &(&adj[i][j] * &r[j]);
-        }
-        acc
-    });
-    let secular = form_at_rational_point(&e.form, &numer, &delta);
-    let value_num = form_at_rational_point(s, &numer, &delta);
-    let delta2 = &delta * &delta;
+    // δ and P from the integer pencil of Ŝ = L·S, Ê = L·E (see `pencil`):
+    // δ̂ = L³δ, and P̂ = F̂'δ̂ − F̂δ̂' = δ̂²·ĝ' with ĝ' = −Ê(p(λ)) = −L·E(p(λ)),
+    // so P = E(p(λ))·δ² = −P̂ / L⁷
+    let l = common_denominator(&[&e.form, s]);
+    let (s_mat, e_mat) = (s.int_matrix(&l), e.form.int_matrix(&l));
+    let (f, fd) = pencil_polys(&s_mat, &e_mat);
+    let p_hat = &(&f.derivative() * &fd) - &(&f * &fd.derivative());
+    let delta = fd.to_q().scale(&Q::new(BigInt::one(), l.pow(3)));
+    let secular = p_hat.to_q().scale(&Q::new(-BigInt::one(), l.pow(7)));
 
     // remove from P every root it shares with δ
-    let (dz, _) = ZPoly::from_q(&delta);
-    let (mut pz, _) = ZPoly::from_q(&secular);
+    let dz = fd.primitive_part();
+    let mut pz = p_hat.primitive_part();
     loop {
         let g = pz.gcd(&dz);
         if g.degree().unwrap_or(0) == 0 {
@@ -261,19 +230,26 @@ pub fn analyze(e: &Ellipsoid, s: &QuadricForm) -> LambdaAnalysis {
     let mut approximants = Vec::new();
     let mut judging = ZPoly::constant(1.into());
     if pz.degree().unwrap_or(0) > 0 {
-        judging = &judging * &value_polynomial(&pz.squarefree_part(), &value_num, &delta2);
-        for lam in RealAlg::roots_of(&pz) {
-            if let Some(v) = value_at(&lam, &value_num, &delta2) {
+        // at a root of P off the roots of δ the value is
+        // S(p(λ)) = (S − λE)(p(λ)) = F̂(λ) / (L·δ̂(λ)) (Schur complement)
+        let (num, den) = (f.to_q(), fd.scale(&l).to_q());
+        let sq = pz.squarefree_part();
+        let vp = value_polynomial(&sq, &num, &den);
+        judging = &judging * &vp;
+        let roots: Vec<RealAlg> = isolate_squarefree(&sq)
+            .iter()
+            .map(|iv| RealAlg::from_primitive(&sq, iv))
+            .collect();
+        let values = values_with(&sq, &roots, &num, &den, &vp);
+        for (lam, v) in roots.into_iter().zip(values) {
+            if let Some(v) = v {
                 critical.push(LambdaCritical {
                     lambda: lam,
                     value: v,
                     real: true,
                     branch: Branch::Generic,
                 });
-                approximants.push(Approximant::Generic {
-                    numer: numer.clone(),
-                    delta: delta.clone(),
-                });
+                approximants.push(Approximant::Generic);
             }
         }
     }
@@ -368,6 +344,8 @@ pub fn analyze(e: &Ellipsoid, s: &QuadricForm) -> LambdaAnalysis {
         critical,
         judging,
         approximants,
+        s_mat,
+        e_mat,
     }
 }
 
@@ -378,18 +356,16 @@ impl LambdaAnalysis {
         if !crit.real {
             return None;
         }
+        if let Approximant::Generic = self.approximants[i] {
+            let approx = CentreApprox::new(crit.lambda.clone(), &self.s_mat, &self.e_mat);
+            return find_witness(e, s, want, true, &|bits| approx.at(bits));
+        }
         let lam = crit.lambda.clone();
         let form = e.form.clone();
         let approx = |bits: u32| -> Option<[Q; 3]> {
             let l = lam.to_rational_approx(bits);
             match &self.approximants[i] {
-                Approximant::Generic { numer, delta } => {
-                    let d = eval_q(delta, &l);
-                    if d.is_zero() {
-                        return None;
-                    }
-                    Some(std::array::from_fn(|j| eval_q(&numer[j], &l) / &d))
-                }
+                Approximant::Generic => None,
                 Approximant::Singular { xp, kernel } => {
                     let x0: [Q; 3] = std::array::from_fn(|j| eval_q(&xp[j], &l));
                     let vs: Vec<[Q; 3]> = kernel
@@ -425,7 +401,7 @@ impl LambdaAnalysis {
                 }
             }
         };
-        find_witness(e, s, want, &approx)
+        find_witness(e, s, want, false, &approx)
     }
 }
 
@@ -469,6 +445,73 @@ fn solve_rational_spd(f: &QuadricForm, vs: &[[Q; 3]], h: &[Q; 3]) -> Option<Vec<
 
 #[cfg(test)]
 mod tests {
+
+    // the rational λ-parametrisation written out (the formulas of the
+    // module doc), as an oracle for the integer pencil used by `analyze`
+    fn det3p(m: &[[QPoly; 3]; 3]) -> QPoly {
+        let t = |a: &QPoly, b: &QPoly, c: &QPoly, d: &QPoly| &(a * b) - &(c * d);
+        &(&(&m[0][0] * &t(&m[1][1], &m[2][2], &m[1][2], &m[2][1]))
+            - &(&m[0][1] * &t(&m[1][0], &m[2][2], &m[1][2], &m[2][0])))
+            + &(&m[0][2] * &t(&m[1][0], &m[2][1], &m[1][1], &m[2][0]))
+    }
+
+    fn adj3p(m: &[[QPoly; 3]; 3]) -> [[QPoly; 3]; 3] {
+        let cof = |i: usize, j: usize| -> QPoly {
+            let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
+            let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
+            let v = &(&m[r[0]][c[0]] * &m[r[1]][c[1]]) - &(&m[r[0]][c[1]] * &m[r[1]][c[0]]);
+            if (i + j).is_multiple_of(2) { v } else { -v }
+        };
+        std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i)))
+    }
+
+    /// `pᵀ F p·… `: the value `q(N/δ)·δ²` of a quadric form at `N/δ`.
+    fn form_at_rational_point(f: &QuadricForm, n: &[QPoly; 3], d: &QPoly) -> QPoly {
+        let two = Q::from_integer(2.into());
+        let mut acc = QPoly::zero();
+        for i in 0..3 {
+            for j in 0..3 {
+                if !f.a[i][j].is_zero() {
+                    acc = &acc + &(&n[i] * &n[j]).map(|c| c * &f.a[i][j]);
+                }
+            }
+            if !f.b[i].is_zero() {
+                acc = &acc + &(d * &n[i]).map(|c| c * &f.b[i] * &two);
+            }
+        }
+        &acc + &(d * d).map(|c| c * &f.c)
+    }
+
+    #[test]
+    fn integer_pencil_gives_the_secular_polynomial() {
+        for (e, s) in [
+            ("x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1"),
+            (
+                "3x^2+2xy+4y^2-2yz+5z^2+x-7z-30",
+                "x^2/3-4xz+2y^2+yz/5-z^2+6x-y+2z-11/7",
+            ),
+            ("2x^2+3y^2+4z^2-25", "x+2y-z/3-1"),
+        ] {
+            let e = Ellipsoid::new(&parse_poly(e).unwrap()).unwrap();
+            let s = QuadricForm::from_poly(&parse_poly(s).unwrap()).unwrap();
+            let a = &e.form.a;
+            let m: [[QPoly; 3]; 3] =
+                std::array::from_fn(|i| std::array::from_fn(|j| lin(&s.a[i][j], &-&a[i][j])));
+            let r: [QPoly; 3] = std::array::from_fn(|i| lin(&-&s.b[i], &e.form.b[i]));
+            let delta = det3p(&m);
+            let adj = adj3p(&m);
+            let numer: [QPoly; 3] = std::array::from_fn(|i| {
+                let mut acc = QPoly::zero();
+                for j in 0..3 {
+                    acc = &acc + &(&adj[i][j] * &r[j]);
+                }
+                acc
+            });
+            let an = analyze(&e, &s);
+            assert_eq!(an.delta, delta);
+            assert_eq!(an.secular, form_at_rational_point(&e.form, &numer, &delta));
+        }
+    }
     use super::*;
     use crate::number::q;
     use crate::poly::parse_poly;

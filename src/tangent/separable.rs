@@ -239,7 +239,7 @@ impl SeparableAnalysis {
             }
             Some(p)
         };
-        find_witness(e, s, want, &approx)
+        find_witness(e, s, want, false, &approx)
     }
 }
 

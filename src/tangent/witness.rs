@@ -11,7 +11,6 @@ use crate::number::{Q, QSqrt};
 use crate::poly::QMPoly;
 use crate::poly::mpoly::NVARS;
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 /// A point of E: coordinates in Q(√d) (at most one irrational coordinate).
@@ -140,14 +139,23 @@ pub fn snap_to_ellipsoid(e: &Ellipsoid, p: &[Q; 3]) -> Option<[QSqrt; 3]> {
 
 /// Tries to turn approximations of a point of E (given for increasing
 /// precision by `approx(bits)`) into a witness on which S has the sign
-/// `want`.  Gives up after 2^10 bits.
+/// `want`.  With `coarse_first`, `approx(0)` is tried first: the caller's
+/// cheapest approximation, whatever its precision.  Gives up after 2^10
+/// bits.
 pub fn find_witness(
     e: &Ellipsoid,
     s: &QMPoly,
     want: i32,
+    coarse_first: bool,
     approx: &dyn Fn(u32) -> Option<[Q; 3]>,
 ) -> Option<WitnessPoint> {
     let fast = IntegerData::new(e, s);
+    if coarse_first
+        && let Some(p) = approx(0)
+        && let Some(w) = fast.witness(&round_point(&p, 8), Some(want))
+    {
+        return Some(w);
+    }
     let mut bits = 8;
     while bits <= 1024 {
         if let Some(p) = approx(bits + 16)
@@ -160,17 +168,20 @@ pub fn find_witness(
     None
 }
 
-/// Replaces each coordinate by the simplest rational within `2^-bits`, so
+/// Replaces each coordinate by a simplest rational within `2^-bits`, so
 /// that witnesses have short coordinates.
 fn round_point(p: &[Q; 3], bits: u32) -> [Q; 3] {
     std::array::from_fn(|i| {
-        // (n·2^b ∓ d) / (d·2^b), unreduced: the continued fraction needs no gcd
-        let (n, d) = (p[i].numer(), p[i].denom());
-        let n2 = n << bits as usize;
-        let d2 = d << bits as usize;
-        let lo = Q::new_raw(&n2 - d, d2.clone());
-        let hi = Q::new_raw(&n2 + d, d2);
-        crate::roots::simplest_rational_in(&lo, &hi)
+        // X = ⌊x·2^k⌋ with k = bits + 2 (one division): x ∈ [X, X+1)/2^k,
+        // so [(X − 3)/2^k, (X + 3)/2^k] lies within 2^-bits of x, and its
+        // continued fraction runs on integers of about k + log|x| bits
+        let k = bits as usize + 2;
+        let x = num_integer::Integer::div_floor(&(p[i].numer() << k), p[i].denom());
+        let den = BigInt::one() << k;
+        crate::roots::simplest_rational_in(
+            &Q::new_raw(&x - 3, den.clone()),
+            &Q::new_raw(x + 3, den),
+        )
     })
 }
 
@@ -201,9 +212,7 @@ impl IntegerData {
         let m = e.form.int_matrix(&l);
         let mut s_den = BigInt::one();
         for (_, c) in s.terms() {
-            if !c.denom().is_one() {
-                s_den = s_den.lcm(c.denom());
-            }
+            crate::number::lcm_assign(&mut s_den, c.denom());
         }
         let s_terms = s
             .terms()
@@ -227,9 +236,7 @@ impl IntegerData {
         // p = P / D with a common denominator D
         let mut dd = BigInt::one();
         for c in p {
-            if !c.denom().is_one() {
-                dd = dd.lcm(c.denom());
-            }
+            crate::number::lcm_assign(&mut dd, c.denom());
         }
         let pp: [BigInt; 3] = std::array::from_fn(|i| p[i].numer() * (&dd / p[i].denom()));
         // D·L·(A p + b): pick the axis of the largest |component|
