@@ -211,6 +211,34 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         median: m,
         samples: n,
     });
+    // each pair on its own: the median over the pairs of their medians is
+    // the typical verdict; the slowest pair is reported beside it
+    let mut per_pair: Vec<(f64, usize)> = pairs
+        .iter()
+        .enumerate()
+        .map(|(i, (e, s))| {
+            let (t, _) = measure(|| {
+                black_box(decide(e, s).ok());
+            });
+            (t, i)
+        })
+        .collect();
+    per_pair.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (slow, which) = per_pair[per_pair.len() - 1];
+    rows.push(Row {
+        suite: "tangent",
+        id: "quadric_pairs_median".into(),
+        desc: "full verdict, quadric S: median over the 16 pairs of each pair's median".into(),
+        median: per_pair[per_pair.len() / 2].0,
+        samples: per_pair.len(),
+    });
+    rows.push(Row {
+        suite: "tangent",
+        id: "quadric_pairs_slowest".into(),
+        desc: format!("full verdict, quadric S: the slowest of the 16 pairs (pair {which})"),
+        median: slow,
+        samples: per_pair.len(),
+    });
     for (id, e, s) in [
         ("paper_ex1", "x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1"),
         (

@@ -511,3 +511,21 @@ proptest! {
         }
     }
 }
+
+/// `docs/quadric_pairs.json` (read by `scripts/bench_quadric_anchor.py` for
+/// the FLINT/sympy comparison) holds exactly the benchmark's quadric pairs.
+#[test]
+fn committed_quadric_pairs_match_the_benchmark() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/quadric_pairs.json"
+    ))
+    .unwrap();
+    let file: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
+    let pairs = quadsect::bench::quadric_pairs().unwrap();
+    assert_eq!(file.len(), pairs.len());
+    for (f, (e, s)) in file.iter().zip(&pairs) {
+        assert_eq!(f["E"].as_str().unwrap(), e.to_string_canonical());
+        assert_eq!(f["S"].as_str().unwrap(), s.to_string_canonical());
+    }
+}

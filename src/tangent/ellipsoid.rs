@@ -161,7 +161,13 @@ impl QuadricForm {
     /// The 4×4 matrix of `l·q`; `l` must clear every denominator (see
     /// [`common_denominator`]).
     pub fn int_matrix(&self, l: &BigInt) -> Mat4 {
-        let z = |q: &Q| -> BigInt { (q.numer() * l) / q.denom() };
+        let z = |q: &Q| -> BigInt {
+            if q.denom().is_one() {
+                q.numer() * l
+            } else {
+                q.numer() * (l / q.denom())
+            }
+        };
         std::array::from_fn(|i| {
             std::array::from_fn(|j| match (i, j) {
                 (3, 3) => z(&self.c),
