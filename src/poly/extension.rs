@@ -62,6 +62,11 @@ impl NumberField {
         if a.is_zero() {
             return None;
         }
+        if a.degree() == Some(0) {
+            // a constant (every element of a degree-1 field, e.g. a
+            // rational multiplier): no extended gcd
+            return Some(QPoly::constant(Q::one() / a.coeff(0)));
+        }
         let (g, s, _) = a.gcdext(&self.modulus);
         // φ irreducible and a ≠ 0 mod φ: gcd is 1
         if g.degree() != Some(0) {
@@ -83,5 +88,32 @@ impl NumberField {
     /// Zero.
     pub fn zero(&self) -> NfElem {
         QPoly::new(vec![Q::zero()])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inverses_multiply_to_one() {
+        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+        // Q(√2) and the degree-1 field Q (λ = 3/5)
+        for phi in [
+            QPoly::new(vec![q(-2, 1), Q::zero(), Q::one()]),
+            QPoly::new(vec![q(-3, 5), Q::one()]),
+        ] {
+            let k = NumberField::new(&phi);
+            for a in [
+                QPoly::constant(q(-7, 3)),
+                QPoly::new(vec![q(1, 2), q(3, 1)]),
+                k.gen_elem(),
+            ] {
+                let a = k.reduce(&a);
+                let inv = k.inv(&a).unwrap();
+                assert_eq!(k.mul(&a, &inv), k.one(), "{a:?} in {phi:?}");
+            }
+            assert!(k.inv(&k.zero()).is_none());
+        }
     }
 }

@@ -197,6 +197,14 @@ fn meets(iv: &RootInterval, lo: &Q, hi: &Q) -> bool {
 /// polynomial in `u`: its roots include `num(α)/den(α)` for every root α of
 /// φ with `den(α) != 0`.
 pub fn value_polynomial(phi: &ZPoly, num: &QPoly, den: &QPoly) -> ZPoly {
+    if phi.degree() == Some(1) {
+        // one rational root r: the value polynomial is den(r)·u − num(r)
+        let r = Q::new(-phi.coeff(0), phi.coeff(1));
+        let (d, n) = (eval_q(den, &r), eval_q(num, &r));
+        if !d.is_zero() {
+            return ZPoly::from_q(&QPoly::new(vec![-n, d])).0;
+        }
+    }
     let phi_m = MPoly::from_univariate(&phi.to_q(), T);
     let u = MPoly::<Q>::var(U);
     let den_m = MPoly::from_univariate(den, T);
