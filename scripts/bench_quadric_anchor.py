@@ -27,11 +27,14 @@ folder (default <repo root>/../shared, override with --shared) and used as is:
 
 Methods (names as in bench_elimination.py, same default set as there): flint.chain,
 flint.branch, sympy.chain, sympy.branch, sympy.groebner (choose with
---methods). flint.* runs are done one at a time first; the other methods then
-run --jobs at a time (default 2), each in its own subprocess; that parallel
-pass mostly serves to find the timeouts, and every non-flint run that finished
-in it is then timed again alone (serially) and that timing is the one reported
-(the parallel one is kept as parallel_pass_median_s; --no-retime skips this).
+--methods). Every run is its own subprocess. The quick methods (all but
+sympy.groebner) run one at a time. sympy.groebner, which times out on most
+pairs, runs --jobs at a time (default 2) to find the timeouts in reasonable
+time; each groebner run that finished in that parallel pass is then timed
+again alone, and that serial timing is the one reported (the parallel one is
+kept as parallel_pass_median_s; --no-retime skips the second pass). Note that a
+timeout in the parallel pass means > cap seconds of wall time while sharing
+the cores.
 
 What each method computes is only the eliminant D(u) (or fails to): no root
 isolation, no min/max of S on E, no certificate, i.e. less than quadsect's
@@ -60,6 +63,7 @@ DEFAULT_SHARED = os.path.normpath(os.path.join(REPO, "..", "shared"))
 ENV_SHARED = "QUADRIC_ANCHOR_SHARED"
 ENV_PAIRS = "QUADRIC_ANCHOR_PAIRS"
 DEFAULT_METHODS = ["flint.chain", "flint.branch", "sympy.chain", "sympy.branch", "sympy.groebner"]
+PARALLEL_METHODS = {"sympy.groebner"}   # slow, mostly timeouts: found in a parallel pass
 
 
 def load_bench(shared):
@@ -270,9 +274,9 @@ def main():
     ap.add_argument("--pairs", default=os.path.join(REPO, "docs", "quadric_pairs.json"))
     ap.add_argument("--out", default=os.path.join(REPO, "docs", "quadric_anchor_results.json"))
     ap.add_argument("--cap", type=float, default=60.0, help="wall-clock cap in s for the first run of one method on one pair")
-    ap.add_argument("--jobs", type=int, default=2, help="parallel subprocesses for the non-flint methods")
+    ap.add_argument("--jobs", type=int, default=2, help="parallel subprocesses for sympy.groebner's first pass")
     ap.add_argument("--no-retime", action="store_true",
-                    help="keep the timings of the parallel pass (default: re-time finished non-flint runs serially)")
+                    help="keep the timings of the parallel pass (default: re-time its finished runs serially)")
     ap.add_argument("--methods", default=",".join(DEFAULT_METHODS))
     ap.add_argument("--only", default=None, help="comma-separated pair indices")
     args = ap.parse_args()
@@ -300,8 +304,8 @@ def main():
         by_name[name]["methods"][m] = r
         print(f"{name} {m:15s} {cell(r)}", flush=True)
 
-    fast = [m for m in methods if m.startswith("flint")]
-    slow = [m for m in methods if not m.startswith("flint")]
+    fast = [m for m in methods if m not in PARALLEL_METHODS]
+    slow = [m for m in methods if m in PARALLEL_METHODS]
     for m in fast:                      # quick: one at a time, nothing else running
         for p in per_pair:
             task(p["name"], m)
@@ -312,7 +316,7 @@ def main():
     if args.jobs > 1 and not args.no_retime:
         # the parallel pass mainly finds the timeouts; whatever finished is timed again
         # one at a time, so that no two measured runs share the 2 cores
-        print("re-timing the finished non-flint runs one at a time", flush=True)
+        print("re-timing the finished parallel-pass runs one at a time", flush=True)
         for m in slow:
             for p in per_pair:
                 first = p["methods"][m]
@@ -342,7 +346,8 @@ def main():
         "bench_elimination": be_path,
         "pairs_file": os.path.abspath(args.pairs),
         "cap_s_first_run": args.cap,
-        "jobs_non_flint": args.jobs,
+        "jobs_parallel_pass": args.jobs,
+        "parallel_pass_methods": sorted(PARALLEL_METHODS & set(methods)),
         "retimed_serially": args.jobs > 1 and not args.no_retime,
         "sympy_ground_types": ground,
         "repetitions": "bench_elimination.child: up to 11 runs if the first takes < 50 ms, else up to 5, "
