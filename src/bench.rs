@@ -59,6 +59,15 @@ pub fn measure(mut f: impl FnMut()) -> (f64, usize) {
     (samples[samples.len() / 2], samples.len())
 }
 
+/// [`measure`] of `f` applied to the items in turn (one item per call).
+fn measure_cycled<T>(items: &[T], mut f: impl FnMut(&T)) -> (f64, usize) {
+    let mut k = 0;
+    measure(|| {
+        f(&items[k % items.len()]);
+        k += 1;
+    })
+}
+
 fn zpoly_of(v: &Value) -> Option<crate::poly::ZPoly> {
     let cs: Option<Vec<num_bigint::BigInt>> = v
         .as_array()?
@@ -198,10 +207,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
     use crate::poly::parse_poly;
     use crate::tangent::decide;
     let pairs = quadric_pairs()?;
-    let mut k = 0;
-    let (m, n) = measure(|| {
-        let (e, s) = &pairs[k % pairs.len()];
-        k += 1;
+    let (m, n) = measure_cycled(&pairs, |(e, s)| {
         black_box(decide(e, s).ok());
     });
     rows.push(Row {
@@ -477,10 +483,7 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         })
         .filter_map(|(a, b)| Some((a.ok()?, b.ok()?)))
         .collect();
-    let mut k = 0;
-    let (m, n) = measure(|| {
-        let (a, b) = &generic[k % generic.len()];
-        k += 1;
+    let (m, n) = measure_cycled(&generic, |(a, b)| {
         black_box(classify(a, b).ok());
     });
     rows.push(Row {
