@@ -3,7 +3,7 @@
 //! line (or even an internal failure) yields an error line and the batch
 //! goes on.
 
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use serde_json::{Map, Value, json};
 use std::io::{BufRead, Write};
 
@@ -12,13 +12,16 @@ pub const CHUNK: usize = 2048;
 
 fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
     obj.get(name)
-        .ok_or_else(|| Error::input("missing-field", format!("missing field \"{name}\"")))
+        .ok_or_else(|| Error::new(ErrorKind::MissingField, format!("missing field \"{name}\"")))
 }
 
 fn str_field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, Error> {
-    field(obj, name)?
-        .as_str()
-        .ok_or_else(|| Error::input("bad-field", format!("field \"{name}\" must be a string")))
+    field(obj, name)?.as_str().ok_or_else(|| {
+        Error::new(
+            ErrorKind::BadField,
+            format!("field \"{name}\" must be a string"),
+        )
+    })
 }
 
 /// Runs one operation given as a JSON object (`op` and its arguments) and
@@ -57,8 +60,8 @@ pub fn run_op(obj: &Map<String, Value>) -> Result<Value, Error> {
             let r = crate::natural::classify(&q("a")?, &q("b")?)?;
             Ok(crate::report::natural_json(&r))
         }
-        other => Err(Error::input(
-            "unknown-op",
+        other => Err(Error::new(
+            ErrorKind::UnknownOp,
             format!("unknown op \"{other}\" (expected tangent, natural, roots or resultant)"),
         )),
     }
@@ -71,8 +74,8 @@ pub fn answer_line(line: &str) -> Value {
     let (id, result) = match parsed {
         Err(e) => (
             Value::Null,
-            Err(Error::input(
-                "json",
+            Err(Error::new(
+                ErrorKind::Json,
                 if line.trim().is_empty() {
                     "empty line (expected a JSON object)".to_string()
                 } else {
@@ -83,18 +86,21 @@ pub fn answer_line(line: &str) -> Value {
         Ok(Value::Object(obj)) => {
             let id = obj.get("id").cloned().unwrap_or(Value::Null);
             let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_op(&obj)))
-                .unwrap_or_else(|p| Err(Error::Internal(panic_message(&p))));
+                .unwrap_or_else(|p| Err(Error::internal(panic_message(&p))));
             (id, r)
         }
         Ok(_) => (
             Value::Null,
-            Err(Error::input("json", "each line must be a JSON object")),
+            Err(Error::new(
+                ErrorKind::Json,
+                "each line must be a JSON object",
+            )),
         ),
     };
     match result {
         Ok(v) => json!({"id": id, "ok": true, "result": v}),
         Err(e) => {
-            json!({"id": id, "ok": false, "error": {"kind": e.kind(), "message": e.message()}})
+            json!({"id": id, "ok": false, "error": {"kind": e.kind().as_str(), "message": e.message()}})
         }
     }
 }

@@ -6,7 +6,7 @@
 //! `../shared/bench/bench_anchors.py` in the same session; the ratios are in
 //! `docs/BENCHMARKS.md`.
 
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use serde_json::{Value, json};
 use std::hint::black_box;
 use std::time::Instant;
@@ -79,7 +79,7 @@ fn zpoly_of(v: &Value) -> Option<crate::poly::ZPoly> {
 
 /// The kernel suite on the shared inputs.
 pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
-    let bad = || Error::input("bench", "unexpected format of inputs.json");
+    let bad = || Error::new(ErrorKind::Input, "unexpected format of inputs.json");
     for case in inputs["resultant"].as_array().ok_or_else(bad)? {
         let f = zpoly_of(&case["f"]).ok_or_else(bad)?;
         let g = zpoly_of(&case["g"]).ok_or_else(bad)?;
@@ -518,13 +518,13 @@ pub fn run(suite: &str, inputs_path: &str) -> Result<Vec<Row>, Error> {
     let all = suite == "all";
     if all || suite == "kernel" {
         let text = std::fs::read_to_string(inputs_path).map_err(|e| {
-            Error::input(
-                "io",
+            Error::new(
+                ErrorKind::Io,
                 format!("cannot read {inputs_path}: {e} (use --inputs PATH)"),
             )
         })?;
         let v: Value = serde_json::from_str(&text)
-            .map_err(|e| Error::input("json", format!("{inputs_path}: {e}")))?;
+            .map_err(|e| Error::new(ErrorKind::Json, format!("{inputs_path}: {e}")))?;
         kernel_suite(&v, &mut rows)?;
     }
     if all || suite == "tangent" {
@@ -534,8 +534,8 @@ pub fn run(suite: &str, inputs_path: &str) -> Result<Vec<Row>, Error> {
         natural_suite(&mut rows)?;
     }
     if !all && !["kernel", "tangent", "natural"].contains(&suite) {
-        return Err(Error::input(
-            "input",
+        return Err(Error::new(
+            ErrorKind::Input,
             format!("unknown suite \"{suite}\" (kernel, tangent, natural or all)"),
         ));
     }

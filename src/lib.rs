@@ -8,6 +8,7 @@
 
 pub mod batch;
 pub mod bench;
+pub mod budget;
 pub mod elim;
 pub mod error;
 pub mod examples;
@@ -18,3 +19,5 @@ pub mod poly;
 pub mod report;
 pub mod roots;
 pub mod tangent;
+
+pub use error::{Error, ErrorKind};

@@ -1,7 +1,7 @@
 //! The `quadsect` command line: argument parsing and dispatch only.
 
 use clap::{Parser, Subcommand};
-use quadsect::error::Error;
+use quadsect::{Error, ErrorKind};
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 
@@ -167,12 +167,12 @@ fn run(cli: Cli) -> Result<(), Error> {
                 }
                 Some(path) => {
                     let f = std::fs::File::open(path).map_err(|e| {
-                        Error::input("io", format!("cannot open batch file {path}: {e}"))
+                        Error::new(ErrorKind::Io, format!("cannot open batch file {path}: {e}"))
                     })?;
                     quadsect::batch::run_batch(std::io::BufReader::new(f), out, progress)
                 }
             };
-            res.map_err(|e| Error::input("io", format!("batch I/O error: {e}")))?;
+            res.map_err(|e| Error::new(ErrorKind::Io, format!("batch I/O error: {e}")))?;
         }
     }
     Ok(())

@@ -3,7 +3,7 @@
 //! these return through [`crate::report`].
 
 use crate::elim::resultant_mpoly;
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::poly::mpoly::{QMPoly, VAR_NAMES, var_index};
 use crate::poly::{ZPoly, parse_poly};
 use crate::roots::{RootReport, analyze_roots};
@@ -33,8 +33,8 @@ pub fn roots(expr: &str) -> Result<RootsResult, Error> {
     let vars = p.vars();
     if vars.len() > 1 {
         let names: Vec<&str> = vars.iter().map(|&v| VAR_NAMES[v]).collect();
-        return Err(Error::input(
-            "not-univariate",
+        return Err(Error::new(
+            ErrorKind::NotUnivariate,
             format!(
                 "roots needs a univariate polynomial, but the expression has the variables {}",
                 names.join(", ")
@@ -42,15 +42,15 @@ pub fn roots(expr: &str) -> Result<RootsResult, Error> {
         ));
     }
     if p.is_zero() {
-        return Err(Error::input(
-            "zero-polynomial",
+        return Err(Error::new(
+            ErrorKind::ZeroPolynomial,
             "the zero polynomial has every number as a root; roots needs a non-zero polynomial",
         ));
     }
     let v = vars.first().copied().unwrap_or(0);
     let uq = p
         .to_univariate(v)
-        .ok_or_else(|| Error::Internal("univariate conversion failed".into()))?;
+        .ok_or_else(|| Error::internal("univariate conversion failed"))?;
     let (z, _) = ZPoly::from_q(&uq);
     let report = analyze_roots(&z);
     Ok(RootsResult {
@@ -81,8 +81,8 @@ pub fn resultant(f: &str, g: &str, var: &str) -> Result<ResultantResult, Error> 
     let v = match var_index(var.trim()) {
         Some(v) if v <= 3 => v,
         _ => {
-            return Err(Error::input(
-                "input",
+            return Err(Error::new(
+                ErrorKind::Input,
                 format!("unknown variable '{var}' for --var (use x, y, z or u)"),
             ));
         }

@@ -189,8 +189,8 @@ fn gauss_jordan_ff(
                 if !prev.is_one() && !t.is_zero() {
                     let (q, rem) = t.div_rem(&prev);
                     if !rem.is_zero() {
-                        return Err(crate::error::Error::Internal(
-                            "fraction-free elimination: inexact division".into(),
+                        return Err(crate::error::Error::internal(
+                            "fraction-free elimination: inexact division",
                         ));
                     }
                     t = q;
@@ -257,7 +257,7 @@ pub fn krylov_shape(
         .collect();
     let (pivots, d, dep) = gauss_jordan_ff(&mut a, n + 1)?;
     let k = dep.ok_or_else(|| {
-        crate::error::Error::Internal("n + 1 Krylov vectors in dimension n are independent".into())
+        crate::error::Error::internal("n + 1 Krylov vectors in dimension n are independent")
     })?;
     // w_k = Σ c_i w_i with c_i = A[r_i][k] / D;  mᵏ v = Σ c_i L^(i−k) mⁱ v
     let lq = Q::from_integer(l.clone());

@@ -96,9 +96,8 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
             match axes.as_ref() {
                 Some(AxesRelation::Coincident) => (same_axis(a, b), "common axis (circles)"),
                 Some(AxesRelation::Intersecting(_)) | Some(AxesRelation::Parallel) => {
-                    let h = AxialPlane::new(a, b).ok_or_else(|| {
-                        Error::Internal("coplanar axes without an axial plane".into())
-                    })?;
+                    let h = AxialPlane::new(a, b)
+                        .ok_or_else(|| Error::internal("coplanar axes without an axial plane"))?;
                     let pencil = pencil_has_planar_member(a, b);
                     let lemma = h.lemma81_planar();
                     if t8.is_some_and(|t| t != lemma) || pencil != lemma {

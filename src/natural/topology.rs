@@ -398,9 +398,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
             return Ok(false);
         }
     }
-    Err(Error::Internal(
-        "the sweep found no generic linear form".into(),
-    ))
+    Err(Error::internal("the sweep found no generic linear form"))
 }
 
 /// Exact coordinates of a real zero, in Q(√d) when possible.
@@ -424,7 +422,7 @@ pub fn classify_nonplanar(
         }
     }
     let sing = singular_points(&f1, &f2)?.ok_or_else(|| {
-        Error::Internal("the intersection is singular along a curve in a non-planar case".into())
+        Error::internal("the intersection is singular along a curve in a non-planar case")
     })?;
     let zeros = real_zeros(&sing);
     let vertices: Vec<V3> = [a, b]

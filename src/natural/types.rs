@@ -4,7 +4,7 @@
 //! SPEC §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
 
 use super::vec3::{V3, add, cross, dot, norm2, scale, sub};
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::number::{Q, fmt_q, parse_rational, qi};
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, X, Y, Z};
@@ -58,8 +58,8 @@ fn positive(name: &str, v: &Q) -> Result<(), Error> {
     if v.is_positive() {
         Ok(())
     } else {
-        Err(Error::input(
-            "bad-quadric",
+        Err(Error::new(
+            ErrorKind::BadQuadric,
             format!("{name} must be > 0, got {}", fmt_q(v)),
         ))
     }
@@ -67,8 +67,8 @@ fn positive(name: &str, v: &Q) -> Result<(), Error> {
 
 fn nonzero_axis(a: &V3) -> Result<(), Error> {
     if a.iter().all(|c| c.is_zero()) {
-        Err(Error::input(
-            "bad-quadric",
+        Err(Error::new(
+            ErrorKind::BadQuadric,
             "the axis direction must be non-zero",
         ))
     } else {
@@ -116,8 +116,8 @@ pub fn tan2_from(kind: &str, v: &Q) -> Result<Q, Error> {
         "tan2" => Ok(v.clone()),
         "tan" => {
             if !v.is_positive() {
-                return Err(Error::input(
-                    "bad-quadric",
+                return Err(Error::new(
+                    ErrorKind::BadQuadric,
                     format!(
                         "tan must be > 0 (a half-angle in (0, 90°)), got {}",
                         fmt_q(v)
@@ -128,8 +128,8 @@ pub fn tan2_from(kind: &str, v: &Q) -> Result<Q, Error> {
         }
         "cos2" => {
             if !(v.is_positive() && v < &one) {
-                return Err(Error::input(
-                    "bad-quadric",
+                return Err(Error::new(
+                    ErrorKind::BadQuadric,
                     format!("cos2 must lie in (0, 1), got {}", fmt_q(v)),
                 ));
             }
@@ -137,14 +137,14 @@ pub fn tan2_from(kind: &str, v: &Q) -> Result<Q, Error> {
         }
         "sin2" => {
             if !(v.is_positive() && v < &one) {
-                return Err(Error::input(
-                    "bad-quadric",
+                return Err(Error::new(
+                    ErrorKind::BadQuadric,
                     format!("sin2 must lie in (0, 1), got {}", fmt_q(v)),
                 ));
             }
             Ok(v / (&one - v))
         }
-        _ => Err(Error::Internal(format!("unknown angle parameter {kind}"))),
+        _ => Err(Error::internal(format!("unknown angle parameter {kind}"))),
     }
 }
 
@@ -341,21 +341,22 @@ pub fn cayley_rotation(a: &Q, b: &Q, c: &Q) -> [[Q; 3]; 3] {
 fn parse_vec(s: &str, what: &str) -> Result<V3, Error> {
     let parts: Vec<&str> = s.split(',').collect();
     if parts.len() != 3 {
-        return Err(Error::input(
-            "bad-quadric",
+        return Err(Error::new(
+            ErrorKind::BadQuadric,
             format!("{what} needs three comma-separated numbers, got \"{s}\""),
         ));
     }
     let mut out: V3 = std::array::from_fn(|_| Q::zero());
     for (i, p) in parts.iter().enumerate() {
         out[i] = parse_rational(p)
-            .map_err(|e| Error::input("bad-quadric", format!("{what}: {e} in \"{p}\"")))?;
+            .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("{what}: {e} in \"{p}\"")))?;
     }
     Ok(out)
 }
 
 fn parse_num(s: &str, what: &str) -> Result<Q, Error> {
-    parse_rational(s).map_err(|e| Error::input("bad-quadric", format!("{what}: {e} in \"{s}\"")))
+    parse_rational(s)
+        .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("{what}: {e} in \"{s}\"")))
 }
 
 /// Builds a quadric from named fields (shared by both syntaxes).
@@ -366,16 +367,16 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
         "cylinder" => &["point", "axis", "radius2"],
         "cone" => &["vertex", "axis", "tan2", "tan", "cos2", "sin2"],
         _ => {
-            return Err(Error::input(
-                "bad-quadric",
+            return Err(Error::new(
+                ErrorKind::BadQuadric,
                 format!("unknown kind \"{kind}\" (expected sphere, cylinder or cone)"),
             ));
         }
     };
     for (n, _) in fields {
         if !allowed.contains(&n.as_str()) {
-            return Err(Error::input(
-                "bad-quadric",
+            return Err(Error::new(
+                ErrorKind::BadQuadric,
                 format!(
                     "unknown field \"{n}\" for a {kind} (expected {})",
                     allowed.join(", ")
@@ -383,14 +384,14 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
             ));
         }
         if fields.iter().filter(|(m, _)| m == n).count() > 1 {
-            return Err(Error::input(
-                "bad-quadric",
+            return Err(Error::new(
+                ErrorKind::BadQuadric,
                 format!("field \"{n}\" given twice"),
             ));
         }
     }
     let need = |k: &str| -> Result<&str, Error> {
-        get(k).ok_or_else(|| Error::input("bad-quadric", format!("a {kind} needs \"{k}\"")))
+        get(k).ok_or_else(|| Error::new(ErrorKind::BadQuadric, format!("a {kind} needs \"{k}\"")))
     };
     match kind {
         "sphere" => Ok(Natural::Sphere(Sphere::new(
@@ -408,8 +409,8 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
                 .filter(|k| get(k).is_some())
                 .collect();
             if angle.len() != 1 {
-                return Err(Error::input(
-                    "bad-quadric",
+                return Err(Error::new(
+                    ErrorKind::BadQuadric,
                     format!(
                         "a cone needs exactly one of tan2, tan, cos2, sin2 (got {})",
                         if angle.is_empty() {
@@ -434,25 +435,28 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
 /// Parses the JSON object form of SPEC §2 (numbers as strings; JSON
 /// integers are accepted too, floats are refused as inexact).
 pub fn from_json(v: &Value) -> Result<Natural, Error> {
-    let obj = v
-        .as_object()
-        .ok_or_else(|| Error::input("bad-quadric", "a natural quadric must be a JSON object"))?;
+    let obj = v.as_object().ok_or_else(|| {
+        Error::new(
+            ErrorKind::BadQuadric,
+            "a natural quadric must be a JSON object",
+        )
+    })?;
     let kind = obj
         .get("kind")
         .and_then(|k| k.as_str())
-        .ok_or_else(|| Error::input("bad-quadric", "missing string field \"kind\""))?;
+        .ok_or_else(|| Error::new(ErrorKind::BadQuadric, "missing string field \"kind\""))?;
     let num = |name: &str, x: &Value| -> Result<String, Error> {
         match x {
             Value::String(s) => Ok(s.clone()),
             Value::Number(n) if n.is_i64() || n.is_u64() => Ok(n.to_string()),
-            Value::Number(_) => Err(Error::input(
-                "bad-quadric",
+            Value::Number(_) => Err(Error::new(
+                ErrorKind::BadQuadric,
                 format!(
                     "field \"{name}\": write non-integers as exact strings (\"7/9\", \"0.1\"), not JSON floats"
                 ),
             )),
-            _ => Err(Error::input(
-                "bad-quadric",
+            _ => Err(Error::new(
+                ErrorKind::BadQuadric,
                 format!("field \"{name}\" must be a number given as a string"),
             )),
         }
@@ -487,18 +491,18 @@ pub fn parse_natural(text: &str) -> Result<Natural, Error> {
     let t = text.trim();
     if t.starts_with('{') {
         let v: Value = serde_json::from_str(t)
-            .map_err(|e| Error::input("bad-quadric", format!("invalid JSON: {e}")))?;
+            .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("invalid JSON: {e}")))?;
         return from_json(&v);
     }
     let mut words = t.split_whitespace();
     let kind = words
         .next()
-        .ok_or_else(|| Error::input("bad-quadric", "empty quadric description"))?;
+        .ok_or_else(|| Error::new(ErrorKind::BadQuadric, "empty quadric description"))?;
     let mut fields = Vec::new();
     for w in words {
         let (k, v) = w.split_once('=').ok_or_else(|| {
-            Error::input(
-                "bad-quadric",
+            Error::new(
+                ErrorKind::BadQuadric,
                 format!("expected name=value, got \"{w}\" (e.g. axis=1,0,0)"),
             )
         })?;

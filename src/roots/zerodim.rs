@@ -122,7 +122,7 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         all.extend(sq_add.iter().map(to_g));
         let gb2 = groebner(all, 3, ord);
         quo = Quotient::new(gb2).ok_or_else(|| {
-            Error::Internal("radical of a zero-dimensional ideal is not zero-dimensional".into())
+            Error::internal("radical of a zero-dimensional ideal is not zero-dimensional")
         })?;
         mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
         rhs = shape_targets(&quo, &mats, extra);
@@ -159,7 +159,7 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         }
     }
     let (form, mp, sol) =
-        chosen.ok_or_else(|| Error::Internal("no separating linear form found".into()))?;
+        chosen.ok_or_else(|| Error::internal("no separating linear form found"))?;
     debug_assert_eq!(mp.degree(), Some(d));
     let polys: Vec<QPoly> = sol.into_iter().map(QPoly::new).collect();
     let (f, _) = ZPoly::from_q(&mp);

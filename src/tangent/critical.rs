@@ -116,8 +116,8 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
     match solve_zero_dim(&gens, std::slice::from_ref(s))? {
         Some(rur) => {
             if rur.points == 0 {
-                return Err(Error::Internal(
-                    "no critical point of S on E (impossible on a compact ellipsoid)".into(),
+                return Err(Error::internal(
+                    "no critical point of S on E (impossible on a compact ellipsoid)",
                 ));
             }
             let value_poly = rur.extra[0].clone();
@@ -163,8 +163,8 @@ fn elimination_ideal_values(gens: &[QMPoly], s: &QMPoly) -> Result<ZPoly, Error>
         d = if d.is_zero() { z } else { d.gcd(&z) };
     }
     if d.degree().unwrap_or(0) == 0 {
-        return Err(Error::Internal(
-            "the critical values are not finite (elimination ideal is zero)".into(),
+        return Err(Error::internal(
+            "the critical values are not finite (elimination ideal is zero)",
         ));
     }
     Ok(d.squarefree_part())
@@ -226,8 +226,8 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
                 levels.push((q.clone(), !rur.real_roots.is_empty()));
             }
             None => {
-                return Err(Error::Internal(
-                    "level curve analysis did not reach a finite system".into(),
+                return Err(Error::internal(
+                    "level curve analysis did not reach a finite system",
                 ));
             }
         }
@@ -236,8 +236,8 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
     let attained = match (nonempty.first(), nonempty.last()) {
         (Some(&a), Some(&b)) if a >= 1 && b < k => vec![roots[a - 1].clone(), roots[b].clone()],
         (Some(_), Some(_)) => {
-            return Err(Error::Internal(
-                "a level beyond all critical values has real points".into(),
+            return Err(Error::internal(
+                "a level beyond all critical values has real points",
             ));
         }
         _ => {
@@ -256,8 +256,8 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
             }) {
                 Some(v) => vec![RealAlg::Rational(v)],
                 None => {
-                    return Err(Error::Internal(
-                        "S appears constant on E but its value is not rational".into(),
+                    return Err(Error::internal(
+                        "S appears constant on E but its value is not rational",
                     ));
                 }
             }

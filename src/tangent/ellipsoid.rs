@@ -1,7 +1,7 @@
 //! Quadrics as matrices, and the validation of the ellipsoid E (SPEC §2):
 //! degree 2, definite quadratic part, non-empty and not a single point.
 
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::number::Q;
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, NVARS};
@@ -245,41 +245,41 @@ impl Ellipsoid {
     /// ```
     pub fn new(p: &QMPoly) -> Result<Ellipsoid, Error> {
         if p.vars().iter().any(|&v| v > 2) {
-            return Err(Error::input(
-                "not-an-ellipsoid",
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
                 "the ellipsoid must be a polynomial in x, y, z only",
             ));
         }
         let deg = p.total_degree().unwrap_or(0);
         if deg != 2 {
-            return Err(Error::input(
-                "not-an-ellipsoid",
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
                 format!("an ellipsoid has total degree 2, this polynomial has degree {deg}"),
             ));
         }
         let mut form = QuadricForm::from_poly(p)
-            .ok_or_else(|| Error::Internal("degree-2 polynomial without a quadric form".into()))?;
+            .ok_or_else(|| Error::internal("degree-2 polynomial without a quadric form"))?;
         // integer arithmetic on L·E (L > 0 clears the denominators)
         let l = common_denominator(&[&form]);
         let shape = IntEllipsoid::of(&form.int_matrix(&l));
         let c = match shape {
             Ok(c) => c,
             Err(Shape::Singular) => {
-                return Err(Error::input(
-                    "not-an-ellipsoid",
+                return Err(Error::new(
+                    ErrorKind::NotAnEllipsoid,
                     "the quadratic part is singular (det = 0): a paraboloid, cylinder or plane pair, not an ellipsoid",
                 ));
             }
             Err(Shape::Indefinite) => {
-                return Err(Error::input(
-                    "not-an-ellipsoid",
+                return Err(Error::new(
+                    ErrorKind::NotAnEllipsoid,
                     "the quadratic part is not definite: a hyperboloid or cone, not an ellipsoid",
                 ));
             }
             Err(Shape::Point(c)) => {
                 let center = c.center();
-                return Err(Error::input(
-                    "not-an-ellipsoid",
+                return Err(Error::new(
+                    ErrorKind::NotAnEllipsoid,
                     format!(
                         "the zero set is a single point ({}, {}, {}), not an ellipsoid",
                         crate::number::fmt_q(&center[0]),
@@ -289,8 +289,8 @@ impl Ellipsoid {
                 ));
             }
             Err(Shape::Empty) => {
-                return Err(Error::input(
-                    "not-an-ellipsoid",
+                return Err(Error::new(
+                    ErrorKind::NotAnEllipsoid,
                     "the zero set is empty (an imaginary ellipsoid: the polynomial never vanishes on real points)",
                 ));
             }

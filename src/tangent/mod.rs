@@ -33,7 +33,7 @@ pub mod witness;
 pub use ellipsoid::{Ellipsoid, QuadricForm};
 pub use witness::WitnessPoint;
 
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::poly::{QMPoly, ZPoly, parse_poly};
 use crate::roots::RealAlg;
 use std::cmp::Ordering;
@@ -168,14 +168,14 @@ pub fn decide_str(ellipsoid: &str, surface: &str) -> Result<TangentReport, Error
 pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Error> {
     let e = Ellipsoid::new(ellipsoid).map_err(|x| x.context("in --ellipsoid"))?;
     if surface.vars().iter().any(|&v| v > 2) {
-        return Err(Error::input(
-            "input",
+        return Err(Error::new(
+            ErrorKind::Input,
             "in --surface: the surface must be a polynomial in x, y, z only",
         ));
     }
     if surface.is_zero() {
-        return Err(Error::input(
-            "input",
+        return Err(Error::new(
+            ErrorKind::Input,
             "in --surface: the zero polynomial is not a surface (every point satisfies S = 0)",
         ));
     }
@@ -185,7 +185,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
     let quadric_form = if deg == 1 || deg == 2 {
         Some(
             QuadricForm::from_poly(surface)
-                .ok_or_else(|| Error::Internal("quadric form of a degree-2 surface".into()))?,
+                .ok_or_else(|| Error::internal("quadric form of a degree-2 surface"))?,
         )
     } else {
         None
@@ -243,7 +243,9 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
     } else {
         let outcome = match critical::analyze(&e, surface) {
             Ok(o) => o,
-            Err(Error::Internal(why)) => return Ok(undecided(&e, surface, why)),
+            Err(err) if err.kind() == ErrorKind::Internal => {
+                return Ok(undecided(&e, surface, err.message().to_string()));
+            }
             Err(other) => return Err(other),
         };
         match outcome {

@@ -1,0 +1,458 @@
+//! Compute budgets: a wall-time limit, a memory limit, size limits on
+//! intermediate objects and a cancellation flag, checked inside every loop
+//! whose cost can grow with the input (Gröbner bases, RUR, isolation,
+//! resultants, sweeps).
+//!
+//! Key idea: the budget of the running operation lives in a thread-local
+//! slot set by [`run`].  The long loops call [`check`] (amortised: a
+//! countdown, the clock is read every [`CHECK_EVERY`] calls), or
+//! [`check_now`] in coarse loops, and [`check_size`] where objects grow.
+//! When a limit is hit, the check unwinds to the enclosing [`run`] with an
+//! [`Exhausted`] payload (through [`std::panic::resume_unwind`], which does
+//! not call the panic hook), and `run` returns `Err(Exhausted)`.  No kernel
+//! function needs a `Result` for this, and nothing computed under an
+//! exhausted budget escapes.  Outside any `run` the checks cost one
+//! thread-local read and never fail.
+//!
+//! This needs the default `panic = "unwind"`; a program built with
+//! `panic = "abort"` aborts when a budget runs out.
+//!
+//! ```
+//! use quadsect::budget::{self, Budget, Limit};
+//! use std::time::Duration;
+//! let b = Budget::unlimited().with_time_limit(Some(Duration::ZERO));
+//! let r = budget::run(&b, || {
+//!     loop {
+//!         budget::check_now();
+//!     }
+//! });
+//! assert_eq!(r.unwrap_err().limit(), Limit::Time);
+//! ```
+
+use std::cell::{Cell, RefCell};
+use std::fmt;
+use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, OnceLock};
+use std::time::{Duration, Instant};
+
+/// How many calls of [`check`] share one reading of the clock.
+pub const CHECK_EVERY: u32 = 64;
+
+/// Default wall-time limit of one CLI operation (or one batch line).
+pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
+/// Default memory limit of the CLI process, in bytes (when the allocator
+/// reports its use, see [`set_memory_probe`]).
+pub const DEFAULT_MEMORY_LIMIT: usize = 2 << 30;
+/// Default largest number of terms of an intermediate polynomial (or
+/// entries of a Gröbner basis / matrix) checked by [`check_size`].
+pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
+/// Default largest bit size of an intermediate coefficient checked by
+/// [`check_size`].
+pub const DEFAULT_MAX_BITS: u64 = 4_000_000;
+
+/// Which limit ran out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Limit {
+    /// The wall-time limit.
+    Time,
+    /// The memory limit (bytes in use by the process).
+    Memory,
+    /// A size limit on an intermediate object (terms or coefficient bits).
+    Size,
+    /// The cancellation flag was raised.
+    Cancelled,
+}
+
+impl Limit {
+    /// `time`, `memory`, `size` or `cancelled`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Limit::Time => "time",
+            Limit::Memory => "memory",
+            Limit::Size => "size",
+            Limit::Cancelled => "cancelled",
+        }
+    }
+}
+
+impl fmt::Display for Limit {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A budget ran out: which limit, and what was being computed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Exhausted {
+    limit: Limit,
+    detail: String,
+}
+
+impl Exhausted {
+    /// A budget exhaustion of the given limit.
+    pub fn new(limit: Limit, detail: impl Into<String>) -> Exhausted {
+        Exhausted {
+            limit,
+            detail: detail.into(),
+        }
+    }
+
+    /// Which limit ran out.
+    pub fn limit(&self) -> Limit {
+        self.limit
+    }
+
+    /// What was hit, in words (e.g. `time limit of 10 s`).
+    pub fn detail(&self) -> &str {
+        &self.detail
+    }
+}
+
+impl fmt::Display for Exhausted {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "budget exhausted ({}): {}", self.limit, self.detail)
+    }
+}
+
+impl std::error::Error for Exhausted {}
+
+/// The limits of one operation.  `Budget::default()` is the CLI's default
+/// ([`DEFAULT_TIME_LIMIT`], [`DEFAULT_MEMORY_LIMIT`], [`DEFAULT_MAX_TERMS`],
+/// [`DEFAULT_MAX_BITS`]); [`Budget::unlimited`] has no limit at all.
+#[derive(Clone, Debug)]
+pub struct Budget {
+    time: Option<Duration>,
+    memory: Option<usize>,
+    max_terms: Option<usize>,
+    max_bits: Option<u64>,
+    cancel: Option<Arc<AtomicBool>>,
+}
+
+impl Default for Budget {
+    fn default() -> Self {
+        Budget {
+            time: Some(DEFAULT_TIME_LIMIT),
+            memory: Some(DEFAULT_MEMORY_LIMIT),
+            max_terms: Some(DEFAULT_MAX_TERMS),
+            max_bits: Some(DEFAULT_MAX_BITS),
+            cancel: None,
+        }
+    }
+}
+
+impl Budget {
+    /// No limits (the checks never fail).
+    pub fn unlimited() -> Budget {
+        Budget {
+            time: None,
+            memory: None,
+            max_terms: None,
+            max_bits: None,
+            cancel: None,
+        }
+    }
+
+    /// Sets the wall-time limit (`None`: no limit).
+    pub fn with_time_limit(mut self, t: Option<Duration>) -> Budget {
+        self.time = t;
+        self
+    }
+
+    /// Sets the memory limit in bytes (`None`: no limit).  It is enforced
+    /// only where a memory probe is installed ([`set_memory_probe`]; the
+    /// CLI installs one), and applies to the whole process.
+    pub fn with_memory_limit(mut self, bytes: Option<usize>) -> Budget {
+        self.memory = bytes;
+        self
+    }
+
+    /// Sets the size limits: most terms of an intermediate object and most
+    /// bits of an intermediate coefficient (`None`: no limit).
+    pub fn with_size_limits(mut self, max_terms: Option<usize>, max_bits: Option<u64>) -> Budget {
+        self.max_terms = max_terms;
+        self.max_bits = max_bits;
+        self
+    }
+
+    /// A flag another thread may raise to cancel the operation.
+    pub fn with_cancel_flag(mut self, flag: Arc<AtomicBool>) -> Budget {
+        self.cancel = Some(flag);
+        self
+    }
+
+    /// The wall-time limit.
+    pub fn time_limit(&self) -> Option<Duration> {
+        self.time
+    }
+
+    /// The memory limit in bytes.
+    pub fn memory_limit(&self) -> Option<usize> {
+        self.memory
+    }
+
+    /// The size limits (terms, coefficient bits).
+    pub fn size_limits(&self) -> (Option<usize>, Option<u64>) {
+        (self.max_terms, self.max_bits)
+    }
+}
+
+/// The budget of the running operation on this thread.
+struct Active {
+    deadline: Option<Instant>,
+    time: Option<Duration>,
+    memory: Option<usize>,
+    max_terms: Option<usize>,
+    max_bits: Option<u64>,
+    cancel: Option<Arc<AtomicBool>>,
+}
+
+thread_local! {
+    static ACTIVE: RefCell<Option<Active>> = const { RefCell::new(None) };
+    static COUNTDOWN: Cell<u32> = const { Cell::new(CHECK_EVERY) };
+}
+
+static MEMORY_PROBE: OnceLock<fn() -> usize> = OnceLock::new();
+
+/// Installs a function that returns the bytes the process has allocated
+/// (typically a counting global allocator).  The memory limit is checked
+/// against it.  Only the first installation counts.
+pub fn set_memory_probe(probe: fn() -> usize) {
+    let _ = MEMORY_PROBE.set(probe);
+}
+
+fn memory_in_use() -> Option<usize> {
+    MEMORY_PROBE.get().map(|f| f())
+}
+
+fn exhaust(e: Exhausted) -> ! {
+    resume_unwind(Box::new(e))
+}
+
+/// Runs `f` under `budget`.  Budgets nest: inside another `run`, the
+/// tighter deadline and limits of the two apply.  Returns `Err` when a
+/// limit ran out (everything `f` computed is dropped); other panics
+/// propagate unchanged.
+pub fn run<T>(budget: &Budget, f: impl FnOnce() -> T) -> Result<T, Exhausted> {
+    let now = Instant::now();
+    let new = ACTIVE.with(|a| {
+        let outer = a.borrow();
+        let min_opt = |x: Option<usize>, y: Option<usize>| match (x, y) {
+            (Some(x), Some(y)) => Some(x.min(y)),
+            (x, y) => x.or(y),
+        };
+        let own_deadline = budget.time.and_then(|t| now.checked_add(t));
+        let (deadline, time) = match outer.as_ref() {
+            Some(o) => match (o.deadline, own_deadline) {
+                (Some(d), Some(e)) if d < e => (Some(d), o.time),
+                (Some(d), None) => (Some(d), o.time),
+                (_, e) => (e, budget.time),
+            },
+            None => (own_deadline, budget.time),
+        };
+        let o = outer.as_ref();
+        Active {
+            deadline,
+            time,
+            memory: min_opt(o.and_then(|o| o.memory), budget.memory),
+            max_terms: min_opt(o.and_then(|o| o.max_terms), budget.max_terms),
+            max_bits: match (o.and_then(|o| o.max_bits), budget.max_bits) {
+                (Some(x), Some(y)) => Some(x.min(y)),
+                (x, y) => x.or(y),
+            },
+            cancel: budget
+                .cancel
+                .clone()
+                .or_else(|| o.and_then(|o| o.cancel.clone())),
+        }
+    });
+    let previous = ACTIVE.with(|a| a.borrow_mut().replace(new));
+    let result = catch_unwind(AssertUnwindSafe(f));
+    ACTIVE.with(|a| *a.borrow_mut() = previous);
+    match result {
+        Ok(v) => Ok(v),
+        Err(payload) => match payload.downcast::<Exhausted>() {
+            Ok(e) => Err(*e),
+            Err(other) => resume_unwind(other),
+        },
+    }
+}
+
+/// True when an operation with a budget is running on this thread.
+pub fn is_active() -> bool {
+    ACTIVE.with(|a| a.borrow().is_some())
+}
+
+/// Checks the clock, the cancellation flag and the memory probe every
+/// [`CHECK_EVERY`] calls.  Put it in inner loops; unwinds to [`run`] when
+/// a limit ran out.
+#[inline]
+pub fn check() {
+    let n = COUNTDOWN.with(|c| {
+        let n = c.get().saturating_sub(1);
+        c.set(n);
+        n
+    });
+    if n == 0 {
+        COUNTDOWN.with(|c| c.set(CHECK_EVERY));
+        check_now();
+    }
+}
+
+/// Checks the clock, the cancellation flag and the memory probe now (for
+/// coarse loops whose iterations may take long).
+pub fn check_now() {
+    let hit = ACTIVE.with(|a| {
+        let a = a.borrow();
+        let a = a.as_ref()?;
+        if let Some(flag) = &a.cancel
+            && flag.load(Ordering::Relaxed)
+        {
+            return Some(Exhausted::new(
+                Limit::Cancelled,
+                "the operation was cancelled",
+            ));
+        }
+        if let Some(d) = a.deadline
+            && Instant::now() >= d
+        {
+            let t = a.time.unwrap_or_default();
+            return Some(Exhausted::new(
+                Limit::Time,
+                format!("time limit of {} s", fmt_secs(t)),
+            ));
+        }
+        if let Some(limit) = a.memory
+            && let Some(used) = memory_in_use()
+            && used > limit
+        {
+            return Some(Exhausted::new(
+                Limit::Memory,
+                format!("memory limit of {} MiB", limit >> 20),
+            ));
+        }
+        None
+    });
+    if let Some(e) = hit {
+        exhaust(e);
+    }
+}
+
+/// Checks the size of an intermediate object that is about to be built or
+/// has just grown: `terms` (terms of a polynomial, entries of a matrix or
+/// basis) and `bits` (the largest coefficient's bit size).  `what` names
+/// the object for the message.  Also performs [`check`].
+pub fn check_size(what: &str, terms: usize, bits: u64) {
+    let hit = ACTIVE.with(|a| {
+        let a = a.borrow();
+        let a = a.as_ref()?;
+        if let Some(m) = a.max_terms
+            && terms > m
+        {
+            return Some(Exhausted::new(
+                Limit::Size,
+                format!("{what} would have {terms} terms; the limit is {m}"),
+            ));
+        }
+        if let Some(m) = a.max_bits
+            && bits > m
+        {
+            return Some(Exhausted::new(
+                Limit::Size,
+                format!("{what} would have {bits}-bit coefficients; the limit is {m} bits"),
+            ));
+        }
+        None
+    });
+    if let Some(e) = hit {
+        exhaust(e);
+    }
+    check();
+}
+
+/// The time left before the running operation's deadline (`None`: no
+/// deadline, or no budget running).
+pub fn time_left() -> Option<Duration> {
+    ACTIVE.with(|a| {
+        let a = a.borrow();
+        let d = a.as_ref()?.deadline?;
+        Some(d.saturating_duration_since(Instant::now()))
+    })
+}
+
+fn fmt_secs(t: Duration) -> String {
+    let s = t.as_secs_f64();
+    if s == s.trunc() {
+        format!("{}", s as u64)
+    } else {
+        format!("{s}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unlimited_and_outside_never_fail() {
+        for _ in 0..1000 {
+            check();
+        }
+        check_size("x", usize::MAX, u64::MAX);
+        let r = run(&Budget::unlimited(), || {
+            check_size("x", usize::MAX, u64::MAX);
+            7
+        });
+        assert_eq!(r, Ok(7));
+        assert!(!is_active());
+    }
+
+    #[test]
+    fn time_limit_unwinds_to_run() {
+        let b = Budget::unlimited().with_time_limit(Some(Duration::from_millis(5)));
+        let t0 = Instant::now();
+        let r: Result<(), _> = run(&b, || {
+            loop {
+                check();
+            }
+        });
+        assert_eq!(r.unwrap_err().limit(), Limit::Time);
+        assert!(t0.elapsed() < Duration::from_secs(2));
+        assert!(!is_active(), "the slot is restored");
+    }
+
+    #[test]
+    fn size_limit_names_the_object() {
+        let b = Budget::unlimited().with_size_limits(Some(10), Some(64));
+        let e = run(&b, || check_size("a Gröbner basis", 11, 0)).unwrap_err();
+        assert_eq!(e.limit(), Limit::Size);
+        assert!(e.detail().contains("a Gröbner basis"), "{e}");
+        let e = run(&b, || check_size("a resultant", 1, 65)).unwrap_err();
+        assert!(e.detail().contains("65-bit"), "{e}");
+        assert_eq!(run(&b, || check_size("ok", 10, 64)), Ok(()));
+    }
+
+    #[test]
+    fn nested_budgets_take_the_tighter_limit() {
+        let outer = Budget::unlimited().with_size_limits(Some(5), None);
+        let inner = Budget::unlimited().with_size_limits(Some(100), None);
+        let r = run(&outer, || run(&inner, || check_size("p", 6, 0)));
+        // the inner run catches the exhaustion of the combined budget
+        assert_eq!(r.unwrap().unwrap_err().limit(), Limit::Size);
+    }
+
+    #[test]
+    fn cancel_flag() {
+        let flag = Arc::new(AtomicBool::new(true));
+        let b = Budget::unlimited().with_cancel_flag(flag);
+        assert_eq!(run(&b, check_now).unwrap_err().limit(), Limit::Cancelled);
+    }
+
+    #[test]
+    fn other_panics_propagate() {
+        let r = std::panic::catch_unwind(|| run(&Budget::unlimited(), || panic!("boom")));
+        assert!(r.is_err());
+        assert!(!is_active());
+    }
+}
