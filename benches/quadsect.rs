@@ -15,8 +15,8 @@ fn main() {
     let inputs = std::env::var("QUADSECT_BENCH_INPUTS").unwrap_or_else(|_| {
         concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/bench/inputs.json").to_string()
     });
-    match quadsect::bench::run(&suite, &inputs) {
-        Ok(rows) => print!("{}", quadsect::bench::to_markdown(&rows)),
+    match quadsect::cli::bench::run(&suite, &inputs) {
+        Ok(rows) => print!("{}", quadsect::cli::bench::to_markdown(&rows)),
         Err(e) => {
             eprintln!("bench: {e}");
             std::process::exit(2);

@@ -116,6 +116,7 @@ pub fn panic_message(p: &Box<dyn std::any::Any + Send>) -> String {
     }
 }
 
+#[cfg(feature = "cli")]
 /// Reads JSON lines from `input` and writes one answer line per input line
 /// to `out`, in order, processing chunks in parallel.  `progress` shows a
 /// spinner with the count of lines on stderr.  Returns the number of lines.

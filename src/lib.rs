@@ -6,12 +6,14 @@
 // Report types carry their data inline on purpose (built once, read once).
 #![allow(clippy::large_enum_variant)]
 
+#[cfg(feature = "serde")]
 pub mod batch;
-pub mod bench;
 pub mod budget;
+#[cfg(feature = "cli")]
+pub mod cli;
 pub mod elim;
 pub mod error;
-pub mod examples;
+pub mod geom;
 pub mod natural;
 pub mod number;
 pub mod ops;
@@ -19,5 +21,8 @@ pub mod poly;
 pub mod report;
 pub mod roots;
 pub mod tangent;
+
+#[cfg(test)]
+mod tests;
 
 pub use error::{Error, ErrorKind};

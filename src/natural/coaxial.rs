@@ -7,7 +7,7 @@
 use super::exact::{EPoint, Exact, epoint};
 use super::result::{Component, ConicKind, Plane, PointKind};
 use super::types::{Cone, Natural, Sphere, axial_param};
-use super::vec3::{V3, add, cross, dot, lift, norm2, orthogonal, scale, sub};
+use crate::geom::vec3::{V3, add, cross, dot, lift, norm2, orthogonal, scale, sub};
 use crate::number::{Q, QSqrt, qi};
 use num_traits::{One, Signed, Zero};
 

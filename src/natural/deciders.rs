@@ -11,10 +11,12 @@
 //!    [`pencil_has_planar_member`].
 
 use super::types::{Natural, dist2_point_line};
-use super::vec3::{V3, add, cross, dot, is_zero, norm2, parallel, scale, sub};
+use crate::geom::det3;
+use crate::geom::vec3::{
+    V3, add, cross, cross_i128, dot, dot_i128, is_zero, norm2, parallel, scale, sub,
+};
 use crate::number::Q;
 use crate::poly::{QPoly, ZPoly};
-use crate::tangent::ellipsoid::det3;
 use num_traits::{One, Zero};
 
 /// How two axes lie.
@@ -170,30 +172,13 @@ fn small(q: &Natural) -> Option<Small> {
     }
 }
 
-fn cross_i(u: &[i128; 3], v: &[i128; 3]) -> Option<[i128; 3]> {
-    Some([
-        u[1].checked_mul(v[2])?
-            .checked_sub(u[2].checked_mul(v[1])?)?,
-        u[2].checked_mul(v[0])?
-            .checked_sub(u[0].checked_mul(v[2])?)?,
-        u[0].checked_mul(v[1])?
-            .checked_sub(u[1].checked_mul(v[0])?)?,
-    ])
-}
-
-fn dot_i(u: &[i128; 3], v: &[i128; 3]) -> Option<i128> {
-    u[0].checked_mul(v[0])?
-        .checked_add(u[1].checked_mul(v[1])?)?
-        .checked_add(u[2].checked_mul(v[2])?)
-}
-
 /// `Some(answer)` when the fast path decided, `None` to fall back.
 fn thm8_small(a: &Natural, b: &Natural) -> Option<Option<bool>> {
     let (x, y) = (small(a)?, small(b)?);
     let d = [y.p[0] - x.p[0], y.p[1] - x.p[1], y.p[2] - x.p[2]];
-    let n = cross_i(&x.a, &y.a)?;
+    let n = cross_i128(&x.a, &y.a)?;
     if n == [0, 0, 0] {
-        if cross_i(&d, &x.a)? == [0, 0, 0] {
+        if cross_i128(&d, &x.a)? == [0, 0, 0] {
             return Some(None); // coincident
         }
         return Some(Some(match (x.cone, y.cone) {
@@ -202,11 +187,11 @@ fn thm8_small(a: &Natural, b: &Natural) -> Option<Option<bool>> {
             _ => false,
         }));
     }
-    if dot_i(&d, &n)? != 0 {
+    if dot_i128(&d, &n)? != 0 {
         return Some(None); // skew
     }
-    let sn = dot_i(&cross_i(&d, &y.a)?, &n)?;
-    let sd = dot_i(&n, &n)?;
+    let sn = dot_i128(&cross_i128(&d, &y.a)?, &n)?;
+    let sd = dot_i128(&n, &n)?;
     // ρ² as num/den for each quadric, O = p1 + (sn/sd) a1
     let rho = |q: &Small| -> Option<(i128, i128)> {
         if !q.cone {
@@ -224,7 +209,7 @@ fn thm8_small(a: &Natural, b: &Natural) -> Option<Option<bool>> {
                 .checked_add(sn.checked_mul(x.a[2])?)?,
         ];
         Some((
-            dot_i(&w, &w)?.checked_mul(q.num)?,
+            dot_i128(&w, &w)?.checked_mul(q.num)?,
             sd.checked_mul(sd)?.checked_mul(q.num + q.den)?,
         ))
     };

@@ -9,13 +9,12 @@
 //! must vanish at the number, decided by a gcd), so nothing is guessed.
 
 use crate::elim::resultant_mpoly;
-use crate::number::{Q, QSqrt, fmt_q};
+use crate::number::{Q, QSqrt};
 use crate::poly::mpoly::{MPoly, T, U};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
-use serde_json::{Value, json};
 
 /// An exact real number of the output.
 #[derive(Clone, Debug)]
@@ -30,19 +29,6 @@ impl Exact {
     /// A rational.
     pub fn rational(q: Q) -> Exact {
         Exact::Quad(QSqrt::rational(q))
-    }
-
-    /// JSON: a string for a rational, `{"a","b","d","approx"}` for a
-    /// quadratic irrational, `{"poly","interval","approx"}` otherwise.
-    pub fn json(&self) -> Value {
-        match self {
-            Exact::Quad(x) if x.is_rational() => json!(fmt_q(&x.a)),
-            Exact::Quad(x) => {
-                let x = x.normalized();
-                json!({"a": fmt_q(&x.a), "b": fmt_q(&x.b), "d": fmt_q(&x.d), "approx": x.approx(20)})
-            }
-            Exact::Alg(a) => crate::report::alg_json(a),
-        }
     }
 
     /// Decimal approximation.
@@ -148,11 +134,6 @@ pub fn normalize_direction(d: &EPoint) -> EPoint {
         g = -g;
     }
     std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)))
-}
-
-/// JSON of a point.
-pub fn epoint_json(p: &EPoint) -> Value {
-    Value::Array(p.iter().map(|c| c.json()).collect())
 }
 
 /// Text of a point.

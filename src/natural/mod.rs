@@ -5,13 +5,12 @@ pub mod classify;
 pub mod coaxial;
 pub mod deciders;
 pub mod exact;
-pub mod examples;
 pub mod planar;
 pub mod result;
 pub mod tangency;
 pub mod topology;
 pub mod types;
-pub mod vec3;
 
+pub use crate::geom::cayley_rotation;
 pub use classify::{classify, classify_str};
-pub use types::{Cone, Cylinder, Natural, Sphere, cayley_rotation, parse_natural};
+pub use types::{Cone, Cylinder, Natural, Sphere, parse_natural};

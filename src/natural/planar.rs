@@ -19,7 +19,7 @@
 use super::deciders::{AxialPlane, Conic2};
 use super::exact::{EPoint, Exact, epoint, epoint_equal, nested};
 use super::result::{Component, ConicKind, Plane, PointKind};
-use super::vec3::{V3, norm2};
+use crate::geom::vec3::{V3, cross, dot, norm2};
 use crate::number::{Q, QSqrt, qi};
 use num_traits::{One, Signed, Zero};
 
@@ -52,7 +52,7 @@ fn qs(q: &Q) -> QSqrt {
 }
 
 fn rank_of(f: &Conic2) -> usize {
-    if !crate::tangent::ellipsoid::det3(f).is_zero() {
+    if !crate::geom::det3(f).is_zero() {
         return 3;
     }
     let any_minor = (0..3).any(|i| {
@@ -99,7 +99,7 @@ pub fn factor_conic(f: &Conic2) -> Factored {
             let mut k = [Q::zero(), Q::zero(), Q::zero()];
             'outer: for i in 0..3 {
                 for j in i + 1..3 {
-                    let c = crate::natural::vec3::cross(rows[i], rows[j]);
+                    let c = cross(rows[i], rows[j]);
                     if c.iter().any(|x| !x.is_zero()) {
                         k = c;
                         break 'outer;
@@ -202,18 +202,6 @@ pub fn vec3(h: &AxialPlane, u: &QSqrt, v: &QSqrt) -> [QSqrt; 3] {
     std::array::from_fn(|i| u.scale(&h.e1[i]).add(&v.scale(&h.e2[i])))
 }
 
-fn cross_sv(a: &[QSqrt; 3], b: &V3) -> [QSqrt; 3] {
-    [
-        a[1].scale(&b[2]).sub(&a[2].scale(&b[1])),
-        a[2].scale(&b[0]).sub(&a[0].scale(&b[2])),
-        a[0].scale(&b[1]).sub(&a[1].scale(&b[0])),
-    ]
-}
-
-fn dot_ss(a: &[QSqrt; 3], b: &[QSqrt; 3]) -> QSqrt {
-    a[0].mul(&b[0]).add(&a[1].mul(&b[1])).add(&a[2].mul(&b[2]))
-}
-
 fn rat_vec(v: &V3) -> EPoint {
     std::array::from_fn(|i| Exact::rational(v[i].clone()))
 }
@@ -257,10 +245,10 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
     let w3 = vec3(h, &w[0], &w[1]);
     let n = h.n.clone();
     let n2 = norm2(&n);
-    let lam = dot_ss(&w3, &w3);
-    let normal = cross_sv(&w3, &n);
+    let lam = dot(&w3, &w3);
+    let normal = cross(&w3, &n);
     let plane = Plane {
-        offset: Exact::Quad(dot_ss(&normal, &base)),
+        offset: Exact::Quad(dot(&normal, &base)),
         normal: epoint(&normal),
     };
     let at =

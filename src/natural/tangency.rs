@@ -13,7 +13,7 @@
 
 use super::deciders::{AxesRelation, axes_relation};
 use super::types::{Cone, Cylinder, Natural, dist2_point_line};
-use super::vec3::{V3, cross, dot, norm2, orthogonal, sub};
+use crate::geom::vec3::{V3, cross, dot, norm2, orthogonal, sub};
 use crate::number::{Q, QSqrt, qi};
 use num_traits::{One, Signed, Zero};
 

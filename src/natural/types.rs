@@ -3,13 +3,14 @@
 //! and 4×4 matrices, exact rigid motions, and the input syntaxes (JSON of
 //! SPEC §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
 
-use super::vec3::{V3, add, cross, dot, norm2, scale, sub};
 use crate::error::{Error, ErrorKind};
-use crate::number::{Q, fmt_q, parse_rational, qi};
+use crate::geom::vec3::{V3, add, cross, dot, norm2, scale, sub};
+use crate::number::{Q, fmt_q, parse_rational};
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use num_traits::{One, Signed, Zero};
-use serde_json::{Value, json};
+#[cfg(feature = "serde")]
+use serde_json::Value;
 
 /// A sphere `|P − O|² = r2`.
 #[derive(Clone, Debug, PartialEq)]
@@ -178,36 +179,33 @@ impl Natural {
         let diff = |c: &V3| -> [QMPoly; 3] {
             std::array::from_fn(|i| &p[i] - &MPoly::constant(c[i].clone()))
         };
-        let dotp = |u: &[QMPoly; 3], v: &[QMPoly; 3]| -> QMPoly {
-            &(&(&u[0] * &v[0]) + &(&u[1] * &v[1])) + &(&u[2] * &v[2])
-        };
         let lin = |u: &[QMPoly; 3], a: &V3| -> QMPoly {
             &(&u[0].scale(&a[0]) + &u[1].scale(&a[1])) + &u[2].scale(&a[2])
         };
         match self {
             Natural::Sphere(s) => {
                 let d = diff(&s.center);
-                &dotp(&d, &d) - &MPoly::constant(s.r2.clone())
+                &dot(&d, &d) - &MPoly::constant(s.r2.clone())
             }
             Natural::Cylinder(c) => {
                 let d = diff(&c.point);
                 let a2 = norm2(&c.axis);
                 let da = lin(&d, &c.axis);
                 // |d × a|² = |d|²|a|² − (d·a)²
-                &(&dotp(&d, &d).scale(&a2) - &(&da * &da)) - &MPoly::constant(&c.r2 * &a2)
+                &(&dot(&d, &d).scale(&a2) - &(&da * &da)) - &MPoly::constant(&c.r2 * &a2)
             }
             Natural::Cone(c) => {
                 let d = diff(&c.vertex);
                 let a2 = norm2(&c.axis);
                 let da = lin(&d, &c.axis);
-                &dotp(&d, &d).scale(&a2) - &(&da * &da).scale(&(Q::one() + &c.t2))
+                &dot(&d, &d).scale(&a2) - &(&da * &da).scale(&(Q::one() + &c.t2))
             }
         }
     }
 
     /// The symmetric 4×4 matrix `M` with `equation(P) = [P 1] M [P 1]ᵀ`.
     pub fn matrix(&self) -> [[Q; 4]; 4] {
-        let f = crate::tangent::QuadricForm::from_poly(&self.equation())
+        let f = crate::geom::QuadricForm::from_poly(&self.equation())
             .expect("natural quadric equations have degree 2");
         let mut m: [[Q; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| Q::zero()));
         for i in 0..3 {
@@ -270,22 +268,6 @@ impl Natural {
         }
     }
 
-    /// The JSON form of SPEC §2 (numbers as exact strings).
-    pub fn to_json(&self) -> Value {
-        let v = |p: &V3| -> Value { json!(p.iter().map(fmt_q).collect::<Vec<_>>()) };
-        match self {
-            Natural::Sphere(s) => {
-                json!({"kind": "sphere", "center": v(&s.center), "radius2": fmt_q(&s.r2)})
-            }
-            Natural::Cylinder(c) => {
-                json!({"kind": "cylinder", "point": v(&c.point), "axis": v(&c.axis), "radius2": fmt_q(&c.r2)})
-            }
-            Natural::Cone(c) => {
-                json!({"kind": "cone", "vertex": v(&c.vertex), "axis": v(&c.axis), "tan2": fmt_q(&c.t2)})
-            }
-        }
-    }
-
     /// The short human syntax.
     pub fn to_short(&self) -> String {
         let v = |p: &V3| p.iter().map(fmt_q).collect::<Vec<_>>().join(",");
@@ -307,33 +289,6 @@ impl Natural {
             ),
         }
     }
-}
-
-/// The Cayley rotation of the rational vector `(a, b, c)`: an exact
-/// rational orthogonal matrix with determinant 1 (every rotation whose angle
-/// is not π has this form).
-pub fn cayley_rotation(a: &Q, b: &Q, c: &Q) -> [[Q; 3]; 3] {
-    let n = a * a + b * b + c * c;
-    let d = Q::one() + &n;
-    let two = qi(2);
-    let m = [
-        [
-            Q::one() + a * a - b * b - c * c,
-            &two * (a * b - c),
-            &two * (a * c + b),
-        ],
-        [
-            &two * (a * b + c),
-            Q::one() - a * a + b * b - c * c,
-            &two * (b * c - a),
-        ],
-        [
-            &two * (a * c - b),
-            &two * (b * c + a),
-            Q::one() - a * a - b * b + c * c,
-        ],
-    ];
-    std::array::from_fn(|i| std::array::from_fn(|j| &m[i][j] / &d))
 }
 
 // ------------------------------------------------------------------ parsing
@@ -434,6 +389,7 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
 
 /// Parses the JSON object form of SPEC §2 (numbers as strings; JSON
 /// integers are accepted too, floats are refused as inexact).
+#[cfg(feature = "serde")]
 pub fn from_json(v: &Value) -> Result<Natural, Error> {
     let obj = v.as_object().ok_or_else(|| {
         Error::new(
@@ -490,9 +446,17 @@ pub fn from_json(v: &Value) -> Result<Natural, Error> {
 pub fn parse_natural(text: &str) -> Result<Natural, Error> {
     let t = text.trim();
     if t.starts_with('{') {
-        let v: Value = serde_json::from_str(t)
-            .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("invalid JSON: {e}")))?;
-        return from_json(&v);
+        #[cfg(feature = "serde")]
+        {
+            let v: Value = serde_json::from_str(t)
+                .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("invalid JSON: {e}")))?;
+            return from_json(&v);
+        }
+        #[cfg(not(feature = "serde"))]
+        return Err(Error::new(
+            ErrorKind::BadQuadric,
+            "the JSON form of a natural quadric needs the crate feature `serde`; use the short syntax (e.g. `sphere center=0,0,0 radius2=1`)",
+        ));
     }
     let mut words = t.split_whitespace();
     let kind = words
@@ -526,19 +490,7 @@ pub fn axial_param(x: &V3, p: &V3, a: &V3) -> Q {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn cayley_is_orthogonal() {
-        let r = cayley_rotation(&qi(1), &crate::number::q(2, 3), &qi(-2));
-        for i in 0..3 {
-            for j in 0..3 {
-                let d: Q = (0..3)
-                    .map(|k| &r[i][k] * &r[j][k])
-                    .fold(Q::zero(), |a, b| a + b);
-                assert_eq!(d, if i == j { qi(1) } else { qi(0) });
-            }
-        }
-    }
+    use crate::number::qi;
 
     #[test]
     fn parse_forms_agree() {

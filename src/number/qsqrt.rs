@@ -293,6 +293,44 @@ impl fmt::Display for QSqrt {
     }
 }
 
+// Operators on borrowed operands (`&x + &y`), so that generic vector code
+// (crate::geom::vec3) works over Q(√d) as over Q.  All operands must lie in
+// one field Q(√d) (or be rational).
+impl std::ops::Add for &QSqrt {
+    type Output = QSqrt;
+    fn add(self, o: &QSqrt) -> QSqrt {
+        QSqrt::add(self, o)
+    }
+}
+
+impl std::ops::Sub for &QSqrt {
+    type Output = QSqrt;
+    fn sub(self, o: &QSqrt) -> QSqrt {
+        QSqrt::sub(self, o)
+    }
+}
+
+impl std::ops::Mul for &QSqrt {
+    type Output = QSqrt;
+    fn mul(self, o: &QSqrt) -> QSqrt {
+        QSqrt::mul(self, o)
+    }
+}
+
+impl std::ops::Mul<&Q> for &QSqrt {
+    type Output = QSqrt;
+    fn mul(self, k: &Q) -> QSqrt {
+        self.scale(k)
+    }
+}
+
+impl std::ops::Neg for &QSqrt {
+    type Output = QSqrt;
+    fn neg(self) -> QSqrt {
+        QSqrt::neg(self)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -99,13 +99,7 @@ pub enum Outcome {
 
 /// `∇S × ∇E`.
 pub fn cross_gradients(s: &QMPoly, e: &QMPoly) -> [QMPoly; 3] {
-    let gs = [s.derivative(X), s.derivative(Y), s.derivative(Z)];
-    let ge = [e.derivative(X), e.derivative(Y), e.derivative(Z)];
-    [
-        &(&gs[1] * &ge[2]) - &(&gs[2] * &ge[1]),
-        &(&gs[2] * &ge[0]) - &(&gs[0] * &ge[2]),
-        &(&gs[0] * &ge[1]) - &(&gs[1] * &ge[0]),
-    ]
+    crate::geom::vec3::cross(&crate::geom::gradient(s), &crate::geom::gradient(e))
 }
 
 /// Runs the critical-point analysis of S on E.

@@ -23,14 +23,14 @@
 
 pub mod critical;
 pub mod ellipsoid;
-pub mod examples;
 pub mod judging;
 pub mod pencil;
 pub mod quadric;
 pub mod separable;
 pub mod witness;
 
-pub use ellipsoid::{Ellipsoid, QuadricForm};
+pub use crate::geom::QuadricForm;
+pub use ellipsoid::Ellipsoid;
 pub use witness::WitnessPoint;
 
 use crate::error::{Error, ErrorKind};
@@ -456,7 +456,8 @@ fn witness_for(
 
 /// Containment when S is an ellipsoid and does not meet E.
 fn containment_of(e: &Ellipsoid, s: &QMPoly, side: i32) -> Option<Containment> {
-    use ellipsoid::{IntEllipsoid, common_denominator, sign_at_int};
+    use crate::geom::common_denominator;
+    use ellipsoid::{IntEllipsoid, sign_at_int};
     let form = QuadricForm::from_poly(s)?;
     let se = IntEllipsoid::of(&form.int_matrix(&common_denominator(&[&form]))).ok()?;
     // S oriented negative inside: the sign of the oriented S on E

@@ -33,8 +33,9 @@
 //! singular multipliers, degenerate critical points) the complete
 //! λ-parametrisation of [`super::quadric`] answers instead.
 
-use super::ellipsoid::{Ellipsoid, Mat4, QuadricForm, adj3_int, common_denominator};
+use super::ellipsoid::Ellipsoid;
 use super::witness::{WitnessPoint, find_witness};
+use crate::geom::{Mat4, QuadricForm, adj3_int, common_denominator};
 use crate::number::Q;
 use crate::poly::{QMPoly, ZPoly};
 use crate::roots::{RealAlg, isolate_squarefree};

@@ -15,10 +15,10 @@
 //! be irrational (a root of an irreducible quadratic or cubic factor of δ):
 //! the linear algebra then runs in the number field Q(λ₀).
 
-use super::ellipsoid::Mat4;
-use super::ellipsoid::{Ellipsoid, QuadricForm, common_denominator};
+use super::ellipsoid::Ellipsoid;
 use super::pencil::{CentreApprox, pencil_polys};
 use super::witness::{WitnessPoint, find_witness};
+use crate::geom::{Mat4, QuadricForm, common_denominator};
 use crate::number::{Q, QSqrt};
 use crate::poly::extension::{NfElem, NumberField};
 use crate::poly::{QMPoly, QPoly, ZPoly};

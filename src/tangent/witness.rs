@@ -6,10 +6,11 @@
 //! approximation of a point of E by solving E = 0 for the coordinate along
 //! which E's gradient is largest (so the discriminant stays positive).
 
-use super::ellipsoid::{Ellipsoid, Mat4, common_denominator};
+use super::ellipsoid::Ellipsoid;
+pub use crate::geom::eval_qsqrt;
+use crate::geom::{Mat4, common_denominator};
 use crate::number::{Q, QSqrt};
 use crate::poly::QMPoly;
-use crate::poly::mpoly::NVARS;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -22,72 +23,6 @@ pub struct WitnessPoint {
     pub value: QSqrt,
     /// Its sign (-1, 0, 1).
     pub sign: i32,
-}
-
-/// Exact value of a polynomial in x, y, z at a point of Q(√d)³.
-///
-/// With at most one irrational coordinate `x_k` (the witnesses' shape) the
-/// rational coordinates are substituted first and the univariate rest is
-/// evaluated by Horner's rule in Q(√d): a handful of Q(√d) products instead
-/// of one per monomial factor.
-pub fn eval_qsqrt(p: &QMPoly, pt: &[QSqrt; 3]) -> QSqrt {
-    let irrational: Vec<usize> = (0..3).filter(|&i| !pt[i].is_rational()).collect();
-    let d = irrational
-        .first()
-        .map(|&i| pt[i].d.clone())
-        .unwrap_or_else(Q::zero);
-    if irrational.len() > 1 {
-        return eval_qsqrt_terms(p, pt, &d);
-    }
-    let k = irrational.first().copied().unwrap_or(0);
-    // coefficients of p restricted to the line, as a polynomial in x_k
-    let deg = p
-        .terms()
-        .iter()
-        .map(|(e, _)| e[k] as usize)
-        .max()
-        .unwrap_or(0);
-    let mut coef = vec![Q::zero(); deg + 1];
-    let mut powers: [Vec<Q>; 3] = Default::default();
-    for (e, c) in p.terms() {
-        let mut t = c.clone();
-        for v in (0..3).filter(|&v| v != k) {
-            let ev = e[v] as usize;
-            if ev == 0 {
-                continue;
-            }
-            let pw = &mut powers[v];
-            if pw.is_empty() {
-                pw.push(Q::one());
-            }
-            while pw.len() <= ev {
-                let next = pw.last().expect("non-empty") * &pt[v].a;
-                pw.push(next);
-            }
-            t *= &pw[ev];
-        }
-        coef[e[k] as usize] += t;
-    }
-    let x = &pt[k];
-    let mut acc = QSqrt::new(Q::zero(), Q::zero(), d.clone());
-    for c in coef.iter().rev() {
-        acc = acc.mul(x).add(&QSqrt::new(c.clone(), Q::zero(), d.clone()));
-    }
-    acc
-}
-
-fn eval_qsqrt_terms(p: &QMPoly, pt: &[QSqrt; 3], d: &Q) -> QSqrt {
-    let mut acc = QSqrt::new(Q::zero(), Q::zero(), d.clone());
-    for (e, c) in p.terms() {
-        let mut t = QSqrt::new(c.clone(), Q::zero(), d.clone());
-        for v in 0..3.min(NVARS) {
-            for _ in 0..e[v] {
-                t = t.mul(&pt[v]);
-            }
-        }
-        acc = acc.add(&t);
-    }
-    acc
 }
 
 /// Projects a rational point near E onto E along the coordinate axis of the

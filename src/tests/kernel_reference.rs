@@ -5,11 +5,11 @@
 //! Every case is checked (a panic inside the crate counts as a failure of
 //! that case) and all failing ids are reported together.
 
+use crate::number::parse_rational;
+use crate::poly::parse_poly;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
-use quadsect::number::parse_rational;
-use quadsect::poly::parse_poly;
 use serde_json::Value;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
@@ -67,7 +67,7 @@ fn guarded<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
 /// All problems found for one roots case (empty when it passes).
 fn check_roots_case(case: &Value) -> Vec<String> {
     let poly = str_field(case, "poly");
-    let result = match guarded(|| quadsect::ops::roots(poly).map_err(|e| format!("{e:?}"))) {
+    let result = match guarded(|| crate::ops::roots(poly).map_err(|e| format!("{e:?}"))) {
         Ok(r) => r,
         Err(e) => return vec![format!("roots({poly:?}) failed: {e}")],
     };
@@ -237,7 +237,7 @@ fn check_resultant_case(case: &Value) -> Result<(), String> {
     );
     let want_text = str_field(case, "resultant");
     let want = parse_poly(want_text).map_err(|e| format!("reference does not parse: {e}"))?;
-    let got = guarded(|| quadsect::ops::resultant(f, g, var).map_err(|e| format!("{e:?}")))?;
+    let got = guarded(|| crate::ops::resultant(f, g, var).map_err(|e| format!("{e:?}")))?;
     if got.resultant == want {
         Ok(())
     } else {

@@ -1,15 +1,15 @@
 //! Property tests of the exact kernel: independent deciders must agree.
 
+use crate::elim::{
+    resultant_bivariate_modular, resultant_modular, resultant_subresultant, resultant_sylvester,
+};
+use crate::number::Q;
+use crate::poly::mpoly::{MPoly, NVARS, X, Y};
+use crate::poly::{QMPoly, ZMPoly, ZPoly, parse_poly};
+use crate::roots::{RealAlg, SturmSequence, analyze_roots, isolate_real_roots};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 use proptest::prelude::*;
-use quadsect::elim::{
-    resultant_bivariate_modular, resultant_modular, resultant_subresultant, resultant_sylvester,
-};
-use quadsect::number::Q;
-use quadsect::poly::mpoly::{MPoly, NVARS, X, Y};
-use quadsect::poly::{QMPoly, ZMPoly, ZPoly, parse_poly};
-use quadsect::roots::{RealAlg, SturmSequence, analyze_roots, isolate_real_roots};
 use std::cmp::Ordering;
 
 fn zpoly(max_deg: usize, bits: u32) -> impl Strategy<Value = ZPoly> {
@@ -73,7 +73,7 @@ proptest! {
     fn enclosures_contain_exact_values(p in zpoly(7, 40), q in zpoly(3, 8),
                                        a in (-400i64..400, 1i64..50), w in (0i64..300, 1i64..90),
                                        ts in prop::collection::vec(0i64..=64, 1..6)) {
-        use quadsect::roots::{enclose_mean_value, ratio_enclosure};
+        use crate::roots::{enclose_mean_value, ratio_enclosure};
         let a = Q::new(a.0.into(), a.1.into());
         let b = &a + Q::new(w.0.into(), w.1.into());
         let (lo, hi) = enclose_mean_value(&p, &a, &b);
@@ -147,7 +147,7 @@ proptest! {
                                          m in prop_oneof![any::<i64>().prop_map(BigInt::from),
                                                           (any::<i64>(), 0usize..80).prop_map(|(a, s)| BigInt::from(a) << s)],
                                          k in 0u64..90) {
-        use quadsect::poly::zpoly::DyadicSigner;
+        use crate::poly::zpoly::DyadicSigner;
         // p with a dyadic root a/2^e, evaluated there and at m/2^k
         let (a, e) = root;
         let pr = &p * &ZPoly::new(vec![BigInt::from(-a), BigInt::one() << e as usize]);

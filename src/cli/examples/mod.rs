@@ -3,6 +3,9 @@
 
 use serde_json::{Value, json};
 
+pub mod natural;
+pub mod tangent;
+
 /// One reproduced example.
 #[derive(Clone, Debug)]
 pub struct ExampleResult {
@@ -52,8 +55,8 @@ fn kernel_examples() -> Vec<ExampleResult> {
 /// Runs every example.
 pub fn run_all() -> Vec<ExampleResult> {
     let mut out = kernel_examples();
-    out.extend(crate::tangent::examples::paper_examples());
-    out.extend(crate::natural::examples::natural_examples());
+    out.extend(tangent::paper_examples());
+    out.extend(natural::natural_examples());
     out
 }
 

@@ -2,8 +2,8 @@
 //! that a floating-point implementation gets wrong, and one example per
 //! class of SPEC §4.
 
-use super::classify_str;
-use crate::examples::ExampleResult;
+use super::ExampleResult;
+use crate::natural::classify_str;
 use crate::report::{natural_human, natural_json};
 
 /// An example pair with the answer the paper (or elementary geometry)

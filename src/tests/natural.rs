@@ -3,20 +3,20 @@
 //! conic deciders agree; computed conics really lie on both surfaces; the
 //! pencil is consistent with the class; §7 agrees with the curve topology.
 
-use num_traits::{One, Zero};
-use proptest::prelude::*;
-use quadsect::natural::classify::section7_agrees;
-use quadsect::natural::deciders::{
+use crate::cli::examples::natural::NATURAL_EXAMPLES;
+use crate::natural::classify::section7_agrees;
+use crate::natural::deciders::{
     AxesRelation, AxialPlane, pencil_determinant, pencil_has_planar_member, relation, thm8,
 };
-use quadsect::natural::exact::{EPoint, Exact};
-use quadsect::natural::examples::NATURAL_EXAMPLES;
-use quadsect::natural::result::{Class, Component, NaturalReport};
-use quadsect::natural::tangency::section7;
-use quadsect::natural::{Natural, cayley_rotation, classify, parse_natural};
-use quadsect::number::{Q, QSqrt, q, qi};
-use quadsect::poly::ZPoly;
-use quadsect::tangent::witness::eval_qsqrt;
+use crate::natural::exact::{EPoint, Exact};
+use crate::natural::result::{Class, Component, NaturalReport};
+use crate::natural::tangency::section7;
+use crate::natural::{Natural, cayley_rotation, classify, parse_natural};
+use crate::number::{Q, QSqrt, q, qi};
+use crate::poly::ZPoly;
+use crate::tangent::witness::eval_qsqrt;
+use num_traits::{One, Zero};
+use proptest::prelude::*;
 
 fn nat(s: &str) -> Natural {
     parse_natural(s).unwrap_or_else(|e| panic!("{s}: {e}"))
@@ -474,7 +474,7 @@ fn check_components(a: &Natural, b: &Natural, r: &NaturalReport) {
                             "centre/vertex off the plane"
                         );
                     }
-                    if *kind != quadsect::natural::result::ConicKind::Parabola
+                    if *kind != crate::natural::result::ConicKind::Parabola
                         && let (Some(c0), Some(a2)) = (base, axes2.first().and_then(quad))
                         && let Some(dir) = axis_dirs.first().and_then(qpoint)
                     {
@@ -495,7 +495,7 @@ fn check_components(a: &Natural, b: &Natural, r: &NaturalReport) {
                                 assert!(
                                     va.is_zero()
                                         || vb.is_zero()
-                                        || *kind == quadsect::natural::result::ConicKind::Hyperbola,
+                                        || *kind == crate::natural::result::ConicKind::Hyperbola,
                                     "conic vertex off the surfaces"
                                 );
                             }
@@ -548,8 +548,8 @@ fn conic_planes_cut_proportional_conics() {
                 v
             };
             let (u, v) = (mk(others[0]), mk(others[1]));
-            let eval = |f: &quadsect::poly::QMPoly, s: i64, t: i64| -> Q {
-                let mut pt: [Q; quadsect::poly::mpoly::NVARS] = std::array::from_fn(|_| Q::zero());
+            let eval = |f: &crate::poly::QMPoly, s: i64, t: i64| -> Q {
+                let mut pt: [Q; crate::poly::mpoly::NVARS] = std::array::from_fn(|_| Q::zero());
                 for i in 0..3 {
                     pt[i] = &p0[i] + &u[i] * qi(s) + &v[i] * qi(t);
                 }
@@ -695,7 +695,7 @@ proptest! {
         let h = AxialPlane::new(&x, &y).unwrap();
         let t8 = thm8(&x, &y, &rel).unwrap();
         // the i128 fast path agrees with the rational closed form
-        prop_assert_eq!(quadsect::natural::deciders::conic_intersection_thm8(&x, &y), Some(t8));
+        prop_assert_eq!(crate::natural::deciders::conic_intersection_thm8(&x, &y), Some(t8));
         prop_assert_eq!(t8, h.lemma81_planar(), "{} | {}", qa, qb);
         prop_assert_eq!(t8, pencil_has_planar_member(&x, &y), "{} | {}", qa, qb);
     }
@@ -719,11 +719,11 @@ proptest! {
             let s2 = &rho2q / qi(d * d);
             if s2 >= Q::one() { return None; }
             let v = [&o3[0] + &u[0] * qi(d), &o3[1] + &u[1] * qi(d), qi(0)];
-            Some(Natural::Cone(quadsect::natural::Cone::new(v, [u[0].clone(), u[1].clone(), qi(0)], &s2 / (Q::one() - &s2)).ok()?))
+            Some(Natural::Cone(crate::natural::Cone::new(v, [u[0].clone(), u[1].clone(), qi(0)], &s2 / (Q::one() - &s2)).ok()?))
         };
         let Some(a) = cone(u1, d1) else { return Ok(()); };
         let b = if cyl {
-            Natural::Cylinder(quadsect::natural::Cylinder::new(o3.clone(), [u2[0].clone(), u2[1].clone(), qi(0)], rho2q.clone()).unwrap())
+            Natural::Cylinder(crate::natural::Cylinder::new(o3.clone(), [u2[0].clone(), u2[1].clone(), qi(0)], rho2q.clone()).unwrap())
         } else {
             match cone(u2, d2) { Some(c) => c, None => return Ok(()) }
         };
@@ -731,7 +731,7 @@ proptest! {
         let rel = relation(&a, &b).unwrap();
         let t8 = thm8(&a, &b, &rel).unwrap();
         prop_assert!(t8);
-        prop_assert_eq!(quadsect::natural::deciders::conic_intersection_thm8(&a, &b), Some(true));
+        prop_assert_eq!(crate::natural::deciders::conic_intersection_thm8(&a, &b), Some(true));
         prop_assert!(AxialPlane::new(&a, &b).unwrap().lemma81_planar());
         prop_assert!(pencil_has_planar_member(&a, &b));
         let r = classify(&a, &b).unwrap();
@@ -760,8 +760,8 @@ proptest! {
         };
         let (qs, qq) = (nat(&s), nat(&q));
         let r = classify(&qs, &qq).unwrap();
-        let t = quadsect::tangent::decide(&qs.equation(), &qq.equation()).unwrap();
-        use quadsect::tangent::Verdict;
+        let t = crate::tangent::decide(&qs.equation(), &qq.equation()).unwrap();
+        use crate::tangent::Verdict;
         let double = r.components.iter().any(|c| matches!(c, Component::Conic { double: true, .. }));
         let expected = match r.class {
             Class::Empty => Verdict::Separated,

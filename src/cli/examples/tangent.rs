@@ -1,11 +1,11 @@
 //! Paper 004's Examples 1–4 recomputed exactly, beside what the paper
 //! printed, with each discrepancy stated (SPEC §6, `docs/errata.md`).
 
-use super::{Method, TangentReport, decide_str};
-use crate::examples::ExampleResult;
+use super::ExampleResult;
 use crate::poly::mpoly::U;
 use crate::poly::{ZPoly, parse_poly};
 use crate::report::{tangent_human, tangent_json, upoly_string};
+use crate::tangent::{Method, TangentReport, decide_str};
 
 /// One paper example: inputs, what the paper printed, and the polynomials
 /// it printed (to test divisibility into our exact D(u)).
@@ -142,9 +142,9 @@ pub fn paper_examples() -> Vec<ExampleResult> {
         // system in two orders (the separable route eliminates branch-wise)
         let elimination = match &r.certificate.method {
             Method::CriticalIdeal(an) => an.elimination.clone(),
-            Method::Separable(_) => super::Ellipsoid::new(&r.ellipsoid)
+            Method::Separable(_) => crate::tangent::Ellipsoid::new(&r.ellipsoid)
                 .ok()
-                .and_then(|e| super::judging::eliminate(&e, &r.surface)),
+                .and_then(|e| crate::tangent::judging::eliminate(&e, &r.surface)),
             _ => None,
         };
         if let Some(el) = &elimination {

@@ -1,39 +1,9 @@
-//! Formatting of the kernel operations (`roots`, `resultant`) and of real
+//! Human-readable text of the kernel operations (`roots`, `resultant`) and of real
 //! algebraic numbers.
 
 use crate::number::{approx_decimal, fmt_q};
 use crate::ops::{ResultantResult, RootsResult};
 use crate::roots::RealAlg;
-use serde_json::{Value, json};
-
-/// A real algebraic number as SPEC's ALG object:
-/// `{"poly", "interval": [lo, hi], "approx"}`.
-pub fn alg_json(a: &RealAlg) -> Value {
-    let (poly, interval, approx) = a.describe();
-    json!({"poly": poly, "interval": interval, "approx": approx})
-}
-
-/// `quadsect roots --json`.
-pub fn roots_json(r: &RootsResult) -> Value {
-    let rep = &r.report;
-    let intervals: Vec<Value> = rep
-        .roots
-        .iter()
-        .map(|x| json!([fmt_q(&x.interval.lo), fmt_q(&x.interval.hi)]))
-        .collect();
-    let mult: Vec<u32> = rep.roots.iter().map(|x| x.multiplicity).collect();
-    json!({
-        "distinct_real": rep.distinct_real,
-        "positive": rep.positive,
-        "negative": rep.negative,
-        "zero_multiplicity": rep.zero_multiplicity,
-        "real_with_multiplicity": rep.real_with_multiplicity,
-        "descartes_positive_bound": rep.descartes_positive_bound,
-        "descartes_negative_bound": rep.descartes_negative_bound,
-        "intervals": intervals,
-        "multiplicities": mult,
-    })
-}
 
 /// Left-aligned text table with a header row.
 pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
@@ -117,11 +87,6 @@ pub fn roots_human(r: &RootsResult) -> String {
     s.push_str(&table(&["#", "mult", "isolating interval", "value"], &rows));
     s.push('\n');
     s
-}
-
-/// `quadsect resultant --json`.
-pub fn resultant_json(r: &ResultantResult) -> Value {
-    json!({"resultant": r.resultant.to_string_canonical(), "degree": r.degree})
 }
 
 /// `quadsect resultant` for people.

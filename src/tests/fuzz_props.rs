@@ -2,10 +2,10 @@
 //! `fuzz/` need nightly): parsers and batch lines never panic, and what
 //! parses prints back to itself.
 
+use crate::batch::answer_line;
+use crate::number::parse_rational;
+use crate::poly::parse_poly;
 use proptest::prelude::*;
-use quadsect::batch::answer_line;
-use quadsect::number::parse_rational;
-use quadsect::poly::parse_poly;
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 2000, .. ProptestConfig::default() })]
@@ -37,7 +37,7 @@ proptest! {
     /// The natural-quadric parser never panics on arbitrary text.
     #[test]
     fn natural_parser_never_panics(s in "\\PC{0,60}") {
-        let _ = quadsect::natural::parse_natural(&s);
+        let _ = crate::natural::parse_natural(&s);
     }
 
     /// Text close to the short syntax reaches deep into the parser, and
@@ -46,9 +46,9 @@ proptest! {
     fn natural_syntax_alphabet(kind in "(sphere|cylinder|cone|torus)", k1 in "(center|point|vertex|axis|radius2|tan2|tan|cos2|sin2|foo)",
                                v1 in "[-0-9/.,e]{0,12}", k2 in "(axis|radius2|tan2|cos2)", v2 in "[-0-9/.,]{0,10}") {
         let text = format!("{kind} {k1}={v1} {k2}={v2}");
-        if let Ok(q) = quadsect::natural::parse_natural(&text) {
-            let other = quadsect::natural::parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
-            let _ = quadsect::natural::classify(&q, &other);
+        if let Ok(q) = crate::natural::parse_natural(&text) {
+            let other = crate::natural::parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
+            let _ = crate::natural::classify(&q, &other);
         }
     }
 

@@ -174,7 +174,7 @@ pub fn quadric_pairs() -> Result<Vec<(crate::poly::QMPoly, crate::poly::QMPoly)>
     let mut rng = Rng(0x9e3779b97f4a7c15);
     let mut pairs = Vec::new();
     for _ in 0..16 {
-        let r = crate::natural::cayley_rotation(
+        let r = crate::geom::cayley_rotation(
             &crate::number::q(rng.int(-3, 3), rng.int(1, 3)),
             &crate::number::q(rng.int(-3, 3), rng.int(1, 3)),
             &crate::number::q(rng.int(-3, 3), rng.int(1, 3)),
@@ -196,7 +196,7 @@ pub fn quadric_pairs() -> Result<Vec<(crate::poly::QMPoly, crate::poly::QMPoly)>
             rng.int(-4, 4),
             rng.int(1, 20)
         ))?;
-        let s = rotate(&s0, &r);
+        let s = crate::geom::rotate(&s0, &r);
         pairs.push((e, s));
     }
     Ok(pairs)
@@ -295,20 +295,6 @@ pub const EX1ROT_S: &str = "77053*x^2/378225 + 15064*x*y/126075 + 1463*x*z/25215
 pub const EX4ROT_E: &str = "113426*x^2/42025 + 21264*x*y/42025 + 7008*x*z/8405 - 141378*x/42025 + 129099*y^2/42025 - 13944*y*z/8405 + 145154*y/42025 + 5428*z^2/1681 - 62432*z/8405 - 5010049/252150";
 /// S of `ex4rot`.
 pub const EX4ROT_S: &str = "279841*x^4/25431849 - 389344*x^3*y/8477283 - 389344*x^3*z/8477283 - 1776382*x^3/25431849 + 203136*x^2*y^2/2825761 + 406272*x^2*y*z/2825761 + 617872*x^2*y/2825761 + 203136*x^2*z^2/2825761 + 617872*x^2*z/2825761 + 3281023487*x^2/9748875450 - 141312*x*y^3/2825761 - 423936*x*y^2*z/2825761 - 644736*x*y^2/2825761 - 423936*x*y*z^2/2825761 - 1289472*x*y*z/2825761 - 278394572*x*y/1624812575 - 141312*x*z^3/2825761 - 644736*x*z^2/2825761 - 63784024*x*z/324962515 - 12820478233*x/29246626350 + 36864*y^4/2825761 + 147456*y^3*z/2825761 + 224256*y^3/2825761 + 221184*y^2*z^2/2825761 + 672768*y^2*z/2825761 + 2039680367*y^2/6499250300 + 147456*y*z^3/2825761 + 672768*y*z^2/2825761 + 86064882*y*z/324962515 + 914752541*y/3249625150 + 36864*z^4/2825761 + 224256*z^3/2825761 + 19620064*z^2/64992503 - 161727002*z/974887545 - 157592469077/233973010800";
-
-/// `p(Rᵀ x)`: the polynomial of the rotated surface.
-pub fn rotate(p: &crate::poly::QMPoly, r: &[[crate::number::Q; 3]; 3]) -> crate::poly::QMPoly {
-    use crate::poly::MPoly;
-    let mut subs: [Option<crate::poly::QMPoly>; crate::poly::mpoly::NVARS] = Default::default();
-    for (i, s) in subs.iter_mut().enumerate().take(3) {
-        let mut acc = MPoly::zero();
-        for j in 0..3 {
-            acc = &acc + &MPoly::var(j).scale(&r[j][i]);
-        }
-        *s = Some(acc);
-    }
-    p.substitute_all(&subs)
-}
 
 /// The natural-quadric suite: the Theorem 8.1/8.2 decider against a plain
 /// f64 formula on the same random rational pairs, and the full

@@ -3,16 +3,16 @@
 //! purpose, bad input, and property tests (rigid motions, scaling,
 //! sampling).
 
+use crate::cli::examples::tangent::{PAPER_004, divides_judging};
+use crate::number::{Q, QSqrt, q, qi};
+use crate::poly::mpoly::{MPoly, NVARS};
+use crate::poly::{QMPoly, parse_poly};
+use crate::roots::RealAlg;
+use crate::tangent::witness::{eval_qsqrt, snap_to_ellipsoid};
+use crate::tangent::{Containment, Ellipsoid, TangentReport, Verdict, decide, decide_str};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use proptest::prelude::*;
-use quadsect::number::{Q, QSqrt, q, qi};
-use quadsect::poly::mpoly::{MPoly, NVARS};
-use quadsect::poly::{QMPoly, parse_poly};
-use quadsect::roots::RealAlg;
-use quadsect::tangent::examples::{PAPER_004, divides_judging};
-use quadsect::tangent::witness::{eval_qsqrt, snap_to_ellipsoid};
-use quadsect::tangent::{Containment, Ellipsoid, TangentReport, Verdict, decide, decide_str};
 use std::cmp::Ordering;
 
 fn run(e: &str, s: &str) -> TangentReport {
@@ -200,15 +200,12 @@ fn singular_multipliers() {
     // a plane: the range of x + y + z − 1 on the sphere is −1 ± 5√3
     let r = run(e, "x+y+z-1");
     let lo = r.min.as_ref().unwrap();
-    assert_eq!(
-        lo.sign_of(&quadsect::poly::ZPoly::from_i64s(&[-74, 2, 1])),
-        0
-    );
+    assert_eq!(lo.sign_of(&crate::poly::ZPoly::from_i64s(&[-74, 2, 1])), 0);
     assert_eq!(lo.cmp_rational(&q(-966, 100)), Ordering::Less);
     // x² + 2xy on the sphere: 25(1 ± √5)/2, singular λ = (1 ± √5)/2 irrational
     let r = run(e, "x^2+2x*y");
     let (lo, hi) = (r.min.unwrap(), r.max.unwrap());
-    let p = quadsect::poly::ZPoly::from_i64s(&[-625, -25, 1]);
+    let p = crate::poly::ZPoly::from_i64s(&[-625, -25, 1]);
     assert_eq!((lo.sign_of(&p), hi.sign_of(&p)), (0, 0));
     assert_eq!((lo.sign(), hi.sign()), (-1, 1));
     // constants
@@ -223,7 +220,7 @@ fn near_tangencies_are_decided_exactly() {
         // centre 8 + ε: min (6 + ε)ε > 0, separated
         let r = run(e, &format!("(x-8-{eps})^2+y^2+z^2-9"));
         assert_eq!(r.verdict, Verdict::Separated, "eps {eps}");
-        let ev = quadsect::number::parse_rational(eps).unwrap();
+        let ev = crate::number::parse_rational(eps).unwrap();
         assert_eq!(rat(&r.min), (qi(6) + &ev) * &ev);
         // centre 8 − ε: intersecting
         let r = run(e, &format!("(x-8+{eps})^2+y^2+z^2-9"));
@@ -266,7 +263,7 @@ fn bad_input_is_rejected() {
 // ----------------------------------------------------------------- properties
 
 fn cayley(a: i64, b: i64, c: i64, d: i64) -> [[Q; 3]; 3] {
-    quadsect::natural::cayley_rotation(&q(a, d), &q(b, d), &q(c, d))
+    crate::natural::cayley_rotation(&q(a, d), &q(b, d), &q(c, d))
 }
 
 /// `p(R⁻¹(x − t))`: the polynomial of the moved surface.
@@ -355,7 +352,7 @@ proptest! {
         if let Some(pt) = snap_to_ellipsoid(&ell, &p) {
             prop_assert!(eval_qsqrt(&ell.poly, &pt).is_zero());
             let v = eval_qsqrt(&sp, &pt);
-            let va = quadsect::natural::exact::Exact::Quad(v).to_alg();
+            let va = crate::natural::exact::Exact::Quad(v).to_alg();
             prop_assert!(va.cmp_exact(r.min.as_ref().unwrap()) != Ordering::Less);
             prop_assert!(va.cmp_exact(r.max.as_ref().unwrap()) != Ordering::Greater);
         }
@@ -386,11 +383,11 @@ proptest! {
 #[test]
 fn paper_example_4_rotated() {
     let a = run("2x^2+3y^2+4z^2-25", "(x-1)^4/9+y^2/4+4z^2/23-1");
-    let b = run(quadsect::bench::EX4ROT_E, quadsect::bench::EX4ROT_S);
+    let b = run(crate::cli::bench::EX4ROT_E, crate::cli::bench::EX4ROT_S);
     assert_eq!(b.verdict, Verdict::Intersecting);
     assert!(same_alg(&a.min, &b.min) && same_alg(&a.max, &b.max));
     assert_eq!(a.judging_poly, b.judging_poly);
-    let c = run(quadsect::bench::EX1ROT_E, quadsect::bench::EX1ROT_S);
+    let c = run(crate::cli::bench::EX1ROT_E, crate::cli::bench::EX1ROT_S);
     assert_eq!((rat(&c.min), rat(&c.max)), (q(7, 9), q(187, 9)));
 }
 
@@ -448,7 +445,7 @@ proptest! {
         for (px, py, pz) in samples {
             let p = [&ell.center[0] + q(px, 5), &ell.center[1] + q(py, 5), &ell.center[2] + q(pz, 5)];
             if let Some(pt) = snap_to_ellipsoid(&ell, &p) {
-                let va = quadsect::natural::exact::Exact::Quad(eval_qsqrt(&sp, &pt)).to_alg();
+                let va = crate::natural::exact::Exact::Quad(eval_qsqrt(&sp, &pt)).to_alg();
                 prop_assert!(va.cmp_exact(r.min.as_ref().unwrap()) != Ordering::Less, "{} on {}: sample below ν", s, e);
                 prop_assert!(va.cmp_exact(r.max.as_ref().unwrap()) != Ordering::Greater, "{} on {}: sample above μ", s, e);
             }
@@ -485,11 +482,11 @@ proptest! {
         let sp = parse_poly(&s).unwrap();
         prop_assume!(sp.total_degree().unwrap_or(0) >= 3);
         let ell = Ellipsoid::new(&ep).unwrap();
-        let sep = quadsect::tangent::separable::analyze(&ell, &sp).expect("separable shape");
+        let sep = crate::tangent::separable::analyze(&ell, &sp).expect("separable shape");
         let r = decide(&ep, &sp).unwrap();
-        prop_assert!(matches!(r.certificate.method, quadsect::tangent::Method::Separable(_)));
-        match quadsect::tangent::critical::analyze(&ell, &sp).unwrap() {
-            quadsect::tangent::critical::Outcome::Finite(an) => {
+        prop_assert!(matches!(r.certificate.method, crate::tangent::Method::Separable(_)));
+        match crate::tangent::critical::analyze(&ell, &sp).unwrap() {
+            crate::tangent::critical::Outcome::Finite(an) => {
                 prop_assert_eq!(&an.judging, &sep.judging, "{} on {}", s, e);
                 let mut a = an.real_values();
                 a.sort_by(|x, y| x.cmp_exact(y));
@@ -500,7 +497,7 @@ proptest! {
                     prop_assert_eq!(x.cmp_exact(y), Ordering::Equal);
                 }
             }
-            quadsect::tangent::critical::Outcome::Curves(ls) => {
+            crate::tangent::critical::Outcome::Curves(ls) => {
                 prop_assert!(ls.attained.first().unwrap().cmp_exact(r.min.as_ref().unwrap()) == Ordering::Equal);
                 prop_assert!(ls.attained.last().unwrap().cmp_exact(r.max.as_ref().unwrap()) == Ordering::Equal);
             }
@@ -522,7 +519,7 @@ fn committed_quadric_pairs_match_the_benchmark() {
     ))
     .unwrap();
     let file: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
-    let pairs = quadsect::bench::quadric_pairs().unwrap();
+    let pairs = crate::cli::bench::quadric_pairs().unwrap();
     assert_eq!(file.len(), pairs.len());
     for (f, (e, s)) in file.iter().zip(&pairs) {
         assert_eq!(f["E"].as_str().unwrap(), e.to_string_canonical());

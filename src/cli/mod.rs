@@ -1,0 +1,192 @@
+//! The `quadsect` command line (feature `cli`): argument parsing, output
+//! and the CLI-only jobs (the papers' examples, the benchmarks).
+
+use crate::{Error, ErrorKind};
+use clap::{Parser, Subcommand};
+use std::io::{IsTerminal, Write};
+use std::process::ExitCode;
+
+pub mod bench;
+pub mod examples;
+
+#[derive(Parser)]
+#[command(
+    name = "quadsect",
+    version,
+    about = "Exact decisions on how two surfaces meet: ellipsoid vs algebraic surface, and natural quadrics",
+    long_about = None
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Reproduce the papers' examples side by side with what they printed.
+    Examples {
+        /// Machine-readable output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Real roots of a univariate polynomial: counts and isolating intervals.
+    Roots {
+        /// The polynomial, e.g. "x^3 - 2x".
+        #[arg(allow_hyphen_values = true)]
+        expr: String,
+        /// JSON output (SPEC §5).
+        #[arg(long)]
+        json: bool,
+    },
+    /// The resultant of two polynomials with respect to a variable.
+    Resultant {
+        /// First polynomial.
+        #[arg(allow_hyphen_values = true)]
+        f: String,
+        /// Second polynomial.
+        #[arg(allow_hyphen_values = true)]
+        g: String,
+        /// Variable to eliminate (x, y, z or u).
+        #[arg(long)]
+        var: String,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Ellipsoid vs algebraic surface: intersect, touch or separated (exact, with certificate).
+    Tangent {
+        /// The ellipsoid E, e.g. "x^2+y^2+z^2-25".
+        #[arg(long, allow_hyphen_values = true)]
+        ellipsoid: String,
+        /// The surface S, e.g. "(x-9)^2/9+y^2/4+z^2/16-1".
+        #[arg(long, allow_hyphen_values = true)]
+        surface: String,
+        /// JSON output (SPEC §3).
+        #[arg(long)]
+        json: bool,
+    },
+    /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
+    Natural {
+        /// First quadric: JSON or short syntax, e.g. "cone vertex=0,0,0 axis=1,0,0 tan2=1/3".
+        a: String,
+        /// Second quadric.
+        b: String,
+        /// JSON output (SPEC §4).
+        #[arg(long)]
+        json: bool,
+    },
+    /// Median timings (kernel on ../shared/bench/inputs.json, tangent, natural).
+    Bench {
+        /// kernel, tangent, natural or all.
+        #[arg(default_value = "all")]
+        suite: String,
+        /// The shared benchmark inputs.
+        #[arg(long, default_value = "../shared/bench/inputs.json")]
+        inputs: String,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// JSON lines in (file or - for stdin), one JSON answer line out per input line.
+    Batch {
+        /// Input file; standard input when absent or "-".
+        file: Option<String>,
+    },
+}
+
+/// Prints the JSON or the human form (only the one asked for is built).
+fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() -> String) {
+    let mut out = std::io::stdout().lock();
+    let _ = if json {
+        writeln!(out, "{}", v())
+    } else {
+        write!(out, "{}", human())
+    };
+}
+
+fn run(cli: Cli) -> Result<(), Error> {
+    match cli.command {
+        Command::Examples { json } => {
+            let r = examples::run_all();
+            emit(json, || examples::to_json(&r), || examples::to_human(&r));
+        }
+        Command::Roots { expr, json } => {
+            let r = crate::ops::roots(&expr)?;
+            emit(
+                json,
+                || crate::report::roots_json(&r),
+                || crate::report::roots_human(&r),
+            );
+        }
+        Command::Resultant { f, g, var, json } => {
+            let r = crate::ops::resultant(&f, &g, &var)?;
+            emit(
+                json,
+                || crate::report::resultant_json(&r),
+                || crate::report::resultant_human(&r),
+            );
+        }
+        Command::Tangent {
+            ellipsoid,
+            surface,
+            json,
+        } => {
+            let r = crate::tangent::decide_str(&ellipsoid, &surface)?;
+            emit(
+                json,
+                || crate::report::tangent_json(&r),
+                || crate::report::tangent_human(&r),
+            );
+        }
+        Command::Natural { a, b, json } => {
+            let r = crate::natural::classify_str(&a, &b)?;
+            emit(
+                json,
+                || crate::report::natural_json(&r),
+                || crate::report::natural_human(&r),
+            );
+        }
+        Command::Bench {
+            suite,
+            inputs,
+            json,
+        } => {
+            let rows = bench::run(&suite, &inputs)?;
+            emit(json, || bench::to_json(&rows), || bench::to_markdown(&rows));
+        }
+        Command::Batch { file } => {
+            let progress = std::io::stderr().is_terminal();
+            let out = std::io::BufWriter::new(std::io::stdout().lock());
+            let res = match file.as_deref() {
+                None | Some("-") => crate::batch::run_batch(std::io::stdin().lock(), out, progress),
+                Some(path) => {
+                    let f = std::fs::File::open(path).map_err(|e| {
+                        Error::new(ErrorKind::Io, format!("cannot open batch file {path}: {e}"))
+                    })?;
+                    crate::batch::run_batch(std::io::BufReader::new(f), out, progress)
+                }
+            };
+            res.map_err(|e| Error::new(ErrorKind::Io, format!("batch I/O error: {e}")))?;
+        }
+    }
+    Ok(())
+}
+
+/// Runs the command line: parses the arguments, runs the command, prints
+/// its answer, and returns the exit status (0 success, 2 bad input, 3
+/// budget exhausted, 1 internal failure).
+pub fn main() -> ExitCode {
+    // panics are internal failures: report them in one line, exit status 1
+    std::panic::set_hook(Box::new(|info| {
+        eprintln!("internal error: {info}");
+    }));
+    let cli = Cli::parse();
+    match std::panic::catch_unwind(|| run(cli)) {
+        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(Err(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code() as u8)
+        }
+        Err(_) => ExitCode::from(1),
+    }
+}

@@ -1,0 +1,10 @@
+//! The JSON of `--json` and of the batch protocol (SPEC field names, keys in
+//! the documented order).
+
+mod kernel;
+mod natural;
+mod tangent;
+
+pub use kernel::{alg_json, resultant_json, roots_json};
+pub use natural::{exact_json, natural_input_json, natural_json};
+pub use tangent::{alg_json_in, qsqrt_json, tangent_json};
