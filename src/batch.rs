@@ -5,6 +5,7 @@
 
 use crate::error::{Error, ErrorKind};
 use serde_json::{Map, Value, json};
+#[cfg(feature = "cli")]
 use std::io::{BufRead, Write};
 
 /// Lines processed together (in parallel) before their answers are written.
@@ -30,11 +31,11 @@ pub fn run_op(obj: &Map<String, Value>) -> Result<Value, Error> {
     let op = str_field(obj, "op")?;
     match op {
         "roots" => {
-            let r = crate::ops::roots(str_field(obj, "poly")?)?;
+            let r = crate::kernel::roots_str(str_field(obj, "poly")?)?;
             Ok(crate::report::roots_json(&r))
         }
         "resultant" => {
-            let r = crate::ops::resultant(
+            let r = crate::kernel::resultant_str(
                 str_field(obj, "f")?,
                 str_field(obj, "g")?,
                 str_field(obj, "var")?,

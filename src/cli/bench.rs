@@ -205,10 +205,10 @@ pub fn quadric_pairs() -> Result<Vec<(crate::poly::QMPoly, crate::poly::QMPoly)>
 /// The tangent point suite.
 pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
     use crate::poly::parse_poly;
-    use crate::tangent::decide;
+    use crate::tangent::decide_poly;
     let pairs = quadric_pairs()?;
     let (m, n) = measure_cycled(&pairs, |(e, s)| {
-        black_box(decide(e, s).ok());
+        black_box(decide_poly(e, s).ok());
     });
     rows.push(Row {
         suite: "tangent",
@@ -224,7 +224,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         .enumerate()
         .map(|(i, (e, s))| {
             let (t, _) = measure(|| {
-                black_box(decide(e, s).ok());
+                black_box(decide_poly(e, s).ok());
             });
             (t, i)
         })
@@ -255,7 +255,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
     ] {
         let (e, s) = (parse_poly(e)?, parse_poly(s)?);
         let (m, n) = measure(|| {
-            black_box(decide(&e, &s).ok());
+            black_box(decide_poly(&e, &s).ok());
         });
         rows.push(Row {
             suite: "tangent",
@@ -274,7 +274,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
     ] {
         let (e, s) = (parse_poly(e)?, parse_poly(s)?);
         let (m, n) = measure(|| {
-            black_box(decide(&e, &s).ok());
+            black_box(decide_poly(&e, &s).ok());
         });
         rows.push(Row {
             suite: "tangent",

@@ -111,7 +111,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             emit(json, || examples::to_json(&r), || examples::to_human(&r));
         }
         Command::Roots { expr, json } => {
-            let r = crate::ops::roots(&expr)?;
+            let r = crate::kernel::roots_str(&expr)?;
             emit(
                 json,
                 || crate::report::roots_json(&r),
@@ -119,7 +119,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             );
         }
         Command::Resultant { f, g, var, json } => {
-            let r = crate::ops::resultant(&f, &g, &var)?;
+            let r = crate::kernel::resultant_str(&f, &g, &var)?;
             emit(
                 json,
                 || crate::report::resultant_json(&r),

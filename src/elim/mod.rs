@@ -12,10 +12,9 @@
 pub mod groebner;
 pub mod quotient;
 
-use crate::number::Q;
 use crate::number::modular::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};
 use crate::poly::mpoly::{MPoly, NVARS, QMPoly, ZMPoly};
-use crate::poly::zpoly::{reduce_mod, rem_mod_in_place};
+use crate::poly::zpoly::rem_mod_in_place;
 use crate::poly::{Ring, UPoly, ZPoly};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -23,6 +22,7 @@ use num_traits::{One, Signed, Zero};
 /// The Sylvester matrix of `f` (degree m) and `g` (degree n): `n` shifted
 /// rows of the coefficients of `f` followed by `m` rows of `g`, highest
 /// powers first.  Its determinant is `Res(f, g)`.
+#[cfg(test)]
 pub fn sylvester_matrix<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> Vec<Vec<R>> {
     let m = f.degree().unwrap_or(0);
     let n = g.degree().unwrap_or(0);
@@ -42,13 +42,7 @@ pub fn sylvester_matrix<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> Vec<Vec<R>> {
 
 /// Determinant by Bareiss' fraction-free elimination (exact divisions by the
 /// previous pivot only), with row pivoting.  `O(n³)` ring operations.
-///
-/// ```
-/// use quadsect::elim::bareiss_determinant;
-/// use num_bigint::BigInt;
-/// let m = vec![vec![BigInt::from(2), BigInt::from(1)], vec![BigInt::from(7), BigInt::from(4)]];
-/// assert_eq!(bareiss_determinant(m), BigInt::from(1));
-/// ```
+#[cfg(test)]
 pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
     let n = m.len();
     if n == 0 {
@@ -83,6 +77,7 @@ pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
 
 /// `Res(f, g)` as the Bareiss determinant of the Sylvester matrix.
 /// The resultant with a zero polynomial is 0.
+#[cfg(test)]
 pub fn resultant_sylvester<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
     if f.is_zero() || g.is_zero() {
         return R::rzero();
@@ -92,16 +87,6 @@ pub fn resultant_sylvester<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
 
 /// `Res(f, g)` by the subresultant PRS (Cohen, Algorithm 3.3.7, without the
 /// content step so that it runs over any ring with exact division).
-///
-/// ```
-/// use quadsect::elim::resultant_subresultant;
-/// use quadsect::poly::ZPoly;
-/// use num_bigint::BigInt;
-/// // Res(x^2 - 1, x - 2) = f(2) = 3
-/// let f = ZPoly::from_i64s(&[-1, 0, 1]);
-/// let g = ZPoly::from_i64s(&[-2, 1]);
-/// assert_eq!(resultant_subresultant(&f, &g), BigInt::from(3));
-/// ```
 pub fn resultant_subresultant<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
     if f.is_zero() || g.is_zero() {
         return R::rzero();
@@ -220,6 +205,7 @@ pub fn resultant_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, m: &Modulus) -> u64 {
 
 /// The resultant of two univariate integer polynomials, by the fastest
 /// exact route (multi-modular).
+#[cfg(test)]
 pub fn resultant_z(f: &ZPoly, g: &ZPoly) -> BigInt {
     resultant_modular(f, g)
 }
@@ -231,15 +217,6 @@ pub fn resultant_z(f: &ZPoly, g: &ZPoly) -> BigInt {
 /// G)`); univariate inputs use the multi-modular algorithm, bivariate ones
 /// evaluation/interpolation modulo primes, and others the subresultant PRS
 /// over Z[other variables].
-///
-/// ```
-/// use quadsect::elim::resultant_mpoly;
-/// use quadsect::poly::parse_poly;
-/// use quadsect::poly::mpoly::X;
-/// let f = parse_poly("x^2 + y^2 - 1").unwrap();
-/// let g = parse_poly("x - y").unwrap();
-/// assert_eq!(resultant_mpoly(&f, &g, X).to_string_canonical(), "2*y^2 - 1");
-/// ```
 pub fn resultant_mpoly(f: &QMPoly, g: &QMPoly, v: usize) -> QMPoly {
     if f.is_zero() || g.is_zero() {
         return MPoly::zero();
@@ -413,20 +390,6 @@ fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> 
     c
 }
 
-/// Univariate resultant of rational polynomials given as multivariate
-/// constants (convenience for the CLI): returns the exact rational value.
-pub fn resultant_q_univariate(f: &UPoly<Q>, g: &UPoly<Q>) -> Q {
-    let v = 0;
-    let fm = MPoly::from_univariate(f, v);
-    let gm = MPoly::from_univariate(g, v);
-    resultant_mpoly(&fm, &gm, v).constant_term()
-}
-
-/// Reduction helper re-exported for the modular algorithms of other layers.
-pub fn reduce_zpoly_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
-    reduce_mod(p, m)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -463,5 +426,45 @@ mod tests {
         let c = resultant_sylvester(&fz.to_upoly(X), &gz.to_upoly(X));
         assert_eq!(a, b);
         assert_eq!(a, c);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_bareiss_determinant() {
+        use crate::elim::bareiss_determinant;
+        use num_bigint::BigInt;
+        let m = vec![
+            vec![BigInt::from(2), BigInt::from(1)],
+            vec![BigInt::from(7), BigInt::from(4)],
+        ];
+        assert_eq!(bareiss_determinant(m), BigInt::from(1));
+    }
+
+    #[test]
+    fn doc_resultant_subresultant() {
+        use crate::elim::resultant_subresultant;
+        use crate::poly::ZPoly;
+        use num_bigint::BigInt;
+        // Res(x^2 - 1, x - 2) = f(2) = 3
+        let f = ZPoly::from_i64s(&[-1, 0, 1]);
+        let g = ZPoly::from_i64s(&[-2, 1]);
+        assert_eq!(resultant_subresultant(&f, &g), BigInt::from(3));
+    }
+
+    #[test]
+    fn doc_resultant_mpoly() {
+        use crate::elim::resultant_mpoly;
+        use crate::poly::mpoly::X;
+        use crate::poly::parse_poly;
+        let f = parse_poly("x^2 + y^2 - 1").unwrap();
+        let g = parse_poly("x - y").unwrap();
+        assert_eq!(
+            resultant_mpoly(&f, &g, X).to_string_canonical(),
+            "2*y^2 - 1"
+        );
     }
 }

@@ -3,7 +3,6 @@
 
 use crate::number::Q;
 use num_bigint::BigInt;
-use num_traits::Zero;
 
 /// A 4×4 integer matrix `[[A, b], [bᵀ, c]]`.
 pub type Mat4 = [[BigInt; 4]; 4];
@@ -26,22 +25,4 @@ pub fn det3(a: &[[Q; 3]; 3]) -> Q {
     &a[0][0] * (&a[1][1] * &a[2][2] - &a[1][2] * &a[2][1])
         - &a[0][1] * (&a[1][0] * &a[2][2] - &a[1][2] * &a[2][0])
         + &a[0][2] * (&a[1][0] * &a[2][1] - &a[1][1] * &a[2][0])
-}
-
-/// Inverse of an invertible 3×3 rational matrix.
-pub fn inv3(a: &[[Q; 3]; 3]) -> Option<[[Q; 3]; 3]> {
-    let d = det3(a);
-    if d.is_zero() {
-        return None;
-    }
-    let cof = |i: usize, j: usize| -> Q {
-        let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
-        let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
-        let m = &a[r[0]][c[0]] * &a[r[1]][c[1]] - &a[r[0]][c[1]] * &a[r[1]][c[0]];
-        if (i + j).is_multiple_of(2) { m } else { -m }
-    };
-    // inverse = adj / det, adj[i][j] = cof(j, i)
-    Some(std::array::from_fn(|i| {
-        std::array::from_fn(|j| cof(j, i) / &d)
-    }))
 }

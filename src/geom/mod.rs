@@ -10,6 +10,8 @@ pub mod quadric;
 pub mod vec3;
 
 pub use eval::{eval_qsqrt, gradient};
-pub use matrix::{Mat4, adj3_int, det3, inv3};
-pub use motion::{cayley_rotation, is_rotation, rotate};
+pub use matrix::{Mat4, adj3_int, det3};
+#[cfg(any(test, feature = "cli"))]
+pub use motion::rotate;
+pub use motion::{cayley_rotation, is_rotation};
 pub use quadric::{QuadricForm, common_denominator};

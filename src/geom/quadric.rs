@@ -3,13 +3,12 @@
 //! denominators once.  Shared by the tangent point method (the ellipsoid,
 //! quadric S) and the natural quadrics (their matrices and pencils).
 
-use super::matrix::{Mat4, det3};
+use super::matrix::Mat4;
 use crate::number::Q;
 use crate::poly::QMPoly;
-use crate::poly::mpoly::{MPoly, NVARS};
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 /// A polynomial of degree ≤ 2 in x, y, z written as
 /// `q(p) = pᵀ A p + 2 bᵀ p + c` with `A` symmetric.
@@ -72,30 +71,6 @@ impl QuadricForm {
         Some(QuadricForm { a, b, c })
     }
 
-    /// Back to a polynomial.
-    pub fn to_poly(&self) -> QMPoly {
-        let mut terms = Vec::new();
-        let two = Q::from_integer(2.into());
-        for i in 0..3 {
-            for j in i..3 {
-                let mut e = [0u32; NVARS];
-                e[i] += 1;
-                e[j] += 1;
-                let k = if i == j {
-                    self.a[i][i].clone()
-                } else {
-                    &self.a[i][j] * &two
-                };
-                terms.push((e, k));
-            }
-            let mut e = [0u32; NVARS];
-            e[i] = 1;
-            terms.push((e, &self.b[i] * &two));
-        }
-        terms.push(([0; NVARS], self.c.clone()));
-        MPoly::from_terms(terms)
-    }
-
     /// Exact value at a rational point.
     pub fn eval(&self, p: &[Q; 3]) -> Q {
         let mut s = self.c.clone();
@@ -119,14 +94,6 @@ impl QuadricForm {
         })
     }
 
-    /// Leading principal minors `(a00, a00 a11 - a01², det A)`.
-    pub fn principal_minors(&self) -> (Q, Q, Q) {
-        let a = &self.a;
-        let m1 = a[0][0].clone();
-        let m2 = &a[0][0] * &a[1][1] - &a[0][1] * &a[1][0];
-        (m1, m2, det3(a))
-    }
-
     /// The negated form.
     pub fn neg(&self) -> QuadricForm {
         QuadricForm {
@@ -134,12 +101,6 @@ impl QuadricForm {
             b: std::array::from_fn(|i| -&self.b[i]),
             c: -&self.c,
         }
-    }
-
-    /// The quadratic part is positive definite.
-    pub fn is_positive_definite(&self) -> bool {
-        let (m1, m2, m3) = self.principal_minors();
-        m1.is_positive() && m2.is_positive() && m3.is_positive()
     }
 }
 

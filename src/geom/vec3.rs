@@ -3,8 +3,67 @@
 //! and checked machine-word versions for the i128 fast paths.
 
 use crate::number::{Q, QSqrt};
+use crate::poly::QMPoly;
 use num_traits::Zero;
-use std::ops::{Add, Mul, Sub};
+
+/// The ring operations the generic products need: `self · r` for `r` in
+/// the ring `R` (the same ring or a subring), and `±` within the ring.
+pub trait Scalar<R = Self>: Sized {
+    /// `self · r`.
+    fn times(&self, r: &R) -> Self;
+    /// `self + o`.
+    fn plus(&self, o: &Self) -> Self;
+    /// `self − o`.
+    fn minus(&self, o: &Self) -> Self;
+}
+
+impl Scalar for Q {
+    fn times(&self, r: &Q) -> Q {
+        self * r
+    }
+    fn plus(&self, o: &Q) -> Q {
+        self + o
+    }
+    fn minus(&self, o: &Q) -> Q {
+        self - o
+    }
+}
+
+impl Scalar for QMPoly {
+    fn times(&self, r: &QMPoly) -> QMPoly {
+        self * r
+    }
+    fn plus(&self, o: &QMPoly) -> QMPoly {
+        self + o
+    }
+    fn minus(&self, o: &QMPoly) -> QMPoly {
+        self - o
+    }
+}
+
+impl Scalar for QSqrt {
+    fn times(&self, r: &QSqrt) -> QSqrt {
+        self.mul(r)
+    }
+    fn plus(&self, o: &QSqrt) -> QSqrt {
+        self.add(o)
+    }
+    fn minus(&self, o: &QSqrt) -> QSqrt {
+        self.sub(o)
+    }
+}
+
+impl Scalar<Q> for QSqrt {
+    fn times(&self, r: &Q) -> QSqrt {
+        self.scale(r)
+    }
+    fn plus(&self, o: &QSqrt) -> QSqrt {
+        self.add(o)
+    }
+    fn minus(&self, o: &QSqrt) -> QSqrt {
+        self.sub(o)
+    }
+}
 
 /// A rational 3-vector.
 pub type V3 = [Q; 3];
@@ -28,22 +87,18 @@ pub fn scale(u: &V3, k: &Q) -> V3 {
 
 /// `u · v` over any ring (the second factor may be of a subring, e.g. a
 /// Q(√d) vector dotted with a rational one).
-pub fn dot<T, S>(u: &[T; 3], v: &[S; 3]) -> T
-where
-    for<'a> &'a T: Mul<&'a S, Output = T> + Add<&'a T, Output = T>,
-{
-    &(&(&u[0] * &v[0]) + &(&u[1] * &v[1])) + &(&u[2] * &v[2])
+pub fn dot<T: Scalar<S>, S>(u: &[T; 3], v: &[S; 3]) -> T {
+    u[0].times(&v[0])
+        .plus(&u[1].times(&v[1]))
+        .plus(&u[2].times(&v[2]))
 }
 
 /// `u × v` over any ring (the second factor may be of a subring).
-pub fn cross<T, S>(u: &[T; 3], v: &[S; 3]) -> [T; 3]
-where
-    for<'a> &'a T: Mul<&'a S, Output = T> + Sub<&'a T, Output = T>,
-{
+pub fn cross<T: Scalar<S>, S>(u: &[T; 3], v: &[S; 3]) -> [T; 3] {
     [
-        &(&u[1] * &v[2]) - &(&u[2] * &v[1]),
-        &(&u[2] * &v[0]) - &(&u[0] * &v[2]),
-        &(&u[0] * &v[1]) - &(&u[1] * &v[0]),
+        u[1].times(&v[2]).minus(&u[2].times(&v[1])),
+        u[2].times(&v[0]).minus(&u[0].times(&v[2])),
+        u[0].times(&v[1]).minus(&u[1].times(&v[0])),
     ]
 }
 
@@ -65,11 +120,6 @@ pub fn parallel(u: &V3, v: &V3) -> bool {
 /// A rational vector as a Q(√d) vector.
 pub fn lift(u: &V3) -> SV3 {
     std::array::from_fn(|i| QSqrt::rational(u[i].clone()))
-}
-
-/// `u + k v` with `k ∈ Q(√d)`.
-pub fn add_scaled(u: &SV3, v: &V3, k: &QSqrt) -> SV3 {
-    std::array::from_fn(|i| u[i].add(&k.scale(&v[i])))
 }
 
 /// A non-zero rational vector orthogonal to `a` (not normalised).

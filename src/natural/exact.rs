@@ -16,8 +16,12 @@ use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
-/// An exact real number of the output.
+/// An exact real number of the output: an element `a + b√d` of a
+/// quadratic field (rationals included), or a real algebraic number of
+/// higher degree.  `Display` prints it exactly (`1/2 + 3/4·√(5)`) or, for
+/// higher degree, as its defining polynomial and interval.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Exact {
     /// In Q(√d) (rationals included).
     Quad(QSqrt),
@@ -48,10 +52,10 @@ impl Exact {
     }
 
     /// Exact sign.
-    pub fn sign(&self) -> i32 {
+    pub fn signum(&self) -> i32 {
         match self {
-            Exact::Quad(x) => x.sign(),
-            Exact::Alg(a) => a.sign(),
+            Exact::Quad(x) => x.signum(),
+            Exact::Alg(a) => a.signum(),
         }
     }
 
@@ -79,7 +83,7 @@ impl Exact {
     pub fn to_alg(&self) -> RealAlg {
         match self {
             Exact::Alg(a) => a.clone(),
-            Exact::Quad(x) if x.is_rational() => RealAlg::Rational(x.a.clone()),
+            Exact::Quad(x) if x.is_rational() => RealAlg::rational(x.a.clone()),
             Exact::Quad(x) => {
                 // root of (u − a)² − b² d
                 let p = QPoly::new(vec![
@@ -101,6 +105,22 @@ impl Exact {
 
 /// A point with exact coordinates.
 pub type EPoint = [Exact; 3];
+
+impl std::fmt::Display for Exact {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Exact::Quad(x) => write!(f, "{}", x.normalized()),
+            Exact::Alg(a) => write!(f, "{a}"),
+        }
+    }
+}
+
+impl PartialEq for Exact {
+    /// Exact equality.
+    fn eq(&self, other: &Exact) -> bool {
+        self.equals(other)
+    }
+}
 
 /// Lifts a Q(√d) vector.
 pub fn epoint(v: &[QSqrt; 3]) -> EPoint {

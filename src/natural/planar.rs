@@ -265,7 +265,7 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
         });
         return out;
     }
-    if a.sign() != 0 {
+    if a.signum() != 0 {
         let sigma0 = b
             .neg()
             .div(&a.scale(&two))
@@ -276,8 +276,8 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
                 .unwrap_or_else(|| qs(&Q::zero())),
         );
         let center = at(&sigma0);
-        if a.sign() < 0 {
-            match k.sign() {
+        if a.signum() < 0 {
+            match k.signum() {
                 1 => {
                     // ellipse: along L  k·λ/(−A), along the normal  k
                     let along = k.mul(&lam).div(&a.neg()).unwrap_or_else(|| qs(&Q::zero()));
@@ -303,9 +303,9 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
                 }),
                 _ => {}
             }
-        } else if k.sign() != 0 {
+        } else if k.signum() != 0 {
             let along = k.mul(&lam).div(&a).unwrap_or_else(|| qs(&Q::zero())).neg();
-            let (axes2, dirs) = if k.sign() > 0 {
+            let (axes2, dirs) = if k.signum() > 0 {
                 (
                     vec![Exact::Quad(k.clone()), Exact::Quad(along.neg())],
                     vec![rat_vec(&n), epoint(&w3)],
@@ -337,14 +337,14 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
                 });
             }
         }
-    } else if b.sign() != 0 {
+    } else if b.signum() != 0 {
         // parabola z² = Bσ + C: vertex at σ = −C/B, focal length² B²/(16 λ)
         let sv = c.neg().div(&b).unwrap_or_else(|| qs(&Q::zero()));
         let f2 = b
             .mul(&b)
             .div(&lam.scale(&qi(16)))
             .unwrap_or_else(|| qs(&Q::zero()));
-        let dir: [QSqrt; 3] = if b.sign() > 0 {
+        let dir: [QSqrt; 3] = if b.signum() > 0 {
             w3.clone()
         } else {
             std::array::from_fn(|i| w3[i].neg())
@@ -361,7 +361,7 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
         });
     } else {
         // z² = C: two parallel lines, one double line, or nothing
-        match c.sign() {
+        match c.signum() {
             1 => {
                 let mu2 = c.scale(&(Q::one() / &n2));
                 for s in [1, -1] {
@@ -563,9 +563,9 @@ mod tests {
                 } => {
                     assert_eq!(*kind, ConicKind::Ellipse);
                     // planes x = ±y: normal (±1, 1, 0) up to scale, through 0
-                    assert!(plane.offset.sign() == 0);
+                    assert!(plane.offset.signum() == 0);
                     let n = &plane.normal;
-                    assert_eq!(n[2].sign(), 0);
+                    assert_eq!(n[2].signum(), 0);
                     assert!(
                         n[0].equals(&n[1])
                             || n[0].equals(&Exact::Quad(match &n[1] {

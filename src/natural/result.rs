@@ -7,7 +7,8 @@ use super::types::Natural;
 use crate::number::Q;
 
 /// The type of a conic.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum ConicKind {
     /// A circle.
     Circle,
@@ -33,6 +34,7 @@ impl ConicKind {
 
 /// A plane `normal · P = offset`.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Plane {
     /// Normal vector.
     pub normal: EPoint,
@@ -41,7 +43,8 @@ pub struct Plane {
 }
 
 /// Kind of an isolated point.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum PointKind {
     /// The surfaces touch there (an isolated tangency point).
     Tangency,
@@ -62,8 +65,10 @@ impl PointKind {
     }
 }
 
-/// A real component of the intersection.
+/// A real component of the intersection, with exact data (coordinates in
+/// Q(√d) or real algebraic numbers, see [`Exact`]).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Component {
     /// A conic.
     Conic {
@@ -109,8 +114,12 @@ pub enum Component {
     },
 }
 
-/// The class of the intersection (SPEC §4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The class of the intersection, decided in this order: `same-surface`
+/// (proportional equations); `curve` (a one-dimensional real part not made
+/// of lines and conics); `conics`; `conic-and-line`; `lines`; `points`
+/// (isolated real points only); `empty`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Class {
     /// Proportional equations.
     SameSurface,
@@ -128,8 +137,22 @@ pub enum Class {
     Curve,
 }
 
+impl std::fmt::Display for Class {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl std::fmt::Display for NaturalReport {
+    /// The human summary (as `quadsect natural` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::report::natural_human(self))
+    }
+}
+
 impl Class {
-    /// SPEC spelling.
+    /// `same-surface`, `conics`, `conic-and-line`, `lines`, `points`,
+    /// `empty` or `curve`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Class::SameSurface => "same-surface",
@@ -145,6 +168,7 @@ impl Class {
 
 /// The decider values of part 1 (when the axes are coplanar and distinct).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct PlanarDeciders {
     /// Theorem 8.1 / 8.2.
     pub thm8: Option<bool>,
@@ -170,32 +194,78 @@ pub struct PlanarDeciders {
     pub parallelogram: Option<Vec<Exact>>,
 }
 
-/// The full answer of `quadsect natural`.
+/// The answer of the classification of two natural quadrics: the class,
+/// the counts of real affine conics, lines and points, the components with
+/// exact data, the relation of the axes, Theorem 8.1/8.2's value and the
+/// part-1 deciders.  `Display` prints the human summary; with the feature
+/// `serde` it serializes to the JSON of `quadsect natural --json`.
 #[derive(Clone, Debug)]
 pub struct NaturalReport {
-    /// First quadric.
-    pub a: Natural,
-    /// Second quadric.
-    pub b: Natural,
-    /// The class.
-    pub class: Class,
-    /// Relation of the axes (`None` when a sphere is involved).
-    pub axes: Option<AxesRelation>,
-    /// Theorem 8.1/8.2 value where it applies.
-    pub thm8: Option<bool>,
-    /// Real components.
-    pub components: Vec<Component>,
-    /// Part-1 deciders (coplanar distinct axes).
-    pub deciders: Option<PlanarDeciders>,
-    /// The paper's §7 decider (skew axes).
-    pub section7: Option<super::tangency::Section7>,
-    /// How the class was decided.
-    pub method: &'static str,
-    /// Remarks.
-    pub notes: Vec<String>,
+    pub(crate) a: Natural,
+    pub(crate) b: Natural,
+    pub(crate) class: Class,
+    pub(crate) axes: Option<AxesRelation>,
+    pub(crate) thm8: Option<bool>,
+    pub(crate) components: Vec<Component>,
+    pub(crate) deciders: Option<PlanarDeciders>,
+    pub(crate) section7: Option<super::tangency::Section7>,
+    pub(crate) method: &'static str,
+    pub(crate) notes: Vec<String>,
 }
 
 impl NaturalReport {
+    /// The first quadric.
+    pub fn a(&self) -> &Natural {
+        &self.a
+    }
+
+    /// The second quadric.
+    pub fn b(&self) -> &Natural {
+        &self.b
+    }
+
+    /// The class.
+    pub fn class(&self) -> Class {
+        self.class
+    }
+
+    /// How the axes lie (`None` when a sphere is involved).
+    pub fn axes(&self) -> Option<&AxesRelation> {
+        self.axes.as_ref()
+    }
+
+    /// Theorem 8.1/8.2's closed-form value where it applies (coplanar or
+    /// parallel distinct axes), else `None`.  Not the class: see the crate
+    /// docs.
+    pub fn thm8(&self) -> Option<bool> {
+        self.thm8
+    }
+
+    /// The real affine components.
+    pub fn components(&self) -> &[Component] {
+        &self.components
+    }
+
+    /// The part-1 deciders (coplanar distinct axes).
+    pub fn deciders(&self) -> Option<&PlanarDeciders> {
+        self.deciders.as_ref()
+    }
+
+    /// The paper's §7 tangency decider (skew axes).
+    pub fn section7(&self) -> Option<&super::tangency::Section7> {
+        self.section7.as_ref()
+    }
+
+    /// How the class was decided, in words.
+    pub fn method_description(&self) -> &str {
+        self.method
+    }
+
+    /// Remarks.
+    pub fn notes(&self) -> &[String] {
+        &self.notes
+    }
+
     /// Number of real affine conics.
     pub fn conics(&self) -> usize {
         self.components
@@ -234,7 +304,7 @@ impl NaturalReport {
 }
 
 /// The class implied by a list of components (SPEC §4 order).
-pub fn class_of(components: &[Component]) -> Class {
+pub(crate) fn class_of(components: &[Component]) -> Class {
     let has = |f: fn(&Component) -> bool| components.iter().any(f);
     if has(|c| matches!(c, Component::Curve { .. })) {
         Class::Curve

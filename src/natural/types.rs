@@ -4,7 +4,9 @@
 //! SPEC §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
 
 use crate::error::{Error, ErrorKind};
-use crate::geom::vec3::{V3, add, cross, dot, norm2, scale, sub};
+#[cfg(test)]
+use crate::geom::vec3::scale;
+use crate::geom::vec3::{V3, add, cross, dot, norm2, sub};
 use crate::number::{Q, fmt_q, parse_rational};
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, X, Y, Z};
@@ -12,40 +14,56 @@ use num_traits::{One, Signed, Zero};
 #[cfg(feature = "serde")]
 use serde_json::Value;
 
-/// A sphere `|P − O|² = r2`.
-#[derive(Clone, Debug, PartialEq)]
+/// A sphere `|P − O|² = r2` (equation `|P − O|² − r2`, negative inside).
+/// Built only by [`Sphere::new`], which checks `r2 > 0`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Sphere {
     /// Centre O.
-    pub center: V3,
+    pub(crate) center: V3,
     /// Squared radius, `> 0`.
-    pub r2: Q,
+    pub(crate) r2: Q,
 }
 
-/// A circular cylinder `|(P − Q) × a|² = r2·|a|²`.
-#[derive(Clone, Debug, PartialEq)]
+/// A circular cylinder `|(P − Q) × a|² = r2·|a|²` (negative inside).
+/// Built only by [`Cylinder::new`], which checks a non-zero axis and
+/// `r2 > 0`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Cylinder {
     /// A point Q of the axis.
-    pub point: V3,
+    pub(crate) point: V3,
     /// Axis direction (non-zero, any length).
-    pub axis: V3,
+    pub(crate) axis: V3,
     /// Squared radius, `> 0`.
-    pub r2: Q,
+    pub(crate) r2: Q,
 }
 
 /// A right circular double cone `|a|²|P − V|² = (1 + t2)((P − V)·a)²`,
-/// half-angle α with `tan²α = t2 > 0`.
-#[derive(Clone, Debug, PartialEq)]
+/// half-angle α with `tan²α = t2 > 0`.  Built only by [`Cone::new`], which
+/// checks a non-zero axis and `t2 > 0`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Cone {
     /// Vertex V.
-    pub vertex: V3,
+    pub(crate) vertex: V3,
     /// Axis direction (non-zero).
-    pub axis: V3,
+    pub(crate) axis: V3,
     /// `tan²α > 0`.
-    pub t2: Q,
+    pub(crate) t2: Q,
 }
 
-/// Any natural quadric.
-#[derive(Clone, Debug, PartialEq)]
+/// Any natural quadric.  Its parts can only be built by their checked
+/// constructors, so a `Natural` is always a valid surface.
+///
+/// ```
+/// use quadsect::{Natural, Cylinder, Rational, ErrorKind};
+/// let r = |n: i64| Rational::from_integer(n.into());
+/// let c = Cylinder::new([r(0), r(0), r(0)], [r(1), r(0), r(0)], r(1)).unwrap();
+/// let q = Natural::Cylinder(c);
+/// assert_eq!(q.to_string(), "cylinder point=0,0,0 axis=1,0,0 radius2=1");
+/// assert_eq!("cylinder point=0,0,0 axis=1,0,0 radius2=1".parse::<Natural>().unwrap(), q);
+/// let bad = Cylinder::new([r(0), r(0), r(0)], [r(0), r(0), r(0)], r(-1)).unwrap_err();
+/// assert_eq!(bad.kind(), ErrorKind::BadQuadric);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Natural {
     /// A sphere.
     Sphere(Sphere),
@@ -83,6 +101,16 @@ impl Sphere {
         positive("radius2", &r2)?;
         Ok(Sphere { center, r2 })
     }
+
+    /// The centre.
+    pub fn center(&self) -> &V3 {
+        &self.center
+    }
+
+    /// The squared radius.
+    pub fn radius2(&self) -> &Q {
+        &self.r2
+    }
 }
 
 impl Cylinder {
@@ -92,6 +120,21 @@ impl Cylinder {
         positive("radius2", &r2)?;
         Ok(Cylinder { point, axis, r2 })
     }
+
+    /// The point of the axis it was given with.
+    pub fn point(&self) -> &V3 {
+        &self.point
+    }
+
+    /// The axis direction (as given).
+    pub fn axis(&self) -> &V3 {
+        &self.axis
+    }
+
+    /// The squared radius.
+    pub fn radius2(&self) -> &Q {
+        &self.r2
+    }
 }
 
 impl Cone {
@@ -100,6 +143,21 @@ impl Cone {
         nonzero_axis(&axis)?;
         positive("tan2", &t2)?;
         Ok(Cone { vertex, axis, t2 })
+    }
+
+    /// The vertex.
+    pub fn vertex(&self) -> &V3 {
+        &self.vertex
+    }
+
+    /// The axis direction (as given).
+    pub fn axis(&self) -> &V3 {
+        &self.axis
+    }
+
+    /// `tan²α` of the half-angle α.
+    pub fn tan2(&self) -> &Q {
+        &self.t2
     }
 
     /// `sin²α = t2/(1 + t2)`.
@@ -219,8 +277,20 @@ impl Natural {
         m
     }
 
-    /// Applies the rigid motion `P ↦ R P + t` (R orthogonal).
-    pub fn moved(&self, r: &[[Q; 3]; 3], t: &V3) -> Natural {
+    /// Applies the rigid motion `P ↦ R P + t`, checked: `R` must be an exact
+    /// rotation (`R Rᵀ = I`, `det R = 1`; e.g. a Cayley rotation).
+    pub fn moved_by(&self, r: &[[Q; 3]; 3], t: &V3) -> Result<Natural, Error> {
+        if !crate::geom::is_rotation(r) {
+            return Err(Error::new(
+                ErrorKind::Input,
+                "a rigid motion needs an exact rotation matrix (R Rᵀ = I, det R = 1)",
+            ));
+        }
+        Ok(self.moved(r, t))
+    }
+
+    /// Applies the rigid motion `P ↦ R P + t` (R orthogonal, unchecked).
+    pub(crate) fn moved(&self, r: &[[Q; 3]; 3], t: &V3) -> Natural {
         let rot = |v: &V3| -> V3 {
             std::array::from_fn(|i| {
                 (0..3)
@@ -247,8 +317,9 @@ impl Natural {
         }
     }
 
-    /// Uniform scaling `P ↦ k P` (k > 0): radii² scale by k², angles stay.
-    pub fn scaled(&self, k: &Q) -> Natural {
+    /// Uniform scaling `P ↦ k P` (k ≠ 0): radii² scale by k², angles stay.
+    #[cfg(test)]
+    pub(crate) fn scaled(&self, k: &Q) -> Natural {
         let sc = |v: &V3| scale(v, k);
         match self {
             Natural::Sphere(s) => Natural::Sphere(Sphere {
@@ -436,13 +507,6 @@ pub fn from_json(v: &Value) -> Result<Natural, Error> {
 
 /// Parses the short human syntax, e.g. `cone vertex=0,0,0 axis=1,0,0
 /// tan2=1/3`, or a JSON object (when the text starts with `{`).
-///
-/// ```
-/// use quadsect::natural::parse_natural;
-/// let c = parse_natural("cone vertex=0,0,0 axis=1,0,0 cos2=3/4").unwrap();
-/// assert_eq!(c.to_short(), "cone vertex=0,0,0 axis=1,0,0 tan2=1/3");
-/// assert!(parse_natural("cylinder point=0,0,0 axis=0,0,0 radius2=1").is_err());
-/// ```
 pub fn parse_natural(text: &str) -> Result<Natural, Error> {
     let t = text.trim();
     if t.starts_with('{') {
@@ -524,5 +588,34 @@ mod tests {
         pt[1] = qi(2);
         pt[2] = qi(4); // V + (1, 0, 1): angle 45°
         assert_eq!(e.eval(&pt), Q::zero());
+    }
+}
+
+impl std::str::FromStr for Natural {
+    type Err = Error;
+    /// The short syntax (`cone vertex=0,0,0 axis=1,0,0 tan2=1/3`) or, with
+    /// the feature `serde`, the JSON object form.
+    fn from_str(s: &str) -> Result<Natural, Error> {
+        parse_natural(s)
+    }
+}
+
+impl std::fmt::Display for Natural {
+    /// The short syntax (parses back to the same quadric).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.to_short())
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_natural() {
+        use crate::natural::parse_natural;
+        let c = parse_natural("cone vertex=0,0,0 axis=1,0,0 cos2=3/4").unwrap();
+        assert_eq!(c.to_short(), "cone vertex=0,0,0 axis=1,0,0 tan2=1/3");
+        assert!(parse_natural("cylinder point=0,0,0 axis=0,0,0 radius2=1").is_err());
     }
 }

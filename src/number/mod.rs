@@ -13,11 +13,13 @@ pub mod fixed;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
+mod sign;
 
 pub use parse::{NumberError, parse_rational, scan_number};
 pub use qsqrt::QSqrt;
+pub use sign::Sign;
 
-use num_bigint::{BigInt, Sign};
+use num_bigint::{BigInt, Sign as BigSign};
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -28,11 +30,6 @@ pub type Q = BigRational;
 pub type Z = BigInt;
 
 /// The rational `n/d` from small integers.
-///
-/// ```
-/// let q = quadsect::number::q(6, 4);
-/// assert_eq!(quadsect::number::fmt_q(&q), "3/2");
-/// ```
 pub fn q(n: i64, d: i64) -> Q {
     Q::new(BigInt::from(n), BigInt::from(d))
 }
@@ -59,9 +56,9 @@ pub fn sign_q(x: &Q) -> i32 {
 /// The exact sign of an integer: -1, 0 or 1.
 pub fn sign_z(x: &Z) -> i32 {
     match x.sign() {
-        Sign::Minus => -1,
-        Sign::NoSign => 0,
-        Sign::Plus => 1,
+        BigSign::Minus => -1,
+        BigSign::NoSign => 0,
+        BigSign::Plus => 1,
     }
 }
 
@@ -99,12 +96,6 @@ pub fn floor_log2_q(x: &Q) -> i64 {
 /// to nearest, computed exactly with integers (no floating point).
 ///
 /// Plain notation is used for moderate exponents, scientific otherwise.
-///
-/// ```
-/// use quadsect::number::{approx_decimal, q};
-/// assert_eq!(approx_decimal(&q(7, 9), 5), "0.77778");
-/// assert_eq!(approx_decimal(&q(-1233, 112), 6), "-11.0089");
-/// ```
 pub fn approx_decimal(x: &Q, digits: usize) -> String {
     let digits = digits.max(1);
     if x.is_zero() {
@@ -422,5 +413,23 @@ mod tests {
         assert_eq!(exact_sqrt_q(&q(9, 4)), Some(q(3, 2)));
         assert_eq!(exact_sqrt_q(&q(2, 1)), None);
         assert_eq!(exact_sqrt_q(&q(-4, 1)), None);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_q() {
+        let q = crate::number::q(6, 4);
+        assert_eq!(crate::number::fmt_q(&q), "3/2");
+    }
+
+    #[test]
+    fn doc_approx_decimal() {
+        use crate::number::{approx_decimal, q};
+        assert_eq!(approx_decimal(&q(7, 9), 5), "0.77778");
+        assert_eq!(approx_decimal(&q(-1233, 112), 6), "-11.0089");
     }
 }

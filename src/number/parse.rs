@@ -149,15 +149,6 @@ pub fn scan_number(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
 
 /// Parses a complete exact number: an optional sign, a literal (integer,
 /// decimal or scientific) and optionally `/` and a second literal.
-///
-/// ```
-/// use quadsect::number::{parse_rational, q};
-/// assert_eq!(parse_rational("-7/9").unwrap(), q(-7, 9));
-/// assert_eq!(parse_rational("1.77777777777").unwrap(), q(177777777777, 100000000000));
-/// assert_eq!(parse_rational("2.5E3").unwrap(), q(2500, 1));
-/// assert_eq!(parse_rational("1e-2").unwrap(), q(1, 100));
-/// assert!(parse_rational("1/0").is_err());
-/// ```
 pub fn parse_rational(text: &str) -> Result<Q, NumberError> {
     let s = text.as_bytes();
     let mut i = 0;
@@ -240,5 +231,23 @@ mod tests {
         }
         assert_eq!(parse_rational("1e").unwrap_err().column, 2);
         assert!(parse_rational("1e9999999").is_err());
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_rational() {
+        use crate::number::{parse_rational, q};
+        assert_eq!(parse_rational("-7/9").unwrap(), q(-7, 9));
+        assert_eq!(
+            parse_rational("1.77777777777").unwrap(),
+            q(177777777777, 100000000000)
+        );
+        assert_eq!(parse_rational("2.5E3").unwrap(), q(2500, 1));
+        assert_eq!(parse_rational("1e-2").unwrap(), q(1, 100));
+        assert!(parse_rational("1/0").is_err());
     }
 }

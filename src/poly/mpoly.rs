@@ -36,11 +36,6 @@ pub const L: usize = 4;
 /// Index of an auxiliary variable `t`.
 pub const T: usize = 5;
 
-/// Index of a variable from its name.
-pub fn var_index(name: &str) -> Option<usize> {
-    VAR_NAMES.iter().position(|&n| n == name)
-}
-
 /// A sparse multivariate polynomial.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct MPoly<C> {
@@ -456,12 +451,6 @@ impl MPoly<Q> {
     /// Canonical string: terms by decreasing total degree, then decreasing
     /// lexicographic order (x > y > z > u > l > t); coefficients as integers
     /// or `a/b`; `*` between factors.  `parse(print(p)) == p`.
-    ///
-    /// ```
-    /// use quadsect::poly::parse_poly;
-    /// let p = parse_poly("3(x-1)^2 - y/2").unwrap();
-    /// assert_eq!(p.to_string_canonical(), "3*x^2 - 6*x - 1/2*y + 3");
-    /// ```
     pub fn to_string_canonical(&self) -> String {
         fmt_terms(&self.terms, fmt_q)
     }
@@ -690,5 +679,17 @@ mod tests {
         assert_eq!(ZMPoly::from_upoly(&up, X), a);
         assert_eq!(a.derivative(X), &(&x + &x) + &(&y - &one));
         assert_eq!(a.substitute(Y, &one), &(&x + &one) * &(&x - &one));
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_to_string_canonical() {
+        use crate::poly::parse_poly;
+        let p = parse_poly("3(x-1)^2 - y/2").unwrap();
+        assert_eq!(p.to_string_canonical(), "3*x^2 - 6*x - 1/2*y + 3");
     }
 }

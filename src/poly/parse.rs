@@ -16,7 +16,7 @@
 //! error names the problem and the 1-based column.  Documented size limits
 //! keep hostile inputs from hanging: see [`Limits`].
 
-use super::mpoly::{MPoly, NVARS, QMPoly};
+use super::mpoly::{MPoly, QMPoly};
 use crate::number::{Q, scan_number};
 use num_traits::{One, Zero};
 use std::fmt;
@@ -72,14 +72,6 @@ impl fmt::Display for ParseError {
 impl std::error::Error for ParseError {}
 
 /// Parses a polynomial expression with the default [`Limits`].
-///
-/// ```
-/// use quadsect::poly::parse_poly;
-/// let p = parse_poly("2x^2 - 3(x-1) + y/4").unwrap();
-/// assert_eq!(p.to_string_canonical(), "2*x^2 - 3*x + 1/4*y + 3");
-/// let e = parse_poly("(x + 1))").unwrap_err();
-/// assert_eq!(e.to_string(), "unexpected ')' at column 8");
-/// ```
 pub fn parse_poly(text: &str) -> Result<QMPoly, ParseError> {
     parse_poly_with(text, &Limits::default())
 }
@@ -461,15 +453,6 @@ impl Parser<'_> {
     }
 }
 
-/// Variables occurring in a parsed polynomial, by name.
-pub fn var_names(p: &QMPoly) -> Vec<&'static str> {
-    p.vars()
-        .into_iter()
-        .filter(|&v| v < NVARS)
-        .map(|v| super::mpoly::VAR_NAMES[v])
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -540,5 +523,19 @@ mod tests {
         assert!(parse_poly("10^100000000").is_err());
         let deep = "(".repeat(100_000) + "x" + &")".repeat(100_000);
         assert!(parse_poly(&deep).is_err());
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_poly() {
+        use crate::poly::parse_poly;
+        let p = parse_poly("2x^2 - 3(x-1) + y/4").unwrap();
+        assert_eq!(p.to_string_canonical(), "2*x^2 - 3*x + 1/4*y + 3");
+        let e = parse_poly("(x + 1))").unwrap_err();
+        assert_eq!(e.to_string(), "unexpected ')' at column 8");
     }
 }

@@ -18,13 +18,6 @@ pub struct UPoly<R> {
 impl<R: Ring> UPoly<R> {
     /// The polynomial with the given coefficients (ascending powers); trailing
     /// zeros are removed.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// use num_bigint::BigInt;
-    /// let p = ZPoly::new(vec![BigInt::from(1), BigInt::from(0), BigInt::from(0)]);
-    /// assert_eq!(p.degree(), Some(0));
-    /// ```
     pub fn new(mut c: Vec<R>) -> Self {
         while c.last().is_some_and(|x| x.ris_zero()) {
             c.pop();
@@ -430,5 +423,18 @@ mod tests {
         let prod = &a * &b;
         assert_eq!(prod.div_exact(&b), Some(a.clone()));
         assert_eq!(a.div_exact(&b), None);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_new() {
+        use crate::poly::ZPoly;
+        use num_bigint::BigInt;
+        let p = ZPoly::new(vec![BigInt::from(1), BigInt::from(0), BigInt::from(0)]);
+        assert_eq!(p.degree(), Some(0));
     }
 }

@@ -11,7 +11,7 @@ use super::upoly::UPoly;
 use crate::number::fixed::{AtWidth, Fixed, MAX_LIMBS, at_width, push_limbs};
 use crate::number::modular::{Digits, Modulus, primes};
 use crate::number::{Q, sign_z};
-use num_bigint::{BigInt, Sign};
+use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::borrow::Cow;
@@ -36,12 +36,6 @@ impl UPoly<BigInt> {
     }
 
     /// The primitive part, normalised to a positive leading coefficient.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// let p = ZPoly::from_i64s(&[4, -6, -2]);
-    /// assert_eq!(p.primitive_part(), ZPoly::from_i64s(&[-2, 3, 1]));
-    /// ```
     pub fn primitive_part(&self) -> ZPoly {
         if self.is_zero() {
             return ZPoly::zero();
@@ -214,13 +208,6 @@ impl UPoly<BigInt> {
     /// Greatest common divisor, primitive with positive leading coefficient
     /// (`gcd(0, 0) = 0`).  A modular test first detects the frequent coprime
     /// case; otherwise the primitive PRS is used.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// let a = ZPoly::from_i64s(&[-1, 0, 1]); // x^2 - 1
-    /// let b = ZPoly::from_i64s(&[1, 2, 1]);  // (x + 1)^2
-    /// assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1, 1]));
-    /// ```
     pub fn gcd(&self, o: &ZPoly) -> ZPoly {
         if self.is_zero() {
             return o.primitive_part();
@@ -265,14 +252,6 @@ impl UPoly<BigInt> {
     /// Square-free factorisation (Yun): `pp(p) = ∏ f_i^i` with the `f_i`
     /// square-free, pairwise coprime and primitive; returns the non-constant
     /// `(f_i, i)`.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// // (x - 1)^2 (x + 2)
-    /// let p = ZPoly::from_i64s(&[2, -3, 0, 1]);
-    /// let f = p.squarefree_decomposition();
-    /// assert_eq!(f, vec![(ZPoly::from_i64s(&[2, 1]), 1), (ZPoly::from_i64s(&[-1, 1]), 2)]);
-    /// ```
     pub fn squarefree_decomposition(&self) -> Vec<(ZPoly, u32)> {
         let a = self.primitive_part();
         if a.degree().unwrap_or(0) == 0 {
@@ -325,17 +304,6 @@ impl UPoly<BigInt> {
 /// `B + nL + bits(n) + 1 <= 64·N` bits of two's complement hold them all
 /// exactly (products and sums modulo `2^(64N)` are exact when the true
 /// value fits).  `m < 0` is `|m|` with the odd coefficients negated.
-///
-/// ```
-/// use num_bigint::BigInt;
-/// use quadsect::poly::ZPoly;
-/// use quadsect::poly::zpoly::DyadicSigner;
-/// let p = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
-/// let s = DyadicSigner::new(&p);
-/// assert_eq!(s.sign_at(&BigInt::from(181), 7), -1); // 181/128 < √2
-/// assert_eq!(s.sign_at(&BigInt::from(-182), 7), 1); // -182/128 < -√2
-/// assert_eq!(s.sign_at(&BigInt::from(-4), 1), 1);
-/// ```
 pub struct DyadicSigner<'a> {
     p: Cow<'a, ZPoly>,
     /// The coefficients, `width` limbs each.
@@ -613,11 +581,6 @@ fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     }
 }
 
-/// Sign of a big integer as `Sign`.
-pub fn sign_of(x: &BigInt) -> Sign {
-    x.sign()
-}
-
 impl UPoly<Q> {
     /// Division with remainder over the field Q: `(q, r)` with
     /// `self = q·b + r`, `deg r < deg b`.  Panics if `b` is zero.
@@ -739,5 +702,52 @@ mod tests {
         let (z, k) = ZPoly::from_q(&p);
         assert_eq!(z, ZPoly::from_i64s(&[2, 0, 3]));
         assert_eq!(z.to_q().map(|c| c * &k), p);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_primitive_part() {
+        use crate::poly::ZPoly;
+        let p = ZPoly::from_i64s(&[4, -6, -2]);
+        assert_eq!(p.primitive_part(), ZPoly::from_i64s(&[-2, 3, 1]));
+    }
+
+    #[test]
+    fn doc_gcd() {
+        use crate::poly::ZPoly;
+        let a = ZPoly::from_i64s(&[-1, 0, 1]); // x^2 - 1
+        let b = ZPoly::from_i64s(&[1, 2, 1]); // (x + 1)^2
+        assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1, 1]));
+    }
+
+    #[test]
+    fn doc_squarefree_decomposition() {
+        use crate::poly::ZPoly;
+        // (x - 1)^2 (x + 2)
+        let p = ZPoly::from_i64s(&[2, -3, 0, 1]);
+        let f = p.squarefree_decomposition();
+        assert_eq!(
+            f,
+            vec![
+                (ZPoly::from_i64s(&[2, 1]), 1),
+                (ZPoly::from_i64s(&[-1, 1]), 2)
+            ]
+        );
+    }
+
+    #[test]
+    fn doc_dyadicsigner() {
+        use crate::poly::ZPoly;
+        use crate::poly::zpoly::DyadicSigner;
+        use num_bigint::BigInt;
+        let p = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
+        let s = DyadicSigner::new(&p);
+        assert_eq!(s.sign_at(&BigInt::from(181), 7), -1); // 181/128 < √2
+        assert_eq!(s.sign_at(&BigInt::from(-182), 7), 1); // -182/128 < -√2
+        assert_eq!(s.sign_at(&BigInt::from(-4), 1), 1);
     }
 }

@@ -8,7 +8,6 @@ mod text;
 
 #[cfg(feature = "serde")]
 pub use json::{
-    alg_json, alg_json_in, exact_json, natural_input_json, natural_json, qsqrt_json,
-    resultant_json, roots_json, tangent_json,
+    alg_json, natural_input_json, natural_json, resultant_json, roots_json, tangent_json,
 };
-pub use text::{natural_human, resultant_human, roots_human, table, tangent_human, upoly_string};
+pub use text::{natural_human, resultant_human, roots_human, tangent_human, upoly_string};

@@ -625,15 +625,6 @@ fn fix_endpoints_rational(p: &ZPoly, iv: &mut RootInterval) {
 
 /// Isolating intervals of all distinct real roots of `p` (any non-zero
 /// integer polynomial; its square-free part is used), sorted and disjoint.
-///
-/// ```
-/// use quadsect::roots::isolate_real_roots;
-/// use quadsect::poly::ZPoly;
-/// let p = ZPoly::from_i64s(&[0, -2, 0, 1]); // x^3 - 2x
-/// let iv = isolate_real_roots(&p);
-/// assert_eq!(iv.len(), 3);
-/// assert!(iv[1].is_exact()); // the root 0
-/// ```
 pub fn isolate_real_roots(p: &ZPoly) -> Vec<RootInterval> {
     if p.degree().unwrap_or(0) == 0 {
         return vec![];
@@ -986,5 +977,20 @@ mod tests {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_isolate_real_roots() {
+        use crate::poly::ZPoly;
+        use crate::roots::isolate_real_roots;
+        let p = ZPoly::from_i64s(&[0, -2, 0, 1]); // x^3 - 2x
+        let iv = isolate_real_roots(&p);
+        assert_eq!(iv.len(), 3);
+        assert!(iv[1].is_exact()); // the root 0
     }
 }

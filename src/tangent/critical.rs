@@ -248,7 +248,7 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
                     None
                 }
             }) {
-                Some(v) => vec![RealAlg::Rational(v)],
+                Some(v) => vec![RealAlg::rational(v)],
                 None => {
                     return Err(Error::internal(
                         "S appears constant on E but its value is not rational",

@@ -4,38 +4,109 @@
 use crate::error::{Error, ErrorKind};
 use crate::geom::{Mat4, QuadricForm, adj3_int, common_denominator};
 use crate::number::Q;
-use crate::poly::QMPoly;
+use crate::poly::mpoly::MPoly;
+use crate::poly::{Polynomial, QMPoly};
 use num_bigint::BigInt;
-use num_traits::{Signed, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// A validated ellipsoid `E(p) = pᵀ A p + 2 bᵀ p + c` with `A` positive
 /// definite and `E(centre) < 0` (the input is negated when its quadratic
-/// part is negative definite; the zero set is the same).
+/// part is negative definite; the zero set is the same).  It cannot hold a
+/// hyperboloid, an empty "imaginary ellipsoid" or a single point: every
+/// constructor checks.
+///
+/// ```
+/// use quadsect::{Ellipsoid, Polynomial, ErrorKind};
+/// let e: Ellipsoid = "x^2 + y^2 + z^2 - 25".parse().unwrap();
+/// assert!(e.center().iter().all(|c| *c == quadsect::Rational::from_integer(0.into())));
+/// let bad = "x^2 + y^2 - z^2 - 1".parse::<Ellipsoid>().unwrap_err();
+/// assert_eq!(bad.kind(), ErrorKind::NotAnEllipsoid);
+/// assert!(bad.to_string().contains("not definite"));
+/// assert!("x^2 + y^2 + z^2 + 1".parse::<Ellipsoid>().is_err()); // empty
+/// ```
 #[derive(Clone, Debug)]
 pub struct Ellipsoid {
     /// The equation, oriented so that E < 0 inside.
-    pub poly: QMPoly,
+    pub(crate) poly: QMPoly,
     /// Its matrices.
-    pub form: QuadricForm,
+    pub(crate) form: QuadricForm,
     /// Centre `-A⁻¹ b`.
-    pub center: [Q; 3],
+    pub(crate) center: [Q; 3],
     /// `E(centre) < 0`.
-    pub center_value: Q,
+    pub(crate) center_value: Q,
     /// True when the input was negated.
-    pub negated: bool,
+    pub(crate) negated: bool,
 }
 
 impl Ellipsoid {
-    /// Validates `p` as an ellipsoid, with a clear error otherwise.
+    /// Validates a polynomial as an ellipsoid (degree 2 in x, y, z, definite
+    /// quadratic part, a real ellipsoid: not empty, not a point), with a
+    /// clear error otherwise.
+    pub fn new(p: &Polynomial) -> Result<Ellipsoid, Error> {
+        Ellipsoid::from_poly(p.inner())
+    }
+
+    /// The ellipsoid with centre `center`, semi-axes `semi_axes` (> 0) along
+    /// the columns of the rotation `rotation` (an exact rational rotation,
+    /// e.g. a Cayley rotation; checked: `R Rᵀ = I`, `det R = 1`):
+    /// `Σᵢ ((Rᵀ (p − center))ᵢ / aᵢ)² − 1`.
     ///
     /// ```
-    /// use quadsect::poly::parse_poly;
-    /// use quadsect::tangent::Ellipsoid;
-    /// assert!(Ellipsoid::new(&parse_poly("x^2 + y^2 + z^2 - 25").unwrap()).is_ok());
-    /// let e = Ellipsoid::new(&parse_poly("x^2 + y^2 - z^2 - 1").unwrap()).unwrap_err();
-    /// assert!(e.to_string().contains("not definite"));
+    /// use quadsect::{Ellipsoid, Rational};
+    /// let r = |n: i64| Rational::from_integer(n.into());
+    /// let id = [[r(1), r(0), r(0)], [r(0), r(1), r(0)], [r(0), r(0), r(1)]];
+    /// let e = Ellipsoid::from_axes([r(1), r(0), r(0)], [r(2), r(3), r(4)], id).unwrap();
+    /// assert_eq!(e.polynomial().to_string(), "1/4*x^2 + 1/9*y^2 + 1/16*z^2 - 1/2*x - 3/4");
     /// ```
-    pub fn new(p: &QMPoly) -> Result<Ellipsoid, Error> {
+    pub fn from_axes(
+        center: [Q; 3],
+        semi_axes: [Q; 3],
+        rotation: [[Q; 3]; 3],
+    ) -> Result<Ellipsoid, Error> {
+        if let Some(a) = semi_axes.iter().find(|a| !a.is_positive()) {
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
+                format!("semi-axes must be > 0, got {}", crate::number::fmt_q(a)),
+            ));
+        }
+        if !crate::geom::is_rotation(&rotation) {
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
+                "the rotation must be an exact rotation matrix (R Rᵀ = I, det R = 1)",
+            ));
+        }
+        // local coordinate i: (columnᵢ of R) · (p − center)
+        let mut e = QMPoly::constant(-Q::one());
+        for i in 0..3 {
+            let mut w = QMPoly::zero();
+            for (j, c) in center.iter().enumerate() {
+                let xj = &MPoly::var(j) - &MPoly::constant(c.clone());
+                w = &w + &xj.scale(&rotation[j][i]);
+            }
+            let a2 = &semi_axes[i] * &semi_axes[i];
+            e = &e + &(&w * &w).scale(&(Q::one() / a2));
+        }
+        Ellipsoid::from_poly(&e)
+    }
+
+    /// The equation, oriented so that E < 0 inside.
+    pub fn polynomial(&self) -> Polynomial {
+        Polynomial::from_inner(self.poly.clone())
+    }
+
+    /// The centre.
+    pub fn center(&self) -> &[Q; 3] {
+        &self.center
+    }
+
+    /// True when the given polynomial was negated to orient E < 0 inside
+    /// (its quadratic part was negative definite).
+    pub fn is_negated(&self) -> bool {
+        self.negated
+    }
+
+    /// Validates an internal polynomial (see [`Ellipsoid::new`]).
+    pub(crate) fn from_poly(p: &QMPoly) -> Result<Ellipsoid, Error> {
         if p.vars().iter().any(|&v| v > 2) {
             return Err(Error::new(
                 ErrorKind::NotAnEllipsoid,
@@ -189,4 +260,19 @@ pub(crate) fn sign_at_int(m: &Mat4, n: &[BigInt; 3], d: &BigInt) -> i32 {
         acc += row * &n[i];
     }
     crate::number::sign_z(&acc)
+}
+
+impl std::str::FromStr for Ellipsoid {
+    type Err = Error;
+    /// Parses and validates (see [`Ellipsoid::new`]).
+    fn from_str(s: &str) -> Result<Ellipsoid, Error> {
+        Ellipsoid::new(&s.parse()?)
+    }
+}
+
+impl std::fmt::Display for Ellipsoid {
+    /// The equation (oriented, E < 0 inside).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.poly.to_string_canonical())
+    }
 }

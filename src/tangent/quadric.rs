@@ -492,7 +492,7 @@ mod tests {
             ),
             ("2x^2+3y^2+4z^2-25", "x+2y-z/3-1"),
         ] {
-            let e = Ellipsoid::new(&parse_poly(e).unwrap()).unwrap();
+            let e = Ellipsoid::from_poly(&parse_poly(e).unwrap()).unwrap();
             let s = QuadricForm::from_poly(&parse_poly(s).unwrap()).unwrap();
             let a = &e.form.a;
             let m: [[QPoly; 3]; 3] =
@@ -517,7 +517,7 @@ mod tests {
     use crate::poly::parse_poly;
 
     fn run(e: &str, s: &str) -> LambdaAnalysis {
-        let e = Ellipsoid::new(&parse_poly(e).unwrap()).unwrap();
+        let e = Ellipsoid::from_poly(&parse_poly(e).unwrap()).unwrap();
         let s = QuadricForm::from_poly(&parse_poly(s).unwrap()).unwrap();
         analyze(&e, &s)
     }

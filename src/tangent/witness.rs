@@ -7,7 +7,6 @@
 //! which E's gradient is largest (so the discriminant stays positive).
 
 use super::ellipsoid::Ellipsoid;
-pub use crate::geom::eval_qsqrt;
 use crate::geom::{Mat4, common_denominator};
 use crate::number::{Q, QSqrt};
 use crate::poly::QMPoly;
@@ -18,15 +17,33 @@ use num_traits::{One, Signed, Zero};
 #[derive(Clone, Debug)]
 pub struct WitnessPoint {
     /// The coordinates x, y, z.
-    pub coords: [QSqrt; 3],
+    pub(crate) coords: [QSqrt; 3],
     /// S at the point, exactly.
-    pub value: QSqrt,
+    pub(crate) value: QSqrt,
     /// Its sign (-1, 0, 1).
-    pub sign: i32,
+    pub(crate) sign: i32,
+}
+
+impl WitnessPoint {
+    /// The coordinates x, y, z (exact, in Q(√d)); E vanishes there exactly.
+    pub fn coords(&self) -> &[QSqrt; 3] {
+        &self.coords
+    }
+
+    /// The value of S at the point, exactly.
+    pub fn value(&self) -> &QSqrt {
+        &self.value
+    }
+
+    /// The sign of S at the point.
+    pub fn sign(&self) -> crate::number::Sign {
+        crate::number::Sign::from_i32(self.sign)
+    }
 }
 
 /// Projects a rational point near E onto E along the coordinate axis of the
 /// largest gradient component; `None` if that line misses E.
+#[cfg(test)]
 pub fn snap_to_ellipsoid(e: &Ellipsoid, p: &[Q; 3]) -> Option<[QSqrt; 3]> {
     let g = e.form.half_gradient(p);
     let mut k = 0;
@@ -253,7 +270,7 @@ impl IntegerData {
             Q::from_integer(disc),
         )
         .normalized();
-        debug_assert_eq!(value.sign(), sign);
+        debug_assert_eq!(value.signum(), sign);
         Some(WitnessPoint {
             coords,
             value,

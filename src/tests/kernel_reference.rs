@@ -67,7 +67,7 @@ fn guarded<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
 /// All problems found for one roots case (empty when it passes).
 fn check_roots_case(case: &Value) -> Vec<String> {
     let poly = str_field(case, "poly");
-    let result = match guarded(|| crate::ops::roots(poly).map_err(|e| format!("{e:?}"))) {
+    let result = match guarded(|| crate::kernel::roots_str(poly).map_err(|e| format!("{e:?}"))) {
         Ok(r) => r,
         Err(e) => return vec![format!("roots({poly:?}) failed: {e}")],
     };
@@ -237,7 +237,7 @@ fn check_resultant_case(case: &Value) -> Result<(), String> {
     );
     let want_text = str_field(case, "resultant");
     let want = parse_poly(want_text).map_err(|e| format!("reference does not parse: {e}"))?;
-    let got = guarded(|| crate::ops::resultant(f, g, var).map_err(|e| format!("{e:?}")))?;
+    let got = guarded(|| crate::kernel::resultant_str(f, g, var).map_err(|e| format!("{e:?}")))?;
     if got.resultant == want {
         Ok(())
     } else {

@@ -4,6 +4,7 @@
 //! pencil is consistent with the class; §7 agrees with the curve topology.
 
 use crate::cli::examples::natural::NATURAL_EXAMPLES;
+use crate::geom::eval_qsqrt;
 use crate::natural::classify::section7_agrees;
 use crate::natural::deciders::{
     AxesRelation, AxialPlane, pencil_determinant, pencil_has_planar_member, relation, thm8,
@@ -14,7 +15,6 @@ use crate::natural::tangency::section7;
 use crate::natural::{Natural, cayley_rotation, classify, parse_natural};
 use crate::number::{Q, QSqrt, q, qi};
 use crate::poly::ZPoly;
-use crate::tangent::witness::eval_qsqrt;
 use num_traits::{One, Zero};
 use proptest::prelude::*;
 
@@ -482,7 +482,7 @@ fn check_components(a: &Natural, b: &Natural, r: &NaturalReport) {
                         let dd = (0..3).fold(QSqrt::rational(Q::zero()), |acc, i| {
                             acc.add(&dir[i].mul(&dir[i]))
                         });
-                        if a2.sign() > 0 && a2.is_rational() && dd.is_rational() {
+                        if a2.signum() > 0 && a2.is_rational() && dd.is_rational() {
                             let s2 = &a2.a / &dd.a;
                             let s = QSqrt::sqrt(s2);
                             if s.is_rational()
@@ -760,7 +760,7 @@ proptest! {
         };
         let (qs, qq) = (nat(&s), nat(&q));
         let r = classify(&qs, &qq).unwrap();
-        let t = crate::tangent::decide(&qs.equation(), &qq.equation()).unwrap();
+        let t = crate::tangent::decide_poly(&qs.equation(), &qq.equation()).unwrap();
         use crate::tangent::Verdict;
         let double = r.components.iter().any(|c| matches!(c, Component::Conic { double: true, .. }));
         let expected = match r.class {

@@ -4,12 +4,13 @@
 //! sampling).
 
 use crate::cli::examples::tangent::{PAPER_004, divides_judging};
+use crate::geom::eval_qsqrt;
 use crate::number::{Q, QSqrt, q, qi};
 use crate::poly::mpoly::{MPoly, NVARS};
 use crate::poly::{QMPoly, parse_poly};
 use crate::roots::RealAlg;
-use crate::tangent::witness::{eval_qsqrt, snap_to_ellipsoid};
-use crate::tangent::{Containment, Ellipsoid, TangentReport, Verdict, decide, decide_str};
+use crate::tangent::witness::snap_to_ellipsoid;
+use crate::tangent::{Containment, Ellipsoid, TangentReport, Verdict, decide_poly, decide_str};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use proptest::prelude::*;
@@ -133,7 +134,7 @@ fn paper_example_4() {
     let e = parse_poly("2x^2+3y^2+4z^2-25").unwrap();
     assert!(eval_qsqrt(&e, &neg.coords).is_zero() && eval_qsqrt(&e, &pos.coords).is_zero());
     assert_eq!((neg.sign, pos.sign), (-1, 1));
-    assert_eq!(eval_qsqrt(&s, &neg.coords).sign(), -1);
+    assert_eq!(eval_qsqrt(&s, &neg.coords).signum(), -1);
 }
 
 #[test]
@@ -207,7 +208,7 @@ fn singular_multipliers() {
     let (lo, hi) = (r.min.unwrap(), r.max.unwrap());
     let p = crate::poly::ZPoly::from_i64s(&[-625, -25, 1]);
     assert_eq!((lo.sign_of(&p), hi.sign_of(&p)), (0, 0));
-    assert_eq!((lo.sign(), hi.sign()), (-1, 1));
+    assert_eq!((lo.signum(), hi.signum()), (-1, 1));
     // constants
     let r = run(e, "7");
     assert_eq!((r.verdict, rat(&r.min)), (Verdict::Separated, qi(7)));
@@ -314,10 +315,10 @@ proptest! {
                                        rot in (-3i64..4, -3i64..4, -3i64..4, 1i64..4), tr in (-5i64..5, -5i64..5, -5i64..5)) {
         let ep = parse_poly(&e).unwrap();
         let sp = parse_poly(&s).unwrap();
-        let a = decide(&ep, &sp).unwrap();
+        let a = decide_poly(&ep, &sp).unwrap();
         let r = cayley(rot.0, rot.1, rot.2, rot.3);
         let t = [qi(tr.0), qi(tr.1), qi(tr.2)];
-        let b = decide(&moved(&ep, &r, &t), &moved(&sp, &r, &t)).unwrap();
+        let b = decide_poly(&moved(&ep, &r, &t), &moved(&sp, &r, &t)).unwrap();
         prop_assert_eq!(a.verdict, b.verdict);
         prop_assert!(same_alg(&a.min, &b.min));
         prop_assert!(same_alg(&a.max, &b.max));
@@ -330,8 +331,8 @@ proptest! {
         let ep = parse_poly(&e).unwrap();
         let sp = parse_poly(&s).unwrap();
         let kq = q(k, d);
-        let a = decide(&ep, &sp).unwrap();
-        let b = decide(&ep, &sp.scale(&kq)).unwrap();
+        let a = decide_poly(&ep, &sp).unwrap();
+        let b = decide_poly(&ep, &sp.scale(&kq)).unwrap();
         prop_assert_eq!(a.verdict, b.verdict);
         let (an, bn) = (a.min.unwrap(), b.min.unwrap());
         // ν(kS) = k ν(S): compare k·ν via the defining polynomials' approximations and sign checks
@@ -346,8 +347,8 @@ proptest! {
     fn sampling_stays_in_range(e in ellipsoid_strategy(), s in ellipsoid_strategy(), px in -20i64..20, py in -20i64..20, pz in -20i64..20) {
         let ep = parse_poly(&e).unwrap();
         let sp = parse_poly(&s).unwrap();
-        let r = decide(&ep, &sp).unwrap();
-        let ell = Ellipsoid::new(&ep).unwrap();
+        let r = decide_poly(&ep, &sp).unwrap();
+        let ell = Ellipsoid::from_poly(&ep).unwrap();
         let p = [&ell.center[0] + q(px, 7), &ell.center[1] + q(py, 7), &ell.center[2] + q(pz, 7)];
         if let Some(pt) = snap_to_ellipsoid(&ell, &p) {
             prop_assert!(eval_qsqrt(&ell.poly, &pt).is_zero());
@@ -368,10 +369,10 @@ proptest! {
     fn rigid_motion_invariance_cubic(rot in (-2i64..3, -2i64..3, -2i64..3, 1i64..3), tr in (-2i64..2, -2i64..2, -2i64..2)) {
         let ep = parse_poly("x^2+2y^2+3z^2-6").unwrap();
         let sp = parse_poly("x^3 - 2x*y + z^2 - 1").unwrap();
-        let a = decide(&ep, &sp).unwrap();
+        let a = decide_poly(&ep, &sp).unwrap();
         let r = cayley(rot.0, rot.1, rot.2, rot.3);
         let t = [qi(tr.0), qi(tr.1), qi(tr.2)];
-        let b = decide(&moved(&ep, &r, &t), &moved(&sp, &r, &t)).unwrap();
+        let b = decide_poly(&moved(&ep, &r, &t), &moved(&sp, &r, &t)).unwrap();
         prop_assert_eq!(a.verdict, b.verdict);
         prop_assert!(same_alg(&a.min, &b.min));
         prop_assert!(same_alg(&a.max, &b.max));
@@ -420,7 +421,7 @@ fn witness_values_are_exact() {
         let e = parse_poly("x^2+2y^2+3z^2-30").unwrap();
         assert!(eval_qsqrt(&e, &w.coords).is_zero());
         let s = parse_poly("x*y*z - 1").unwrap();
-        assert_eq!(eval_qsqrt(&s, &w.coords).sign(), w.sign);
+        assert_eq!(eval_qsqrt(&s, &w.coords).signum(), w.sign);
     }
     let _ = (QSqrt::rational(Q::one()), BigInt::one());
 }
@@ -439,9 +440,9 @@ proptest! {
         let ep = parse_poly(&e).unwrap();
         let sp = parse_poly(&s).unwrap();
         prop_assume!(sp.total_degree().unwrap_or(0) >= 3);
-        let r = decide(&ep, &sp).unwrap();
+        let r = decide_poly(&ep, &sp).unwrap();
         prop_assume!(r.verdict != Verdict::Undecided);
-        let ell = Ellipsoid::new(&ep).unwrap();
+        let ell = Ellipsoid::from_poly(&ep).unwrap();
         for (px, py, pz) in samples {
             let p = [&ell.center[0] + q(px, 5), &ell.center[1] + q(py, 5), &ell.center[2] + q(pz, 5)];
             if let Some(pt) = snap_to_ellipsoid(&ell, &p) {
@@ -481,10 +482,10 @@ proptest! {
         let ep = parse_poly(&e).unwrap();
         let sp = parse_poly(&s).unwrap();
         prop_assume!(sp.total_degree().unwrap_or(0) >= 3);
-        let ell = Ellipsoid::new(&ep).unwrap();
+        let ell = Ellipsoid::from_poly(&ep).unwrap();
         let sep = crate::tangent::separable::analyze(&ell, &sp).expect("separable shape");
-        let r = decide(&ep, &sp).unwrap();
-        prop_assert!(matches!(r.certificate.method, crate::tangent::Method::Separable(_)));
+        let r = decide_poly(&ep, &sp).unwrap();
+        prop_assert!(matches!(r.certificate.method, crate::tangent::Analysis::Separable(_)));
         match crate::tangent::critical::analyze(&ell, &sp).unwrap() {
             crate::tangent::critical::Outcome::Finite(an) => {
                 prop_assert_eq!(&an.judging, &sep.judging, "{} on {}", s, e);
@@ -504,7 +505,7 @@ proptest! {
         }
         for w in [&r.certificate.negative_witness, &r.certificate.positive_witness].into_iter().flatten() {
             prop_assert!(eval_qsqrt(&ep, &w.coords).is_zero());
-            prop_assert_eq!(eval_qsqrt(&sp, &w.coords).sign(), w.sign);
+            prop_assert_eq!(eval_qsqrt(&sp, &w.coords).signum(), w.sign);
         }
     }
 }

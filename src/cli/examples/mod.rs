@@ -37,7 +37,7 @@ fn kernel_examples() -> Vec<ExampleResult> {
             "multiple roots: ±√2 with multiplicity 3 and 1/3",
         ),
     ] {
-        if let Ok(r) = crate::ops::roots(expr) {
+        if let Ok(r) = crate::kernel::roots_str(expr) {
             out.push(ExampleResult {
                 source: "kernel".into(),
                 title: title.into(),

@@ -5,7 +5,7 @@ use super::ExampleResult;
 use crate::poly::mpoly::U;
 use crate::poly::{ZPoly, parse_poly};
 use crate::report::{tangent_human, tangent_json, upoly_string};
-use crate::tangent::{Method, TangentReport, decide_str};
+use crate::tangent::{Analysis, TangentReport, decide_str};
 
 /// One paper example: inputs, what the paper printed, and the polynomials
 /// it printed (to test divisibility into our exact D(u)).
@@ -141,8 +141,8 @@ pub fn paper_examples() -> Vec<ExampleResult> {
         // the paper's route for comparison: resultants of the whole Lagrange
         // system in two orders (the separable route eliminates branch-wise)
         let elimination = match &r.certificate.method {
-            Method::CriticalIdeal(an) => an.elimination.clone(),
-            Method::Separable(_) => crate::tangent::Ellipsoid::new(&r.ellipsoid)
+            Analysis::CriticalIdeal(an) => an.elimination.clone(),
+            Analysis::Separable(_) => crate::tangent::Ellipsoid::from_poly(&r.ellipsoid)
                 .ok()
                 .and_then(|e| crate::tangent::judging::eliminate(&e, &r.surface)),
             _ => None,

@@ -1,8 +1,8 @@
 //! JSON of the kernel operations (`roots`, `resultant`) and of real
 //! algebraic numbers.
 
+use crate::kernel::{ResultantReport, RootsReport};
 use crate::number::fmt_q;
-use crate::ops::{ResultantResult, RootsResult};
 use crate::roots::RealAlg;
 use serde_json::{Value, json};
 
@@ -14,7 +14,7 @@ pub fn alg_json(a: &RealAlg) -> Value {
 }
 
 /// `quadsect roots --json`.
-pub fn roots_json(r: &RootsResult) -> Value {
+pub fn roots_json(r: &RootsReport) -> Value {
     let rep = &r.report;
     let intervals: Vec<Value> = rep
         .roots
@@ -36,6 +36,6 @@ pub fn roots_json(r: &RootsResult) -> Value {
 }
 
 /// `quadsect resultant --json`.
-pub fn resultant_json(r: &ResultantResult) -> Value {
+pub fn resultant_json(r: &ResultantReport) -> Value {
     json!({"resultant": r.resultant.to_string_canonical(), "degree": r.degree})
 }

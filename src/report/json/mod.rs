@@ -6,5 +6,5 @@ mod natural;
 mod tangent;
 
 pub use kernel::{alg_json, resultant_json, roots_json};
-pub use natural::{exact_json, natural_input_json, natural_json};
-pub use tangent::{alg_json_in, qsqrt_json, tangent_json};
+pub use natural::{natural_input_json, natural_json};
+pub use tangent::tangent_json;

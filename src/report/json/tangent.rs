@@ -6,7 +6,7 @@ use crate::poly::mpoly::{L, MPoly, T, U};
 use crate::report::upoly_string;
 use crate::roots::RealAlg;
 use crate::tangent::quadric::Branch;
-use crate::tangent::{Method, TangentReport, WitnessPoint};
+use crate::tangent::{Analysis, TangentReport, Undecided, WitnessPoint};
 use serde_json::{Value, json};
 
 /// A real algebraic number as SPEC's ALG object, its polynomial printed in
@@ -18,6 +18,19 @@ pub fn alg_json_in(a: &RealAlg, v: usize) -> Value {
         "interval": [crate::number::fmt_q(&lo), crate::number::fmt_q(&hi)],
         "approx": a.approx(20),
     })
+}
+
+/// Why a verdict is undecided: `{"kind": "budget"|"no-certificate",
+/// "limit": "time"|"memory"|"size"|"cancelled"|null, "message"}`.
+pub fn undecided_json(u: &Undecided) -> Value {
+    match u {
+        Undecided::Budget(e) => {
+            json!({"kind": "budget", "limit": e.limit().as_str(), "message": e.to_string()})
+        }
+        Undecided::NoCertificate(why) => {
+            json!({"kind": "no-certificate", "limit": null, "message": why})
+        }
+    }
 }
 
 /// An element of Q(√d) as `{"a", "b", "d", "approx"}`.
@@ -49,10 +62,10 @@ fn side_str(s: Option<i32>) -> Value {
     }
 }
 
-fn method_json(m: &Method) -> Value {
+fn method_json(m: &Analysis) -> Value {
     match m {
-        Method::Constant => json!({"method": "constant"}),
-        Method::Pencil(an) => json!({
+        Analysis::Constant => json!({"method": "constant"}),
+        Analysis::Pencil(an) => json!({
             "method": "pencil-discriminant",
             "scale": an.scale.to_string(),
             "char_poly": upoly_string(&an.char_poly, L),
@@ -61,7 +74,7 @@ fn method_json(m: &Method) -> Value {
             "test": "gcd(P, delta) = 1 and D(u) = disc_l(F - u delta) of degree 6 and square-free: every real root of D is S at a real critical point",
             "extreme_multipliers": an.extreme_multipliers.as_ref().map(|(a, b)| vec![alg_json_in(a, L), alg_json_in(b, L)]),
         }),
-        Method::Lambda(an) => {
+        Analysis::Lambda(an) => {
             let mults: Vec<Value> = an
                 .critical
                 .iter()
@@ -88,7 +101,7 @@ fn method_json(m: &Method) -> Value {
                 "multipliers": mults,
             })
         }
-        Method::Separable(sa) => {
+        Analysis::Separable(sa) => {
             let names = ["x", "y", "z"];
             let branches: Vec<Value> = sa
                 .branches
@@ -117,7 +130,7 @@ fn method_json(m: &Method) -> Value {
                 "branches": branches,
             })
         }
-        Method::CriticalIdeal(an) => {
+        Analysis::CriticalIdeal(an) => {
             let elim = an.elimination.as_ref().map(|e| {
                 json!({
                     "order_l_x_y_z": upoly_string(&e.first, U),
@@ -134,6 +147,7 @@ fn method_json(m: &Method) -> Value {
                 .collect();
             json!({
                 "method": "critical-ideal-rur",
+                "system": an.generators.iter().map(|g| g.to_string_canonical()).collect::<Vec<_>>(),
                 "critical_points": an.rur.points,
                 "with_multiplicity": an.rur.multiplicity_dim,
                 "made_radical": an.rur.made_radical,
@@ -145,7 +159,7 @@ fn method_json(m: &Method) -> Value {
                 "resultant_elimination": elim,
             })
         }
-        Method::LevelSets(ls) => json!({
+        Analysis::LevelSets(ls) => json!({
             "method": "level-sets",
             "levels": ls.levels.iter().map(|(q, ne)| json!({"level": crate::number::fmt_q(q), "real_points": ne})).collect::<Vec<_>>(),
             "linear_form": ls.form.iter().map(crate::number::fmt_q).collect::<Vec<_>>(),
@@ -180,7 +194,7 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         m.insert("witness_positive".into(), witness_json(&c.positive_witness));
         m.insert("notes".into(), json!(c.notes));
         if let Some(reason) = &r.reason {
-            m.insert("reason".into(), json!(reason));
+            m.insert("reason".into(), undecided_json(reason));
         }
     }
     json!({

@@ -1,9 +1,8 @@
 //! Human-readable text of the kernel operations (`roots`, `resultant`) and of real
 //! algebraic numbers.
 
-use crate::number::{approx_decimal, fmt_q};
-use crate::ops::{ResultantResult, RootsResult};
-use crate::roots::RealAlg;
+use crate::kernel::{ResultantReport, RootsReport};
+use crate::number::fmt_q;
 
 /// Left-aligned text table with a header row.
 pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
@@ -33,7 +32,7 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
 
 /// `quadsect roots` for people: counts, then one aligned row per root with
 /// its exact interval, multiplicity and a decimal approximation.
-pub fn roots_human(r: &RootsResult) -> String {
+pub fn roots_human(r: &RootsReport) -> String {
     let rep = &r.report;
     let v = r.variable.unwrap_or("x");
     let mut s = format!(
@@ -71,10 +70,7 @@ pub fn roots_human(r: &RootsResult) -> String {
             } else {
                 format!("({}, {})", fmt_q(&x.interval.lo), fmt_q(&x.interval.hi))
             };
-            let approx = match x.value() {
-                RealAlg::Rational(q) => approx_decimal(&q, 20),
-                a => a.approx(20),
-            };
+            let approx = x.value().approx(20);
             vec![
                 format!("{}", i + 1),
                 format!("{}", x.multiplicity),
@@ -90,7 +86,7 @@ pub fn roots_human(r: &RootsResult) -> String {
 }
 
 /// `quadsect resultant` for people.
-pub fn resultant_human(r: &ResultantResult) -> String {
+pub fn resultant_human(r: &ResultantReport) -> String {
     format!(
         "resultant  {}\ndegree     {}\n",
         r.resultant.to_string_canonical(),

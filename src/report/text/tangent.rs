@@ -3,7 +3,7 @@
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{L, MPoly, U};
 use crate::roots::RealAlg;
-use crate::tangent::{Method, TangentReport, WitnessPoint};
+use crate::tangent::{Analysis, TangentReport, WitnessPoint};
 
 /// A univariate integer polynomial printed in the variable with index `v`.
 pub fn upoly_string(p: &ZPoly, v: usize) -> String {
@@ -68,8 +68,8 @@ pub fn tangent_human(r: &TangentReport) -> String {
     let c = &r.certificate;
     s.push_str("certificate\n");
     let method = match &c.method {
-        Method::Constant => "S is constant".to_string(),
-        Method::Pencil(an) => format!(
+        Analysis::Constant => "S is constant".to_string(),
+        Analysis::Pencil(an) => format!(
             "pencil: F(λ) = det(Ŝ − λÊ) = {}, δ(λ) = {}, P = F'δ − Fδ' = {} (Ŝ, Ê: {}·S, {}·E); gcd(P, δ) = 1 and D = disc_λ(F − uδ) square-free of degree 6, so every real root of D is a critical value at a real point",
             upoly_string(&an.char_poly, L),
             upoly_string(&an.delta, L),
@@ -77,13 +77,13 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.scale,
             an.scale
         ),
-        Method::Lambda(an) => format!(
+        Analysis::Lambda(an) => format!(
             "λ-parametrisation: secular polynomial P(λ) = {} (degree {}), δ(λ) = {}",
             upoly_string(&ZPoly::from_q(&an.secular).0, L),
             an.secular.degree().unwrap_or(0),
             upoly_string(&ZPoly::from_q(&an.delta).0, L)
         ),
-        Method::Separable(sa) => {
+        Analysis::Separable(sa) => {
             let names = ["x", "y", "z"];
             let g = names[sa.general];
             let parts: Vec<String> = sa
@@ -111,7 +111,7 @@ pub fn tangent_human(r: &TangentReport) -> String {
                 parts.join(" ")
             )
         }
-        Method::CriticalIdeal(an) => format!(
+        Analysis::CriticalIdeal(an) => format!(
             "critical ideal E = 0, ∇S×∇E = 0: {} critical points ({} with multiplicity), RUR in t = {}·x + {}·y + {}·z, {} real",
             an.rur.points,
             an.rur.multiplicity_dim,
@@ -120,7 +120,7 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.form[2],
             an.rur.real_roots.len()
         ),
-        Method::LevelSets(ls) => format!(
+        Analysis::LevelSets(ls) => format!(
             "curves of critical points: {} level curves tested",
             ls.levels.len()
         ),
@@ -145,7 +145,7 @@ pub fn tangent_human(r: &TangentReport) -> String {
     if let Some(w) = &c.positive_witness {
         s.push_str(&format!("  point of E with S > 0  {}\n", point_human(w)));
     }
-    if let Method::CriticalIdeal(an) = &c.method
+    if let Analysis::CriticalIdeal(an) = &c.method
         && let Some(e) = &an.elimination
     {
         s.push_str(&format!(
