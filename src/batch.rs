@@ -11,61 +11,13 @@ use std::io::{BufRead, Write};
 /// Lines processed together (in parallel) before their answers are written.
 pub const CHUNK: usize = 2048;
 
-fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
-    obj.get(name)
-        .ok_or_else(|| Error::new(ErrorKind::MissingField, format!("missing field \"{name}\"")))
-}
-
-fn str_field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, Error> {
-    field(obj, name)?.as_str().ok_or_else(|| {
-        Error::new(
-            ErrorKind::BadField,
-            format!("field \"{name}\" must be a string"),
-        )
-    })
-}
-
 /// Runs one operation given as a JSON object (`op` and its arguments) and
-/// returns the same JSON as the CLI's `--json`.
+/// returns the same JSON as the CLI's `--json`, under the default budget.
 pub fn run_op(obj: &Map<String, Value>) -> Result<Value, Error> {
-    let op = str_field(obj, "op")?;
-    match op {
-        "roots" => {
-            let r = crate::kernel::roots_str(str_field(obj, "poly")?)?;
-            Ok(crate::report::roots_json(&r))
-        }
-        "resultant" => {
-            let r = crate::kernel::resultant_str(
-                str_field(obj, "f")?,
-                str_field(obj, "g")?,
-                str_field(obj, "var")?,
-            )?;
-            Ok(crate::report::resultant_json(&r))
-        }
-        "tangent" => {
-            let r = crate::tangent::decide_str(
-                str_field(obj, "ellipsoid")?,
-                str_field(obj, "surface")?,
-            )?;
-            Ok(crate::report::tangent_json(&r))
-        }
-        "natural" => {
-            let q = |name: &str| -> Result<crate::natural::Natural, Error> {
-                let v = field(obj, name)?;
-                match v {
-                    Value::String(s) => crate::natural::parse_natural(s),
-                    other => crate::natural::types::from_json(other),
-                }
-                .map_err(|e| e.context(&format!("in \"{name}\"")))
-            };
-            let r = crate::natural::classify(&q("a")?, &q("b")?)?;
-            Ok(crate::report::natural_json(&r))
-        }
-        other => Err(Error::new(
-            ErrorKind::UnknownOp,
-            format!("unknown op \"{other}\" (expected tangent, natural, roots or resultant)"),
-        )),
-    }
+    let request = crate::request::Request::from_json(obj)?;
+    Ok(request
+        .execute(&crate::budget::Budget::default())?
+        .to_json())
 }
 
 /// Answers one input line (never panics: an internal failure becomes an

@@ -110,6 +110,7 @@ pub mod natural;
 mod number;
 mod poly;
 mod report;
+mod request;
 mod roots;
 #[cfg(feature = "serde")]
 mod serde_impls;

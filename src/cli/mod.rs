@@ -1,6 +1,7 @@
 //! The `quadsect` command line (feature `cli`): argument parsing, output
 //! and the CLI-only jobs (the papers' examples, the benchmarks).
 
+use crate::request::Request;
 use crate::{Error, ErrorKind};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
@@ -104,47 +105,34 @@ fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() 
     };
 }
 
+/// Runs one request of the dispatch table and prints its answer.
+fn answer(json: bool, request: Request) -> Result<(), Error> {
+    let a = request.execute(&crate::budget::Budget::default())?;
+    emit(
+        json,
+        || serde_json::to_value(&a).unwrap_or(serde_json::Value::Null),
+        || a.to_string(),
+    );
+    Ok(())
+}
+
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Examples { json } => {
             let r = examples::run_all();
             emit(json, || examples::to_json(&r), || examples::to_human(&r));
         }
-        Command::Roots { expr, json } => {
-            let r = crate::kernel::roots_str(&expr)?;
-            emit(
-                json,
-                || crate::report::roots_json(&r),
-                || crate::report::roots_human(&r),
-            );
-        }
-        Command::Resultant { f, g, var, json } => {
-            let r = crate::kernel::resultant_str(&f, &g, &var)?;
-            emit(
-                json,
-                || crate::report::resultant_json(&r),
-                || crate::report::resultant_human(&r),
-            );
-        }
+        Command::Roots { expr, json } => answer(json, Request::Roots { poly: expr })?,
+        Command::Resultant { f, g, var, json } => answer(json, Request::Resultant { f, g, var })?,
         Command::Tangent {
             ellipsoid,
             surface,
             json,
-        } => {
-            let r = crate::tangent::decide_str(&ellipsoid, &surface)?;
-            emit(
-                json,
-                || crate::report::tangent_json(&r),
-                || crate::report::tangent_human(&r),
-            );
-        }
+        } => answer(json, Request::Tangent { ellipsoid, surface })?,
         Command::Natural { a, b, json } => {
-            let r = crate::natural::classify_str(&a, &b)?;
-            emit(
-                json,
-                || crate::report::natural_json(&r),
-                || crate::report::natural_human(&r),
-            );
+            let a = a.parse().map_err(|e: Error| e.context("in A"))?;
+            let b = b.parse().map_err(|e: Error| e.context("in B"))?;
+            answer(json, Request::Natural { a, b })?
         }
         Command::Bench {
             suite,

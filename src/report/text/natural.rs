@@ -1,7 +1,7 @@
 //! Human-readable text of `quadsect natural` (SPEC §4 JSON and the human summary).
 
 use crate::natural::exact::{EPoint, epoint_text, normalize_direction};
-use crate::natural::result::{Component, NaturalReport};
+use crate::natural::result::{Class, Component, NaturalReport};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 
@@ -77,15 +77,24 @@ fn component_human(c: &Component) -> String {
     }
 }
 
+/// `1 conic`, `2 conics`, `0 conics`.
+fn plural(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
 /// `quadsect natural` for people.
 pub fn natural_human(r: &NaturalReport) -> String {
-    let mut s = format!(
-        "class     {}  ({} conics, {} lines, {} points)\n",
-        r.class.as_str(),
-        r.conics(),
-        r.lines(),
-        r.points()
-    );
+    let counts = if r.class == Class::SameSurface {
+        "the two equations are proportional: every point of one is on the other".to_string()
+    } else {
+        format!(
+            "{}, {}, {}",
+            plural(r.conics(), "conic", "conics"),
+            plural(r.lines(), "line", "lines"),
+            plural(r.points(), "point", "points")
+        )
+    };
+    let mut s = format!("class     {}  ({counts})\n", r.class.as_str());
     s.push_str(&format!(
         "axes      {}\nthm8      {}\nmethod    {}\n",
         r.axes
@@ -136,7 +145,7 @@ pub fn natural_human(r: &NaturalReport) -> String {
         };
         s.push_str(&format!("§7        {v}\n"));
     }
-    if r.components.is_empty() {
+    if r.components.is_empty() && r.class != Class::SameSurface {
         s.push_str("no real intersection\n");
     }
     for (i, c) in r.components.iter().enumerate() {
