@@ -551,12 +551,24 @@ def decimal500(g):
     a = cylinder([d500(-5, 5) for _ in range(3)], [d500(-3, 3) for _ in range(3)], d500(1, 9))
     b = cylinder([d500(-5, 5) for _ in range(3)], [d500(-3, 3) for _ in range(3)], d500(1, 9))
     g.add("decimal500", a, b, "random 500-digit decimals")
-    for ang in [math.pi / 4, math.pi / 6, 1.0]:
+    # 500-digit positions and radii, small-integer axes
+    a = cone([d500(-5, 5) for _ in range(3)], [1, 2, 2], d500(1, 3))
+    b = cylinder([d500(-5, 5) for _ in range(3)], [2, -1, 0], d500(1, 9))
+    g.add("decimal500", a, b, "500-digit positions, radius2 and tan2; integer axes")
+    a = cylinder([d500(-5, 5) for _ in range(3)], [0, 0, 1], d500(1, 9))
+    b = cylinder([d500(-5, 5) for _ in range(3)], [1, 1, 0], d500(1, 9))
+    g.add("decimal500", a, b, "500-digit positions and radius2; integer axes")
+    # exact degeneracies written with 500-digit cos/sin (they stay degenerate)
+    for ang in [math.pi / 4, math.pi / 6]:
         c, s = unit500(ang)
         g.add("decimal500", cylinder(O, X, 1), cylinder(O, [c, s, 0], 1),
               f"equal cylinders, axis (cos, sin) of {ang!r} to 500 digits")
     c, s = unit500(math.pi / 3)
     g.add("decimal500", cone(O, X, 1), cone(O, [c, s, 0], 3), "common vertex, axis (cos, sin) of pi/3 to 500 digits")
+    # tangency rotated by 500-digit cos/sin: c^2 + s^2 != 1, so the axes are 2 sqrt(c^2 + s^2) apart
+    c, s = unit500(0.5)
+    g.add("decimal500", cylinder(O, X, 1), cylinder([0, -2 * s, 2 * c], [0, c, s], 1),
+          "skew cylinders at r1 + r2 rotated about x by 0.5 with 500-digit cos/sin (off tangency by ~1e-500)")
 
 
 # ---------------------------------------------------------------- occ-regression
