@@ -636,7 +636,11 @@ def main():
     ap.add_argument("--only", default="", help="comma-separated groups to (re)compute")
     ap.add_argument("--no-expect", action="store_true", help="write the pairs without running quadsect")
     ap.add_argument("--recompute", action="store_true", help="ignore the answers already recorded")
+    ap.add_argument("--summary", action="store_true", help="print the 'before' timings per group and exit")
     args = ap.parse_args()
+    if args.summary:
+        print(summary_table(json.load(open(BEFORE_PATH))))
+        return
 
     g = Gen(SEED)
     class_groups(g)
@@ -674,6 +678,9 @@ def main():
             pairs_out.append(pair)
         elif rec is None and args.no_expect:
             pairs_out.append(pair)
+    for part in ("pairs", "dropped"):
+        for k in [k for k in before[part] if k not in names]:
+            del before[part][k]  # a pair no longer generated
     for k, rec in list(before["pairs"].items()) + list(before["dropped"].items()):
         if k in names:
             rec["name"] = names[k][0]
@@ -699,6 +706,39 @@ def main():
     print(f"wrote {len(pairs_out)} pairs to {PAIRS_PATH}: {counts}", file=sys.stderr)
 
 
+def group_summary(before):
+    """Per group: pairs, median and max of per_call_s and of wall_s, dropped pairs."""
+    out = {}
+    def groups_of(r):
+        return {n.rsplit("-", 1)[0] for n in r.get("names", [r["name"]])}
+
+    for gr in GROUPS:
+        recs = [r for r in before["pairs"].values() if gr in groups_of(r)]
+        n = sum(1 for r in recs for x in r.get("names", [r["name"]]) if x.rsplit("-", 1)[0] == gr)
+        if not recs:
+            continue
+        pc = sorted(r["per_call_s"] for r in recs)
+        wall = sorted(r["wall_s"] for r in recs)
+        slowest = max(recs, key=lambda r: r["per_call_s"])
+        out[gr] = {"pairs": n, "distinct": len(recs), "median_per_call_s": pc[(len(pc) - 1) // 2] if len(pc) % 2
+                   else (pc[len(pc) // 2 - 1] + pc[len(pc) // 2]) / 2, "max_per_call_s": pc[-1],
+                   "slowest": slowest["name"], "median_wall_s": wall[len(wall) // 2],
+                   "dropped": sorted(r["name"] for r in before["dropped"].values() if gr in groups_of(r))}
+    return out
+
+
+def summary_table(before):
+    def t(x):
+        return f"{x * 1e3:.2f} ms" if x < 1 else f"{x:.2f} s"
+
+    lines = ["| group | pairs | median per pair | slowest pair | dropped (no answer within the limit) |",
+             "|---|---|---|---|---|"]
+    for gr, s in group_summary(before).items():
+        lines.append(f"| {gr} | {s['pairs']} | {t(s['median_per_call_s'])} | {t(s['max_per_call_s'])} "
+                     f"({s['slowest']}) | {', '.join(s['dropped']) or '–'} |")
+    return "\n".join(lines)
+
+
 def save_before(before):
     before["description"] = (
         "Timings of quadsect's present exact route ('before' of issue 15) per pair of "
@@ -706,6 +746,7 @@ def save_before(before):
         "process with one line (start-up included); per_call_s = time per call (see per_call_method). "
         "'dropped' lists pairs that did not finish within the time limit or failed."
     )
+    before["groups"] = group_summary(before)
     tmp = BEFORE_PATH + ".tmp"
     with open(tmp, "w") as f:
         json.dump(before, f, indent=1, sort_keys=True)
