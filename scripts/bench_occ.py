@@ -474,6 +474,8 @@ def main():
     ap.add_argument("--groups", default="", help="comma-separated groups (default all)")
     ap.add_argument("--only", default="", help="comma-separated pair names")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "occ_results.json"))
+    ap.add_argument("--md-out", default=os.path.join(ROOT, "docs", "occ_results.md"),
+                    help="the printed tables, also written here ('' for none)")
     args = ap.parse_args()
 
     doc = json.load(open(args.pairs))
@@ -531,14 +533,21 @@ def main():
     with open(args.out, "w") as f:
         json.dump(result, f, indent=1)
         f.write("\n")
-    print(markdown(summary, records))
     tot = {m: {k: sum(r.get("verdicts", {}).get(m, {}).get(k, 0) for r in summary.values())
                for k in ("right", "wrong", "no answer")} for m in ("intpatch", "intana", "intss")}
-    print(f"\nall {len(records)} pairs: " + "; ".join(
-        f"{m} {v['right']} right / {v['wrong']} wrong / {v['no answer']} no answer" for m, v in tot.items()))
-    print(f"Python call overhead included in OCC's times: {fmt_t(overhead)} per call "
-          "(an empty IntAna_QuadQuadGeo())")
-    print(f"raw results: {os.path.relpath(args.out, ROOT)}")
+    text = [f"Open CASCADE {result['occ']['version']} beside quadsect, {result['started']}, "
+            f"`{result['command']}`", "", markdown(summary, records), "",
+            f"All {len(records)} pairs: " + "; ".join(
+                f"{m} {v['right']} right / {v['wrong']} wrong / {v['no answer']} no answer" for m, v in tot.items()),
+            "", f"Python call overhead included in OCC's times: {fmt_t(overhead)} per call "
+            "(an empty IntAna_QuadQuadGeo()).",
+            "quadsect: " + (f"`{qs_info['command']}`" if qs_info and "command" in qs_info
+                            else (qs_info or {}).get("skipped", "not run (--no-quadsect)")),
+            f"Raw results: {os.path.relpath(args.out, ROOT)}."]
+    print("\n".join(text))
+    if args.md_out:
+        with open(args.md_out, "w") as f:
+            f.write("\n".join(text) + "\n")
 
 
 if __name__ == "__main__":

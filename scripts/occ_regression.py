@@ -436,17 +436,7 @@ def interpret(text):
         elif cmd == "baddtools":
             tools += rest
         elif cmd in ("bfillds", "bbuild", "bcbuild", "bapibop"):
-            if objects or tools:
-                args = objects + tools
-                if cmd == "baddcompound":
-                    pass
-                gen_pairs(args)
-            if cmd == "bfillds":
-                pass
-    return pairs
-
-
-def expand_compound_args(pairs):
+            gen_pairs(objects + tools)
     return pairs
 
 
