@@ -76,6 +76,9 @@ try:
 except ImportError as err:  # pragma: no cover
     sys.exit(f"bench_occ.py needs Open CASCADE's Python module OCP (pip package cadquery-ocp-novtk): {err}")
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_table import fmt as fmt_t  # noqa: E402  (seconds for people: ns, µs, ms, s)
+
 TOL = 1e-7
 
 # ---------------------------------------------------------------- timing
@@ -404,18 +407,6 @@ def run_quadsect(qs, pairs_path):
 # ---------------------------------------------------------------- report
 
 
-def fmt_t(s):
-    if s is None:
-        return "–"
-    if s < 1e-6:
-        return f"{s * 1e9:.0f} ns"
-    if s < 1e-3:
-        return f"{s * 1e6:.1f} µs"
-    if s < 1:
-        return f"{s * 1e3:.2f} ms"
-    return f"{s:.2f} s"
-
-
 def summarise(records, groups):
     out = {}
     for g in groups:
@@ -425,7 +416,7 @@ def summarise(records, groups):
             ts = [r[m]["median_s"] for r in rs if m in r and r[m].get("median_s") is not None]
             if ts:
                 row[m] = {"median_s": statistics.median(ts), "max_s": max(ts), "timed": len(ts)}
-            if m != "quadsect":
+            if m != "quadsect" and any(m in r for r in rs):
                 v = [r[m]["verdict"] for r in rs if m in r]
                 row.setdefault("verdicts", {})[m] = {k: v.count(k) for k in ("right", "wrong", "no answer")}
                 if m == "intana":
@@ -534,7 +525,8 @@ def main():
         json.dump(result, f, indent=1)
         f.write("\n")
     tot = {m: {k: sum(r.get("verdicts", {}).get(m, {}).get(k, 0) for r in summary.values())
-               for k in ("right", "wrong", "no answer")} for m in ("intpatch", "intana", "intss")}
+               for k in ("right", "wrong", "no answer")} for m in ("intpatch", "intana", "intss")
+           if any(m in r.get("verdicts", {}) for r in summary.values())}
     text = [f"Open CASCADE {result['occ']['version']} beside quadsect, {result['started']}, "
             f"`{result['command']}`", "", markdown(summary, records), "",
             f"All {len(records)} pairs: " + "; ".join(

@@ -178,18 +178,6 @@ def to_json(s):
     return out
 
 
-def as_double(s):
-    """Every number of s rounded to the nearest double (exact value kept)."""
-    s = dict(s)
-    for key in ("center", "point", "vertex", "axis"):
-        if key in s:
-            s[key] = [dbl(x) for x in s[key]]
-    for key in ("radius2", "tan2"):
-        if key in s:
-            s[key] = dbl(s[key])
-    return s
-
-
 class Gen:
     def __init__(self, seed):
         self.rng = random.Random(seed)
@@ -569,6 +557,15 @@ def decimal500(g):
     c, s = unit500(0.5)
     g.add("decimal500", cylinder(O, X, 1), cylinder([0, -2 * s, 2 * c], [0, c, s], 1),
           "skew cylinders at r1 + r2 rotated about x by 0.5 with 500-digit cos/sin (off tangency by ~1e-500)")
+    # a few numbers with 500 digits each
+    g.add("decimal500", sphere([d500(-5, 5) for _ in range(3)], d500(1, 9)),
+          sphere([d500(-5, 5) for _ in range(3)], d500(1, 9)), "spheres, 500-digit centres and radius2")
+    g.add("decimal500", sphere([d500(-3, 3) for _ in range(3)], d500(1, 9)),
+          cylinder([0, 0, 0], [1, 2, 3], d500(1, 4)), "sphere and cylinder, 500-digit centre and radius2")
+    g.add("decimal500", cone([d500(-5, 5) for _ in range(3)], [1, 0, 1], 1),
+          cone([d500(-5, 5) for _ in range(3)], [0, 1, 2], 3), "cones, 500-digit vertices, integer axes and tan2")
+    g.add("decimal500", cylinder([0, 0, 0], [1, 0, 0], d500(1, 4)),
+          cylinder([0, 1, 2], [1, 3, 2], d500(1, 4)), "skew cylinders, 500-digit radius2 only")
 
 
 # ---------------------------------------------------------------- occ-regression
