@@ -384,6 +384,11 @@ def run_pair(pair, do_intss):
 # ---------------------------------------------------------------- quadsect
 
 
+def shown(cmd):
+    """A command line with the paths inside the repository made relative."""
+    return " ".join(os.path.relpath(w, ROOT) if w.startswith(ROOT + os.sep) else w for w in cmd)
+
+
 def run_quadsect(qs, pairs_path):
     """quadsect's natural-pair rows {name: median_s}, or (None, reason)."""
     if not os.path.exists(qs):
@@ -391,7 +396,8 @@ def run_quadsect(qs, pairs_path):
     cmd = [qs, "bench", "natural", "--pairs", pairs_path, "--json"]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
-        return None, (f"`{' '.join(cmd)}` failed (exit {p.returncode}): {p.stderr.strip()[:300]} — this quadsect "
+        first = (p.stderr.strip().splitlines() or [""])[0]
+        return None, (f"`{shown(cmd)}` failed (exit {p.returncode}: {first}) — this quadsect "
                       "has no --pairs option yet (issue 15 adds it); the OCC side is measured alone")
     try:
         rows = json.loads(p.stdout)
@@ -401,7 +407,7 @@ def run_quadsect(qs, pairs_path):
     if not pair_rows:
         return None, "quadsect printed no natural-pair rows"
     group_rows = {r["id"]: r for r in rows if r.get("suite") == "natural-group"}
-    return {"pairs": pair_rows, "groups": group_rows, "command": " ".join(cmd)}, None
+    return {"pairs": pair_rows, "groups": group_rows, "command": shown(cmd)}, None
 
 
 # ---------------------------------------------------------------- report
@@ -467,7 +473,11 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "occ_results.json"))
     ap.add_argument("--md-out", default=os.path.join(ROOT, "docs", "occ_results.md"),
                     help="the printed tables, also written here ('' for none)")
+    ap.add_argument("--report", action="store_true", help="only print (and write) the tables of --out")
     args = ap.parse_args()
+    if args.report:
+        write_report(json.load(open(args.out)), args.out, args.md_out)
+        return
 
     doc = json.load(open(args.pairs))
     pairs = doc["pairs"]
@@ -524,23 +534,33 @@ def main():
     with open(args.out, "w") as f:
         json.dump(result, f, indent=1)
         f.write("\n")
+    write_report(result, args.out, args.md_out)
+
+
+def write_report(result, out_path, md_path):
+    """The Markdown tables of a results document: printed, and written to md_path."""
+    summary, records = result["summary"], result["pairs"]
     tot = {m: {k: sum(r.get("verdicts", {}).get(m, {}).get(k, 0) for r in summary.values())
                for k in ("right", "wrong", "no answer")} for m in ("intpatch", "intana", "intss")
            if any(m in r.get("verdicts", {}) for r in summary.values())}
+    qs_info = result.get("quadsect") or {}
+    overall = summarise([dict(r, group="all") for r in records], ["all"])["all"]
+    medians = "; ".join(f"{m} {fmt_t(overall[m]['median_s'])} (slowest {fmt_t(overall[m]['max_s'])})"
+                        for m in ("intpatch", "intana", "intss", "quadsect") if m in overall)
     text = [f"Open CASCADE {result['occ']['version']} beside quadsect, {result['started']}, "
             f"`{result['command']}`", "", markdown(summary, records), "",
             f"All {len(records)} pairs: " + "; ".join(
                 f"{m} {v['right']} right / {v['wrong']} wrong / {v['no answer']} no answer" for m, v in tot.items()),
-            "", f"Python call overhead included in OCC's times: {fmt_t(overhead)} per call "
+            f"Median over all pairs of each pair's median: {medians}.",
+            "", f"Python call overhead included in OCC's times: {fmt_t(result['python_call_overhead_s'])} per call "
             "(an empty IntAna_QuadQuadGeo()).",
-            "quadsect: " + (f"`{qs_info['command']}`" if qs_info and "command" in qs_info
-                            else (qs_info or {}).get("skipped", "not run (--no-quadsect)")),
-            f"Raw results: {os.path.relpath(args.out, ROOT)}."]
+            "quadsect: " + (f"`{qs_info['command']}`" if "command" in qs_info
+                            else qs_info.get("skipped", "not run (--no-quadsect)")),
+            f"Raw results: {os.path.relpath(out_path, ROOT)}."]
     print("\n".join(text))
-    if args.md_out:
-        with open(args.md_out, "w") as f:
+    if md_path:
+        with open(md_path, "w") as f:
             f.write("\n".join(text) + "\n")
-
 
 if __name__ == "__main__":
     main()
