@@ -63,25 +63,44 @@ impl Ellipsoid {
         semi_axes: [Q; 3],
         rotation: [[Q; 3]; 3],
     ) -> Result<Ellipsoid, Error> {
+        if !crate::geom::is_rotation(&rotation) {
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
+                "the rotation must be an exact rotation matrix (R Rᵀ = I, det R = 1); use Ellipsoid::from_frame for any invertible matrix",
+            ));
+        }
+        Ellipsoid::from_frame(center, semi_axes, rotation)
+    }
+
+    /// The ellipsoid `Σᵢ ((Mᵀ (p − center))ᵢ / aᵢ)² − 1` for any invertible
+    /// matrix `M` taken exactly as given (e.g. a rotation stored in doubles,
+    /// which is orthogonal only up to rounding: the ellipsoid is then the
+    /// one those exact numbers define).  Checked: `aᵢ > 0` and `M`
+    /// invertible.
+    pub fn from_frame(
+        center: [Q; 3],
+        semi_axes: [Q; 3],
+        m: [[Q; 3]; 3],
+    ) -> Result<Ellipsoid, Error> {
         if let Some(a) = semi_axes.iter().find(|a| !a.is_positive()) {
             return Err(Error::new(
                 ErrorKind::NotAnEllipsoid,
                 format!("semi-axes must be > 0, got {}", crate::number::fmt_q(a)),
             ));
         }
-        if !crate::geom::is_rotation(&rotation) {
+        if crate::geom::det3(&m).is_zero() {
             return Err(Error::new(
                 ErrorKind::NotAnEllipsoid,
-                "the rotation must be an exact rotation matrix (R Rᵀ = I, det R = 1)",
+                "the axis matrix is singular (its columns must be independent)",
             ));
         }
-        // local coordinate i: (columnᵢ of R) · (p − center)
+        // local coordinate i: (column i of M) · (p − center)
         let mut e = QMPoly::constant(-Q::one());
         for i in 0..3 {
             let mut w = QMPoly::zero();
             for (j, c) in center.iter().enumerate() {
                 let xj = &MPoly::var(j) - &MPoly::constant(c.clone());
-                w = &w + &xj.scale(&rotation[j][i]);
+                w = &w + &xj.scale(&m[j][i]);
             }
             let a2 = &semi_axes[i] * &semi_axes[i];
             e = &e + &(&w * &w).scale(&(Q::one() / a2));
