@@ -499,16 +499,30 @@ fn f64_thm8(p: &[f64; 12]) -> bool {
 }
 
 /// Runs the requested suites (`kernel`, `tangent`, `natural`, `all`).
-pub fn run(suite: &str, inputs_path: &str) -> Result<Vec<Row>, Error> {
+/// The kernel benchmark inputs shipped with the crate (a copy of the team's
+/// shared inputs, `benches/data/kernel_inputs.json`), used when no
+/// `--inputs` path is given.
+pub const KERNEL_INPUTS: &str = include_str!("../../benches/data/kernel_inputs.json");
+
+/// Runs the suites (`kernel`, `tangent`, `natural` or `all`); the kernel
+/// suite reads `inputs_path`, or the shipped inputs when it is `None`.
+pub fn run(suite: &str, inputs_path: Option<&str>) -> Result<Vec<Row>, Error> {
     let mut rows = Vec::new();
     let all = suite == "all";
+    if !["all", "kernel", "tangent", "natural"].contains(&suite) {
+        return Err(Error::new(
+            ErrorKind::Input,
+            format!("unknown benchmark suite \"{suite}\" (kernel, tangent, natural or all)"),
+        ));
+    }
     if all || suite == "kernel" {
-        let text = std::fs::read_to_string(inputs_path).map_err(|e| {
-            Error::new(
-                ErrorKind::Io,
-                format!("cannot read {inputs_path}: {e} (use --inputs PATH)"),
-            )
-        })?;
+        let inputs_path = inputs_path.unwrap_or("benches/data/kernel_inputs.json (built in)");
+        let text = match inputs_path {
+            p if p.ends_with("(built in)") => KERNEL_INPUTS.to_string(),
+            p => std::fs::read_to_string(p).map_err(|e| {
+                Error::new(ErrorKind::Io, format!("cannot read {p}: {e} (use --inputs PATH)"))
+            })?,
+        };
         let v: Value = serde_json::from_str(&text)
             .map_err(|e| Error::new(ErrorKind::Json, format!("{inputs_path}: {e}")))?;
         kernel_suite(&v, &mut rows)?;

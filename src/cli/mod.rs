@@ -35,7 +35,7 @@ enum Command {
         /// The polynomial, e.g. "x^3 - 2x".
         #[arg(allow_hyphen_values = true)]
         expr: String,
-        /// JSON output (SPEC §5).
+        /// JSON output (the fields of docs/contract.md §5).
         #[arg(long)]
         json: bool,
     },
@@ -62,7 +62,7 @@ enum Command {
         /// The surface S, e.g. "(x-9)^2/9+y^2/4+z^2/16-1".
         #[arg(long, allow_hyphen_values = true)]
         surface: String,
-        /// JSON output (SPEC §3).
+        /// JSON output (the fields of docs/contract.md §3).
         #[arg(long)]
         json: bool,
     },
@@ -72,18 +72,20 @@ enum Command {
         a: String,
         /// Second quadric.
         b: String,
-        /// JSON output (SPEC §4).
+        /// JSON output (the fields of docs/contract.md §4).
         #[arg(long)]
         json: bool,
     },
-    /// Median timings (kernel on ../shared/bench/inputs.json, tangent, natural).
+    /// Median timings of the kernel (resultants, isolation, Sturm), the tangent
+    /// point method and the natural-quadric deciders.
     Bench {
         /// kernel, tangent, natural or all.
         #[arg(default_value = "all")]
         suite: String,
-        /// The shared benchmark inputs.
-        #[arg(long, default_value = "../shared/bench/inputs.json")]
-        inputs: String,
+        /// Kernel inputs (JSON; default: the copy shipped in the binary,
+        /// benches/data/kernel_inputs.json).
+        #[arg(long)]
+        inputs: Option<String>,
         /// JSON output.
         #[arg(long)]
         json: bool,
@@ -139,7 +141,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             inputs,
             json,
         } => {
-            let rows = bench::run(&suite, &inputs)?;
+            let rows = bench::run(&suite, inputs.as_deref())?;
             emit(json, || bench::to_json(&rows), || bench::to_markdown(&rows));
         }
         Command::Batch { file } => {

@@ -1,4 +1,4 @@
-//! The complete classification of two natural quadrics (SPEC §4): class,
+//! The complete classification of two natural quadrics (contract §4): class,
 //! counts and exact components, with the part-1 deciders where they apply.
 //!
 //! Order of decisions:

@@ -1,5 +1,5 @@
 //! The answer of the natural-quadric classification: class, counts and
-//! exact components (SPEC §4 output).
+//! exact components (contract §4 output).
 
 use super::deciders::AxesRelation;
 use super::exact::{EPoint, Exact};
@@ -21,7 +21,7 @@ pub enum ConicKind {
 }
 
 impl ConicKind {
-    /// SPEC spelling.
+    /// The output spelling.
     pub fn as_str(&self) -> &'static str {
         match self {
             ConicKind::Circle => "circle",
@@ -303,7 +303,7 @@ impl NaturalReport {
     }
 }
 
-/// The class implied by a list of components (SPEC §4 order).
+/// The class implied by a list of components (contract §4 order).
 pub(crate) fn class_of(components: &[Component]) -> Class {
     let has = |f: fn(&Component) -> bool| components.iter().any(f);
     if has(|c| matches!(c, Component::Curve { .. })) {

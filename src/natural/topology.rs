@@ -5,14 +5,14 @@
 //! * **Singular points** of X: the zeros of `Q1 = Q2 = 0, ∇Q1 × ∇Q2 = 0`
 //!   (a cone vertex on the other surface is one of them); every isolated
 //!   real point of X is singular.
-//! * **Common rulings** (skew axes, SPEC §6): a ruling of one surface lying
+//! * **Common rulings** (skew axes, docs/errata.md): a ruling of one surface lying
 //!   on the other, found by exact linear algebra and one square root; X is
 //!   then that line plus a twisted cubic (class `curve`, `lines` 1).
 //! * **One-dimensional real part** (sweep): for a generic linear form ℓ, the
 //!   values of ℓ at the critical points of ℓ on X (zeros of `Q1, Q2,
 //!   det(∇Q1, ∇Q2, ∇ℓ)`) cut the line into gaps; the real part of X has
 //!   dimension one iff a level `ℓ = q` in some gap meets X in a real point.
-//! * **Isolated or crossing** (tangent cone, SPEC §6 on §5.1): at a singular
+//! * **Isolated or crossing** (tangent cone, docs/errata.md on §5.1): at a singular
 //!   point with `∇Q1 = λ∇Q2 ≠ 0`, the quadratic form `Hess Q1 − λ Hess Q2`
 //!   on the common tangent plane is definite (isolated point) or indefinite
 //!   (two real branches cross); at a cone vertex V on the other surface, the

@@ -1,7 +1,7 @@
 //! Natural quadrics — spheres, circular cylinders, right circular (double)
 //! cones — with validated constructors, their rational implicit equations
 //! and 4×4 matrices, exact rigid motions, and the input syntaxes (JSON of
-//! SPEC §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
+//! contract §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
 
 use crate::error::{Error, ErrorKind};
 #[cfg(test)]
@@ -231,7 +231,7 @@ impl Natural {
         }
     }
 
-    /// The implicit equation (negative inside), SPEC §2.
+    /// The implicit equation (negative inside), contract §2.
     pub fn equation(&self) -> QMPoly {
         let p: [QMPoly; 3] = [MPoly::var(X), MPoly::var(Y), MPoly::var(Z)];
         let diff = |c: &V3| -> [QMPoly; 3] {
@@ -458,7 +458,7 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
     }
 }
 
-/// Parses the JSON object form of SPEC §2 (numbers as strings; JSON
+/// Parses the JSON object form of contract §2 (numbers as strings; JSON
 /// integers are accepted too, floats are refused as inexact).
 #[cfg(feature = "serde")]
 pub fn from_json(v: &Value) -> Result<Natural, Error> {

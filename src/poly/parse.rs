@@ -1,4 +1,4 @@
-//! The polynomial expression parser (SPEC §1).
+//! The polynomial expression parser (contract §1).
 //!
 //! Grammar (whitespace is free):
 //!

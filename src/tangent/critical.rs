@@ -9,7 +9,7 @@
 //!   rational univariate representation `f(t) = 0, x = X(t), y = Y(t),
 //!   z = Z(t), S = U(t)`.  A critical point is real iff its `t` is a real
 //!   root of `f` (t separates conjugate points), so the real critical values
-//!   are exactly `U(α)` over the real roots α of `f` — the trap of SPEC §3
+//!   are exactly `U(α)` over the real roots α of `f` — the trap of contract §3
 //!   cannot occur.
 //! * **Curves of critical points** ([`LevelSetAnalysis`], symmetric inputs):
 //!   the critical values are the roots of the generator of

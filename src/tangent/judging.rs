@@ -1,5 +1,5 @@
 //! The judging polynomial D(u) by resultant elimination with branch
-//! splitting (paper 004, SPEC §3) — the paper's own route, made sound.
+//! splitting (paper 004, contract §3) — the paper's own route, made sound.
 //!
 //! The Lagrange system `S_x − λE_x, S_y − λE_y, S_z − λE_z, E, S − u` is
 //! eliminated one variable at a time with resultants.  A plain chain of

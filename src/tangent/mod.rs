@@ -2,7 +2,7 @@
 //! algebraic surface S, touch it, or stay on one side — decided exactly,
 //! with a certificate.
 //!
-//! Key idea (SPEC §3): with ν = min and μ = max of S on E, E and S
+//! Key idea (contract §3): with ν = min and μ = max of S on E, E and S
 //! intersect iff ν ≤ 0 ≤ μ, touch iff ν = 0 or μ = 0.  ν and μ are real
 //! critical values of S on E, computed exactly as real algebraic numbers:
 //!

@@ -1,4 +1,4 @@
-//! JSON of `quadsect natural` (SPEC §4 JSON and the human summary).
+//! JSON of `quadsect natural` (contract §4 JSON and the human summary).
 
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
@@ -150,7 +150,7 @@ pub fn epoint_json(p: &EPoint) -> Value {
     Value::Array(p.iter().map(exact_json).collect())
 }
 
-/// The JSON form of SPEC §2 (numbers as exact strings).
+/// The JSON form of contract §2 (numbers as exact strings).
 pub fn natural_input_json(q: &Natural) -> Value {
     let v = |p: &V3| -> Value { json!(p.iter().map(fmt_q).collect::<Vec<_>>()) };
     match q {

@@ -1,4 +1,4 @@
-//! JSON of `quadsect tangent` (SPEC §3 JSON and the human summary).
+//! JSON of `quadsect tangent` (contract §3 JSON and the human summary).
 
 use crate::number::QSqrt;
 use crate::poly::ZPoly;
@@ -9,7 +9,7 @@ use crate::tangent::quadric::Branch;
 use crate::tangent::{Analysis, TangentReport, Undecided, WitnessPoint};
 use serde_json::{Value, json};
 
-/// A real algebraic number as SPEC's ALG object, its polynomial printed in
+/// A real algebraic number as the contract's ALG object, its polynomial printed in
 /// the variable `v`.
 pub fn alg_json_in(a: &RealAlg, v: usize) -> Value {
     let (lo, hi) = a.interval();

@@ -1,4 +1,4 @@
-//! Human-readable text of `quadsect natural` (SPEC §4 JSON and the human summary).
+//! Human-readable text of `quadsect natural` (contract §4 JSON and the human summary).
 
 use crate::natural::exact::{EPoint, epoint_text, normalize_direction};
 use crate::natural::result::{Class, Component, NaturalReport};

@@ -1,4 +1,4 @@
-//! Human-readable text of `quadsect tangent` (SPEC §3 JSON and the human summary).
+//! Human-readable text of `quadsect tangent` (contract §3 JSON and the human summary).
 
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{L, MPoly, U};
