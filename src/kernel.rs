@@ -138,6 +138,7 @@ pub fn roots_str(expr: &str) -> Result<RootsReport, Error> {
 }
 
 pub(crate) fn roots_of(p: &QMPoly) -> Result<RootsReport, Error> {
+    crate::budget::check_now();
     let vars = p.vars();
     if vars.len() > 1 {
         let names: Vec<&str> = vars.iter().map(|&v| VAR_NAMES[v]).collect();
@@ -231,6 +232,7 @@ pub fn resultant_str(f: &str, g: &str, var: &str) -> Result<ResultantReport, Err
 }
 
 pub(crate) fn resultant_of(f: &QMPoly, g: &QMPoly, var: Var) -> Result<ResultantReport, Error> {
+    crate::budget::check_now();
     let r = resultant_mpoly(f, g, var.index());
     let degree = r.total_degree().map(|d| d as i64).unwrap_or(-1);
     Ok(ResultantReport {

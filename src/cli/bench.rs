@@ -520,7 +520,10 @@ pub fn run(suite: &str, inputs_path: Option<&str>) -> Result<Vec<Row>, Error> {
         let text = match inputs_path {
             p if p.ends_with("(built in)") => KERNEL_INPUTS.to_string(),
             p => std::fs::read_to_string(p).map_err(|e| {
-                Error::new(ErrorKind::Io, format!("cannot read {p}: {e} (use --inputs PATH)"))
+                Error::new(
+                    ErrorKind::Io,
+                    format!("cannot read {p}: {e} (use --inputs PATH)"),
+                )
             })?,
         };
         let v: Value = serde_json::from_str(&text)

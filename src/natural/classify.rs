@@ -97,6 +97,7 @@ pub fn classify_with(
 }
 
 fn classify_unbudgeted(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
+    crate::budget::check_now();
     let axes = relation(a, b);
     let t8 = axes.as_ref().and_then(|r| thm8(a, b, r));
     let mut notes = Vec::new();

@@ -435,6 +435,7 @@ pub(crate) fn decide_poly(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<Tangen
 }
 
 fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Error> {
+    crate::budget::check_now();
     if surface.vars().iter().any(|&v| v > 2) {
         return Err(Error::new(
             ErrorKind::Input,
