@@ -1,6 +1,6 @@
 //! The kernel jobs: real roots of a univariate polynomial and resultants,
 //! as library functions (exact results, no formatting; see
-//! [`crate::report`] for the JSON and text).
+//! the report layer for the JSON and the text).
 
 use crate::budget::Budget;
 use crate::elim::resultant_mpoly;
@@ -101,13 +101,6 @@ impl RootsReport {
     }
 }
 
-impl std::fmt::Display for RootsReport {
-    /// The human summary (as `quadsect roots` prints it).
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::report::roots_human(self))
-    }
-}
-
 /// Analyses the real roots of a univariate polynomial exactly (square-free
 /// factorisation for the multiplicities, Descartes/VCA isolation; for degree
 /// n and τ-bit coefficients O(n⁴τ²) bit operations in the worst case, far
@@ -186,13 +179,6 @@ impl ResultantReport {
     /// Its total degree (`None` for the zero polynomial).
     pub fn degree(&self) -> Option<u32> {
         u32::try_from(self.degree).ok()
-    }
-}
-
-impl std::fmt::Display for ResultantReport {
-    /// The human form (as `quadsect resultant` prints it).
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::report::resultant_human(self))
     }
 }
 

@@ -143,13 +143,6 @@ impl std::fmt::Display for Class {
     }
 }
 
-impl std::fmt::Display for NaturalReport {
-    /// The human summary (as `quadsect natural` prints it).
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::report::natural_human(self))
-    }
-}
-
 impl Class {
     /// `same-surface`, `conics`, `conic-and-line`, `lines`, `points`,
     /// `empty` or `curve`.

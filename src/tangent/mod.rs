@@ -370,13 +370,6 @@ impl TangentReport {
     }
 }
 
-impl fmt::Display for TangentReport {
-    /// The human summary (as `quadsect tangent` prints it).
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&crate::report::tangent_human(self))
-    }
-}
-
 /// Decides E against S given in the input syntax (a convenience for
 /// [`Ellipsoid::from_str`](std::str::FromStr) and [`decide`]).
 ///

@@ -156,3 +156,10 @@ pub fn natural_human(r: &NaturalReport) -> String {
     }
     s
 }
+
+impl std::fmt::Display for NaturalReport {
+    /// The human summary (as `quadsect natural` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&natural_human(self))
+    }
+}

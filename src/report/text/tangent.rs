@@ -158,3 +158,10 @@ pub fn tangent_human(r: &TangentReport) -> String {
     }
     s
 }
+
+impl std::fmt::Display for TangentReport {
+    /// The human summary (as `quadsect tangent` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&tangent_human(self))
+    }
+}
