@@ -60,6 +60,9 @@ enum Command {
         /// JSON output (SPEC §3).
         #[arg(long)]
         json: bool,
+        /// Read every number literal as the nearest double (round to nearest, ties to even).
+        #[arg(long)]
+        float: bool,
     },
     /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
     Natural {
@@ -70,6 +73,15 @@ enum Command {
         /// JSON output (SPEC §4).
         #[arg(long)]
         json: bool,
+        /// Compute the exact components (the default).
+        #[arg(long, overrides_with = "no_components")]
+        components: bool,
+        /// Class and counts only, by the fast route (no components).
+        #[arg(long, overrides_with = "components")]
+        no_components: bool,
+        /// Read every number literal as the nearest double (round to nearest, ties to even).
+        #[arg(long)]
+        float: bool,
     },
     /// Median timings (kernel on ../shared/bench/inputs.json, tangent, natural).
     Bench {
@@ -79,6 +91,10 @@ enum Command {
         /// The shared benchmark inputs.
         #[arg(long, default_value = "../shared/bench/inputs.json")]
         inputs: String,
+        /// The natural-quadric pair file (default: benches/data/natural_pairs.json
+        /// of the crate the binary was built from, else of the current directory).
+        #[arg(long)]
+        pairs: Option<String>,
         /// JSON output.
         #[arg(long)]
         json: bool,
@@ -98,6 +114,14 @@ fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() 
     } else {
         write!(out, "{}", human())
     };
+}
+
+fn number_mode(float: bool) -> quadsect::number::NumberMode {
+    if float {
+        quadsect::number::NumberMode::Float
+    } else {
+        quadsect::number::NumberMode::Exact
+    }
 }
 
 fn run(cli: Cli) -> Result<(), Error> {
@@ -130,28 +154,58 @@ fn run(cli: Cli) -> Result<(), Error> {
             ellipsoid,
             surface,
             json,
+            float,
         } => {
-            let r = quadsect::tangent::decide_str(&ellipsoid, &surface)?;
+            let r = quadsect::tangent::decide_str_in(&ellipsoid, &surface, number_mode(float))?;
             emit(
                 json,
                 || quadsect::report::tangent_json(&r),
                 || quadsect::report::tangent_human(&r),
             );
         }
-        Command::Natural { a, b, json } => {
-            let r = quadsect::natural::classify_str(&a, &b)?;
-            emit(
-                json,
-                || quadsect::report::natural_json(&r),
-                || quadsect::report::natural_human(&r),
-            );
+        Command::Natural {
+            a,
+            b,
+            json,
+            components: _,
+            no_components,
+            float,
+        } => {
+            let mode = number_mode(float);
+            let qa = quadsect::natural::types::parse_natural_in(&a, mode)
+                .map_err(|e| e.context("in A"))?;
+            let qb = quadsect::natural::types::parse_natural_in(&b, mode)
+                .map_err(|e| e.context("in B"))?;
+            if no_components {
+                let opts = quadsect::natural::ClassifyOptions { components: false };
+                let r = quadsect::natural::classify_with(&qa, &qb, &opts)?;
+                emit(
+                    json,
+                    || quadsect::report::natural_counts_json(&r),
+                    || quadsect::report::natural_counts_human(&r),
+                );
+            } else {
+                let r = quadsect::natural::classify(&qa, &qb)?;
+                emit(
+                    json,
+                    || quadsect::report::natural_json(&r),
+                    || quadsect::report::natural_human(&r),
+                );
+            }
         }
         Command::Bench {
             suite,
             inputs,
+            pairs,
             json,
         } => {
-            let rows = quadsect::bench::run(&suite, &inputs)?;
+            let pairs = pairs.or_else(quadsect::bench::default_pairs_path);
+            if pairs.is_none() && (suite == "natural" || suite == "all") {
+                eprintln!(
+                    "note: no pair file (benches/data/natural_pairs.json): the natural-pair rows are left out"
+                );
+            }
+            let rows = quadsect::bench::run_with(&suite, &inputs, pairs.as_deref())?;
             emit(
                 json,
                 || quadsect::bench::to_json(&rows),

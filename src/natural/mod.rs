@@ -6,7 +6,9 @@ pub mod coaxial;
 pub mod deciders;
 pub mod exact;
 pub mod examples;
+pub mod fast;
 pub mod planar;
+pub mod prepared;
 pub mod result;
 pub mod tangency;
 pub mod topology;
@@ -14,4 +16,6 @@ pub mod types;
 pub mod vec3;
 
 pub use classify::{classify, classify_str};
+pub use fast::{Classification, ClassifyOptions, Counts, classify_counts, classify_with};
+pub use prepared::Prepared;
 pub use types::{Cone, Cylinder, Natural, Sphere, cayley_rotation, parse_natural};

@@ -9,12 +9,17 @@
 //! Floats appear only in printed approximations, and those are computed from
 //! the exact value by integer arithmetic ([`approx_decimal`]).
 
+pub(crate) mod filter;
 pub mod fixed;
+mod float;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
 
-pub use parse::{NumberError, parse_rational, scan_number};
+pub use float::{double_value, is_dyadic, nearest_double, round_to_double};
+pub use parse::{
+    NumberError, NumberMode, parse_rational, parse_rational_with, scan_number, scan_number_with,
+};
 pub use qsqrt::QSqrt;
 
 use num_bigint::{BigInt, Sign};

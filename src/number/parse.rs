@@ -1,5 +1,27 @@
-//! Exact parsing of numbers: integers, rationals, decimals and scientific
-//! decimals, all to exact rationals (never through `f64`).
+//! Exact parsing of numbers: integers, rationals, decimals, scientific
+//! decimals and hexadecimal floats, all to exact rationals (never through
+//! `f64`).
+//!
+//! Literal grammar (one literal, no sign, no whitespace inside):
+//!
+//! ```text
+//! decimal := D+ ('.' D+)? exp? | '.' D+ exp?        exp  := ('e'|'E') ('+'|'-')? D+
+//! hex     := '0' ('x'|'X') hexdigits bexp?          bexp := ('p'|'P') ('+'|'-')? D+
+//! hexdigits := H+ ('.' H*)? | '.' H+                (H: 0-9 a-f A-F; D: 0-9)
+//! ```
+//!
+//! A hexadecimal literal (C99 / IEEE-754 `%a` syntax, e.g. `0x1.6a09e667f3bcdp-1`)
+//! is `hexdigits × 2^exponent`, exactly; the binary exponent is written in
+//! decimal and may be omitted (`0x10` is 16).  It starts at `0x` only when a
+//! hex digit or `.` follows, so `0x` alone stays "0 times x" in polynomials,
+//! and `0x1p3x` is `8·x`.  An `e` after decimal digits is an exponent only
+//! when digits follow it (`2e` is 2 followed by `e`); inside a hex literal
+//! `e` is a digit.
+//!
+//! In [`NumberMode::Float`] every literal is replaced by its nearest double
+//! (round to nearest, ties to even): the way a program reading the same text
+//! into `f64` sees it.  Each literal is rounded on its own, so `1/3` stays
+//! the exact quotient of the doubles 1 and 3.
 
 use super::Q;
 use num_bigint::BigInt;
@@ -11,6 +33,20 @@ use std::fmt;
 pub const MAX_DIGITS: usize = 100_000;
 /// Largest decimal exponent accepted in scientific notation (`1e100000`).
 pub const MAX_EXPONENT: i64 = 100_000;
+/// Largest bit size of the numerator or denominator of a hexadecimal
+/// literal (about 99 000 decimal digits, so it prints within [`MAX_DIGITS`]).
+pub const MAX_HEX_BITS: i64 = 330_000;
+
+/// How number literals are read.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum NumberMode {
+    /// Every literal is the exact number it denotes (the default).
+    #[default]
+    Exact,
+    /// Every literal is replaced by the double nearest to it (ties to
+    /// even), as a program reading the text into `f64` would see it.
+    Float,
+}
 
 /// A number that could not be read: what went wrong and at which column
 /// (1-based, counted in characters of the input).
@@ -46,13 +82,140 @@ fn digits_to_int(d: &[u8]) -> BigInt {
     BigInt::from_str_radix(s, 10).unwrap_or_default()
 }
 
-/// Reads one unsigned number literal starting at byte `pos` of `s`:
-/// `digits [ . digits ] [ (e|E) [+|-] digits ]` or `. digits …`.
+/// Reads one unsigned number literal starting at byte `pos` of `s`
+/// (grammar in the module docs: decimal, scientific or hexadecimal).
 /// Returns the exact value and the byte position just after the literal.
 ///
 /// An `e` is taken as an exponent only when digits follow it (with an
 /// optional sign), so `2e` is the number 2 followed by `e`.
 pub fn scan_number(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
+    scan_number_with(s, pos, NumberMode::Exact)
+}
+
+/// [`scan_number`] in the given [`NumberMode`]: in float mode the literal's
+/// value is rounded to the nearest double (an error if it is out of the
+/// double range).
+pub fn scan_number_with(s: &[u8], pos: usize, mode: NumberMode) -> Result<(Q, usize), NumberError> {
+    let (v, end) = if starts_hex(s, pos) {
+        scan_hex(s, pos)?
+    } else {
+        scan_decimal(s, pos)?
+    };
+    match mode {
+        NumberMode::Exact => Ok((v, end)),
+        NumberMode::Float => match super::float::round_to_double(&v) {
+            Some(d) => Ok((d, end)),
+            None => Err(err(
+                "number is out of the double range (magnitude 2^1024 or more)",
+                pos,
+            )),
+        },
+    }
+}
+
+/// `0x` or `0X` followed by a hex digit or `.`.
+fn starts_hex(s: &[u8], pos: usize) -> bool {
+    s.len() > pos + 2
+        && s[pos] == b'0'
+        && (s[pos + 1] == b'x' || s[pos + 1] == b'X')
+        && (s[pos + 2].is_ascii_hexdigit() || s[pos + 2] == b'.')
+}
+
+/// A hexadecimal literal at `pos` (which starts with `0x` and a hex digit
+/// or `.`): exactly `hexdigits × 2^exponent`.
+fn scan_hex(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
+    let mut i = pos + 2;
+    let int_start = i;
+    while i < s.len() && s[i].is_ascii_hexdigit() {
+        i += 1;
+    }
+    let int_part = &s[int_start..i];
+    let mut frac_part: &[u8] = &[];
+    if i < s.len() && s[i] == b'.' {
+        let fs = i + 1;
+        let mut j = fs;
+        while j < s.len() && s[j].is_ascii_hexdigit() {
+            j += 1;
+        }
+        frac_part = &s[fs..j];
+        if int_part.is_empty() && frac_part.is_empty() {
+            return Err(err("a hexadecimal number needs at least one hex digit", i));
+        }
+        i = j;
+    }
+    let ndig = (int_part.len() + frac_part.len()) as i64;
+    let mut exp: i64 = 0;
+    if i < s.len() && (s[i] == b'p' || s[i] == b'P') {
+        let mut j = i + 1;
+        let mut neg = false;
+        if j < s.len() && (s[j] == b'+' || s[j] == b'-') {
+            neg = s[j] == b'-';
+            j += 1;
+        }
+        let es = j;
+        while j < s.len() && s[j].is_ascii_digit() {
+            j += 1;
+        }
+        if j == es {
+            return Err(err(
+                "the binary exponent 'p' of a hexadecimal number must be followed by decimal digits",
+                j,
+            ));
+        }
+        let ed = &s[es..j];
+        let v: i64 = if ed.len() > 9 {
+            i64::MAX
+        } else {
+            std::str::from_utf8(ed)
+                .ok()
+                .and_then(|t| t.parse().ok())
+                .unwrap_or(i64::MAX)
+        };
+        if v > MAX_HEX_BITS {
+            return Err(err(
+                format!("binary exponent too large (limit {MAX_HEX_BITS})"),
+                es,
+            ));
+        }
+        exp = if neg { -v } else { v };
+        i = j;
+    }
+    if i < s.len() && (s[i] == b'.' || s[i].is_ascii_alphanumeric() && s[i] != b'x') {
+        // e.g. "0x1.8.5", "0x1g": a hex literal cannot run into more
+        // digits or letters (a variable after it must be x, y, z or u:
+        // those are not hex digits, and x is allowed for "0x1p3x")
+        if !matches!(s[i], b'y' | b'z' | b'u') {
+            let c = s[i] as char;
+            return Err(err(format!("unexpected '{c}' in a hexadecimal number"), i));
+        }
+    }
+    // value = digits · 2^(exp − 4·frac_len); the exact value must print
+    // within the digit limit
+    let e_total = exp - 4 * frac_part.len() as i64;
+    if 4 * ndig + e_total.max(0) > MAX_HEX_BITS || -e_total > MAX_HEX_BITS {
+        return Err(err(
+            format!("hexadecimal number has more than {MAX_HEX_BITS} bits (size limit)"),
+            pos,
+        ));
+    }
+    let mut all = Vec::with_capacity(ndig as usize);
+    all.extend_from_slice(int_part);
+    all.extend_from_slice(frac_part);
+    let mantissa = if all.is_empty() {
+        BigInt::zero()
+    } else {
+        BigInt::from_str_radix(std::str::from_utf8(&all).unwrap_or("0"), 16).unwrap_or_default()
+    };
+    let value = if e_total >= 0 {
+        Q::from_integer(mantissa << (e_total as usize))
+    } else {
+        super::dyadic(mantissa, (-e_total) as usize)
+    };
+    Ok((value, i))
+}
+
+/// A decimal literal at `pos`.
+fn scan_decimal(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
     let mut i = pos;
     let start_int = i;
     while i < s.len() && s[i].is_ascii_digit() {
@@ -159,6 +322,21 @@ pub fn scan_number(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
 /// assert!(parse_rational("1/0").is_err());
 /// ```
 pub fn parse_rational(text: &str) -> Result<Q, NumberError> {
+    parse_rational_with(text, NumberMode::Exact)
+}
+
+/// [`parse_rational`] in the given [`NumberMode`] (in float mode each
+/// literal — numerator and denominator — is first rounded to its nearest
+/// double).
+///
+/// ```
+/// use quadsect::number::{NumberMode, parse_rational_with, double_value};
+/// let x = parse_rational_with("0.1", NumberMode::Float).unwrap();
+/// assert_eq!(x, double_value(0.1).unwrap());
+/// let h = parse_rational_with("-0x1.8p-3", NumberMode::Exact).unwrap();
+/// assert_eq!(h, quadsect::number::q(-3, 16));
+/// ```
+pub fn parse_rational_with(text: &str, mode: NumberMode) -> Result<Q, NumberError> {
     let s = text.as_bytes();
     let mut i = 0;
     while i < s.len() && s[i].is_ascii_whitespace() {
@@ -178,7 +356,7 @@ pub fn parse_rational(text: &str) -> Result<Q, NumberError> {
             i,
         ));
     }
-    let (mut v, mut j) = scan_number(s, i)?;
+    let (mut v, mut j) = scan_number_with(s, i, mode)?;
     while j < s.len() && s[j].is_ascii_whitespace() {
         j += 1;
     }
@@ -190,7 +368,7 @@ pub fn parse_rational(text: &str) -> Result<Q, NumberError> {
         if k < s.len() && !(s[k].is_ascii_digit() || s[k] == b'.') {
             return Err(err("expected a denominator after '/'", k));
         }
-        let (d, k2) = scan_number(s, k)?;
+        let (d, k2) = scan_number_with(s, k, mode)?;
         if d.is_zero() {
             return Err(err("division by zero", k));
         }

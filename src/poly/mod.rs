@@ -15,7 +15,7 @@ pub mod upoly;
 pub mod zpoly;
 
 pub use mpoly::{MPoly, QMPoly, ZMPoly};
-pub use parse::{Limits, ParseError, parse_poly, parse_poly_with};
+pub use parse::{Limits, ParseError, parse_poly, parse_poly_in, parse_poly_with};
 pub use ring::Ring;
 pub use upoly::UPoly;
 pub use zpoly::{QPoly, ZPoly};

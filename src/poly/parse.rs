@@ -17,7 +17,7 @@
 //! keep hostile inputs from hanging: see [`Limits`].
 
 use super::mpoly::{MPoly, NVARS, QMPoly};
-use crate::number::{Q, scan_number};
+use crate::number::{NumberMode, Q, scan_number_with};
 use num_traits::{One, Zero};
 use std::fmt;
 
@@ -86,6 +86,20 @@ pub fn parse_poly(text: &str) -> Result<QMPoly, ParseError> {
 
 /// Parses a polynomial expression with explicit limits.
 pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError> {
+    parse_poly_in(text, limits, NumberMode::Exact)
+}
+
+/// Parses a polynomial expression with explicit limits, reading every
+/// number literal in the given [`NumberMode`] (float mode: each literal
+/// becomes its nearest double).
+///
+/// ```
+/// use quadsect::poly::{Limits, parse_poly_in};
+/// use quadsect::number::NumberMode;
+/// let p = parse_poly_in("0x1p3x + 0.5", &Limits::default(), NumberMode::Float).unwrap();
+/// assert_eq!(p.to_string_canonical(), "8*x + 1/2");
+/// ```
+pub fn parse_poly_in(text: &str, limits: &Limits, mode: NumberMode) -> Result<QMPoly, ParseError> {
     if text.len() > limits.max_input_bytes {
         return Err(ParseError {
             message: format!(
@@ -102,6 +116,7 @@ pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError
         pos: 0,
         depth: 0,
         limits,
+        mode,
     };
     p.skip_ws();
     if p.pos == p.s.len() {
@@ -123,6 +138,7 @@ struct Parser<'a> {
     pos: usize,
     depth: usize,
     limits: &'a Limits,
+    mode: NumberMode,
 }
 
 fn variable(c: u8) -> Option<usize> {
@@ -422,10 +438,11 @@ impl Parser<'_> {
             return Err(self.err_at("unexpected end of expression", self.pos));
         };
         if c.is_ascii_digit() || c == b'.' {
-            let (v, end) = scan_number(self.s, self.pos).map_err(|e| ParseError {
-                message: e.message,
-                column: self.err_at("", e.column - 1).column,
-            })?;
+            let (v, end) =
+                scan_number_with(self.s, self.pos, self.mode).map_err(|e| ParseError {
+                    message: e.message,
+                    column: self.err_at("", e.column - 1).column,
+                })?;
             self.pos = end;
             return Ok(MPoly::constant(v));
         }

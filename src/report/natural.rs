@@ -202,6 +202,24 @@ fn component_human(c: &Component) -> String {
     }
 }
 
+/// The `axes`, `thm8` and `method` lines of the human output.
+pub(super) fn axes_thm8_method(
+    axes: Option<&crate::natural::deciders::AxesRelation>,
+    thm8: Option<bool>,
+    method: &str,
+) -> String {
+    format!(
+        "axes      {}\nthm8      {}\nmethod    {}\n",
+        axes.map(|a| a.as_str()).unwrap_or("— (a sphere)"),
+        match thm8 {
+            Some(true) => "true (common inscribed sphere / equal angles)",
+            Some(false) => "false",
+            None => "— (does not apply)",
+        },
+        method
+    )
+}
+
 /// `quadsect natural` for people.
 pub fn natural_human(r: &NaturalReport) -> String {
     let mut s = format!(
@@ -211,19 +229,7 @@ pub fn natural_human(r: &NaturalReport) -> String {
         r.lines(),
         r.points()
     );
-    s.push_str(&format!(
-        "axes      {}\nthm8      {}\nmethod    {}\n",
-        r.axes
-            .as_ref()
-            .map(|a| a.as_str())
-            .unwrap_or("— (a sphere)"),
-        match r.thm8 {
-            Some(true) => "true (common inscribed sphere / equal angles)",
-            Some(false) => "false",
-            None => "— (does not apply)",
-        },
-        r.method
-    ));
+    s.push_str(&axes_thm8_method(r.axes.as_ref(), r.thm8, r.method));
     if let Some(d) = &r.deciders {
         s.push_str(&format!(
             "Lemma 8.1 F(s,t) = {}, discriminant {}; pencil member of rank ≤ 2: {}\n",

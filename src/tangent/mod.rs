@@ -34,7 +34,7 @@ pub use ellipsoid::{Ellipsoid, QuadricForm};
 pub use witness::WitnessPoint;
 
 use crate::error::{Error, ErrorKind};
-use crate::poly::{QMPoly, ZPoly, parse_poly};
+use crate::poly::{QMPoly, ZPoly};
 use crate::roots::RealAlg;
 use std::cmp::Ordering;
 
@@ -159,8 +159,19 @@ pub struct TangentReport {
 /// assert_eq!(quadsect::number::fmt_q(r.min.unwrap().as_rational().unwrap()), "7/9");
 /// ```
 pub fn decide_str(ellipsoid: &str, surface: &str) -> Result<TangentReport, Error> {
-    let e = parse_poly(ellipsoid).map_err(|x| Error::from(x).context("in --ellipsoid"))?;
-    let s = parse_poly(surface).map_err(|x| Error::from(x).context("in --surface"))?;
+    decide_str_in(ellipsoid, surface, crate::number::NumberMode::Exact)
+}
+
+/// [`decide_str`] with the number literals read in the given mode (float
+/// mode: each literal becomes its nearest double).
+pub fn decide_str_in(
+    ellipsoid: &str,
+    surface: &str,
+    mode: crate::number::NumberMode,
+) -> Result<TangentReport, Error> {
+    let parse = |t: &str| crate::poly::parse_poly_in(t, &crate::poly::Limits::default(), mode);
+    let e = parse(ellipsoid).map_err(|x| Error::from(x).context("in --ellipsoid"))?;
+    let s = parse(surface).map_err(|x| Error::from(x).context("in --surface"))?;
     decide(&e, &s)
 }
 

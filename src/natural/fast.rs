@@ -1,0 +1,1207 @@
+//! The fast exact route to the class and the counts (conics, lines,
+//! points) of two natural quadrics, without constructing components
+//! (docs/maths.md, "The fast route").
+//!
+//! The decisions are signs of integer polynomials in the quadrics'
+//! parameters (denominators cleared once, [`super::prepared`]), written once
+//! against [`SignRing`] and run in three tiers: an `f64` filter with a
+//! proven error bound, checked `i128`, big integers.  The branching follows
+//! [`super::classify::classify`] exactly (same surface; two spheres; a
+//! sphere centred on an axis; a common axis; coplanar axes whose projection
+//! conic factors; everything else), and so do the planar counts; the
+//! non-planar cases, where the present route computes the curve's
+//! topology, are decided from the pencil `F(λ) = det(A − λB)`:
+//!
+//! * **four distinct roots** (a nonsingular quartic): empty iff a member of
+//!   the pencil is definite (Finsler–Calabi), else a curve without acnodes;
+//! * **exactly one multiple root λ₀** (rational) with `A − λ₀B` of rank 3:
+//!   its vertex p is the only singular point; the tangent cone at p, the
+//!   form of the member on `R⁴/p` and whether p is affine give the class
+//!   and the acnode count (a nodal or cuspidal quartic, or the point alone);
+//! * the same with rank 2 and complex-conjugate planes: the real points are
+//!   those of the real line where the planes meet (isolated tangency
+//!   points);
+//! * anything else (several multiple roots, a line in the intersection,
+//!   real plane pairs, `F ≡ 0`): the common rulings are looked for, and if
+//!   none exists the present route answers.  Nothing is guessed.
+
+use super::classify::classify;
+use super::deciders::AxesRelation;
+use super::prepared::{
+    Axes, FromPrep, Kind, Prep, Prepared, QIn, axes_of, axes_relation_of, point_difference,
+};
+use super::result::{Class, NaturalReport};
+use super::topology::{common_rulings, same_line};
+use super::types::Natural;
+use crate::error::Error;
+use crate::number::filter::{Ck, Fe, SignRing, all_zero, cross, dot, tiered};
+use num_bigint::BigInt;
+
+/// Class and counts of an intersection (SPEC §4 conventions: real affine
+/// components, a double line once, acnodes of a curve in `points`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Counts {
+    /// The class.
+    pub class: Class,
+    /// Real affine conics.
+    pub conics: usize,
+    /// Real affine lines.
+    pub lines: usize,
+    /// Isolated real points (acnodes of a curve included).
+    pub points: usize,
+}
+
+impl Counts {
+    fn new(class: Class, conics: usize, lines: usize, points: usize) -> Counts {
+        Counts {
+            class,
+            conics,
+            lines,
+            points,
+        }
+    }
+
+    /// The class of components counted this way (the order of
+    /// [`super::result::class_of`]; no curve).
+    fn of(conics: usize, lines: usize, points: usize) -> Counts {
+        let class = if conics > 0 && lines > 0 {
+            Class::ConicAndLine
+        } else if conics > 0 {
+            Class::Conics
+        } else if lines > 0 {
+            Class::Lines
+        } else if points > 0 {
+            Class::Points
+        } else {
+            Class::Empty
+        };
+        Counts::new(class, conics, lines, points)
+    }
+
+    fn empty() -> Counts {
+        Counts::new(Class::Empty, 0, 0, 0)
+    }
+
+    fn curve(points: usize) -> Counts {
+        Counts::new(Class::Curve, 0, 0, points)
+    }
+
+    /// The counts of a full report.
+    pub fn of_report(r: &NaturalReport) -> Counts {
+        Counts::new(r.class, r.conics(), r.lines(), r.points())
+    }
+}
+
+/// What the integer program concluded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Outcome {
+    /// Decided.
+    Counts(Counts, &'static str),
+    /// The intersection may contain a line: look for common rulings.
+    Rulings,
+    /// Not a case of the fast route.
+    Fallback(&'static str),
+}
+
+/// A 4×4 symmetric integer matrix.
+type M4<R> = [[R; 4]; 4];
+
+/// The matrix of a quadric (a positive multiple of that of its SPEC §2
+/// equation): `[[q²K, −qKc], [−q(Kc)ᵀ, cᵀKc − q²ρ]]` with the quadratic
+/// block K and the constant ρ of the scaled equation
+/// (sphere `pd·I`, `pn`; cylinder `pd(|a|²I − aaᵀ)`, `pn|a|²`; cone
+/// `pd|a|²I − (pn + pd)aaᵀ`, 0).
+fn matrix<R: SignRing>(x: &QIn<R>) -> M4<R> {
+    let a2 = dot(&x.a, &x.a);
+    let (diag, outer, rho) = match x.kind {
+        Kind::Sphere => (x.pd.clone(), R::int(0), x.pn.clone()),
+        Kind::Cylinder => (x.pd.mul(&a2), x.pd.clone(), x.pn.mul(&a2)),
+        Kind::Cone => (x.pd.mul(&a2), x.pn.add(&x.pd), R::int(0)),
+    };
+    let k: [[R; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let o = outer.mul(&x.a[i].mul(&x.a[j]));
+            if i == j { diag.sub(&o) } else { o.neg() }
+        })
+    });
+    let kc: [R; 3] = std::array::from_fn(|i| dot(&k[i], &x.c));
+    let q2 = x.q.mul(&x.q);
+    let mut m: M4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::int(0)));
+    for i in 0..3 {
+        for j in 0..3 {
+            m[i][j] = q2.mul(&k[i][j]);
+        }
+        m[i][3] = x.q.mul(&kc[i]).neg();
+        m[3][i] = m[i][3].clone();
+    }
+    m[3][3] = dot(&x.c, &kc).sub(&q2.mul(&rho));
+    m
+}
+
+fn det2<R: SignRing>(a: &R, b: &R, c: &R, d: &R) -> R {
+    a.mul(d).sub(&b.mul(c))
+}
+
+fn det3<R: SignRing>(m: &[[R; 3]; 3]) -> R {
+    m[0][0]
+        .mul(&det2(&m[1][1], &m[1][2], &m[2][1], &m[2][2]))
+        .sub(&m[0][1].mul(&det2(&m[1][0], &m[1][2], &m[2][0], &m[2][2])))
+        .add(&m[0][2].mul(&det2(&m[1][0], &m[1][1], &m[2][0], &m[2][1])))
+}
+
+/// The 3×3 minor of a 4×4 matrix without row `r` and column `c`.
+fn minor3<R: SignRing>(m: &M4<R>, r: usize, c: usize) -> R {
+    let rows: Vec<usize> = (0..4).filter(|&i| i != r).collect();
+    let cols: Vec<usize> = (0..4).filter(|&j| j != c).collect();
+    let s: [[R; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| m[rows[i]][cols[j]].clone()));
+    det3(&s)
+}
+
+/// `uᵀ M v`.
+fn form<R: SignRing>(m: &M4<R>, u: &[R; 4], v: &[R; 4]) -> R {
+    let mv: [R; 4] = std::array::from_fn(|i| dot(&m[i], v));
+    dot(u, &mv)
+}
+
+/// `d·A − n·B`.
+fn member<R: SignRing>(a: &M4<R>, b: &M4<R>, n: &R, d: &R) -> M4<R> {
+    std::array::from_fn(|i| std::array::from_fn(|j| d.mul(&a[i][j]).sub(&n.mul(&b[i][j]))))
+}
+
+/// Laplace expansion of a 4×4 determinant along rows {0, 1}: the sign and
+/// the column pairs.
+const LAPLACE: [([usize; 2], [usize; 2], bool); 6] = [
+    ([0, 1], [2, 3], true),
+    ([0, 2], [1, 3], false),
+    ([0, 3], [1, 2], true),
+    ([1, 2], [0, 3], true),
+    ([1, 3], [0, 2], false),
+    ([2, 3], [0, 1], true),
+];
+
+/// The coefficients `f₀..f₄` of `F(λ) = det(A − λB)`.
+fn pencil_coefficients<R: SignRing>(a: &M4<R>, b: &M4<R>) -> [R; 5] {
+    // entries as linear polynomials (a, −b)
+    let e = |i: usize, j: usize| (&a[i][j], b[i][j].neg());
+    let minor = |r: [usize; 2], c: [usize; 2]| -> [R; 3] {
+        let (p0, p1) = e(r[0], c[0]);
+        let (q0, q1) = e(r[1], c[1]);
+        let (s0, s1) = e(r[0], c[1]);
+        let (t0, t1) = e(r[1], c[0]);
+        [
+            p0.mul(q0).sub(&s0.mul(t0)),
+            p0.mul(&q1)
+                .add(&p1.mul(q0))
+                .sub(&s0.mul(&t1))
+                .sub(&s1.mul(t0)),
+            p1.mul(&q1).sub(&s1.mul(&t1)),
+        ]
+    };
+    let mut f: [R; 5] = std::array::from_fn(|_| R::int(0));
+    for (top, bottom, plus) in LAPLACE {
+        let u = minor([0, 1], top);
+        let v = minor([2, 3], bottom);
+        for i in 0..3 {
+            for j in 0..3 {
+                let t = u[i].mul(&v[j]);
+                f[i + j] = if plus {
+                    f[i + j].add(&t)
+                } else {
+                    f[i + j].sub(&t)
+                };
+            }
+        }
+    }
+    f
+}
+
+/// `det M` of a numeric 4×4 matrix (Laplace along rows {0, 1}).
+fn det4<R: SignRing>(m: &M4<R>) -> R {
+    let mut acc = R::int(0);
+    for (top, bottom, plus) in LAPLACE {
+        let u = det2(&m[0][top[0]], &m[0][top[1]], &m[1][top[0]], &m[1][top[1]]);
+        let v = det2(
+            &m[2][bottom[0]],
+            &m[2][bottom[1]],
+            &m[3][bottom[0]],
+            &m[3][bottom[1]],
+        );
+        let t = u.mul(&v);
+        acc = if plus { acc.add(&t) } else { acc.sub(&t) };
+    }
+    acc
+}
+
+/// Is the symmetric matrix definite?  Sylvester's criterion on the leading
+/// principal minors (definite iff `D₁, D₂, …` are all positive, or
+/// alternate starting negative; a zero minor rules definiteness out).
+/// Also returns the sign of the last minor.
+fn definite4<R: SignRing>(m: &M4<R>) -> Option<(bool, i32)> {
+    let d4 = det4(m).sign()?;
+    let s1 = m[0][0].sign()?;
+    if s1 == 0 || d4 <= 0 {
+        return Some((false, d4));
+    }
+    let d2 = det2(&m[0][0], &m[0][1], &m[1][0], &m[1][1]).sign()?;
+    if d2 <= 0 {
+        return Some((false, d4));
+    }
+    let top: [[R; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()));
+    let d3 = det3(&top).sign()?;
+    Some((d3 == s1, d4))
+}
+
+fn definite3<R: SignRing>(m: &[[R; 3]; 3]) -> Option<bool> {
+    let s1 = m[0][0].sign()?;
+    if s1 == 0 || det2(&m[0][0], &m[0][1], &m[1][0], &m[1][1]).sign()? <= 0 {
+        return Some(false);
+    }
+    Some(det3(m).sign()? == s1)
+}
+
+/// A multiple root of F on the projective line.
+#[derive(Clone, Debug)]
+enum Root<R> {
+    Zero,
+    Infinity,
+    /// `n/d`.
+    Ratio(R, R),
+}
+
+/// The non-planar cases, from the pencil of `A` and `B` (`sphere_first`:
+/// A is a sphere and B axial).
+fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<Outcome> {
+    let f = pencil_coefficients(a, b);
+    let mut nz = [false; 5];
+    for k in 0..5 {
+        nz[k] = f[k].sign()? != 0;
+    }
+    let Some(lo) = (0..5).find(|&k| nz[k]) else {
+        return Some(Outcome::Fallback("singular pencil (F ≡ 0)"));
+    };
+    let hi = (0..5).rev().find(|&k| nz[k]).unwrap_or(lo);
+    let core: Vec<R> = f[lo..=hi].to_vec();
+    let mut multiple: Vec<Root<R>> = Vec::new();
+    if lo >= 2 {
+        multiple.push(Root::Zero);
+    }
+    if hi <= 2 {
+        multiple.push(Root::Infinity);
+    }
+    let mut disc2 = None;
+    match core.len() - 1 {
+        0 | 1 => {}
+        2 => {
+            let (c0, c1, c2) = (&core[0], &core[1], &core[2]);
+            let disc = c1.mul(c1).sub(&R::int(4).mul(&c0.mul(c2)));
+            let s = disc.sign()?;
+            if s == 0 {
+                multiple.push(Root::Ratio(c1.neg(), R::int(2).mul(c2)));
+            }
+            disc2 = Some(s);
+        }
+        3 => {
+            let (d, c, bb, aa) = (&core[0], &core[1], &core[2], &core[3]);
+            let disc = R::int(18)
+                .mul(&aa.mul(bb))
+                .mul(&c.mul(d))
+                .sub(&R::int(4).mul(&bb.mul(bb).mul(bb)).mul(d))
+                .add(&bb.mul(bb).mul(&c.mul(c)))
+                .sub(&R::int(4).mul(aa).mul(&c.mul(c).mul(c)))
+                .sub(&R::int(27).mul(&aa.mul(aa)).mul(&d.mul(d)));
+            let s = disc.sign()?;
+            if s == 0 {
+                let e = bb.mul(bb).sub(&R::int(3).mul(&aa.mul(c)));
+                if e.sign()? == 0 {
+                    multiple.push(Root::Ratio(bb.neg(), R::int(3).mul(aa)));
+                } else {
+                    multiple.push(Root::Ratio(
+                        R::int(9).mul(&aa.mul(d)).sub(&bb.mul(c)),
+                        R::int(2).mul(&e),
+                    ));
+                }
+            }
+            disc2 = Some(s);
+        }
+        _ => return Some(Outcome::Fallback("pencil of degree 4")),
+    }
+    match multiple.len() {
+        0 => nonsingular(a, b, &f, lo, hi, disc2, both_axial),
+        1 => {
+            let (m0, n) = match &multiple[0] {
+                Root::Zero => (a.clone(), b),
+                Root::Infinity => (b.clone(), a),
+                Root::Ratio(num, den) => (member(a, b, num, den), b),
+            };
+            one_multiple_root(&m0, n)
+        }
+        _ => Some(Outcome::Rulings),
+    }
+}
+
+/// A nonsingular intersection (F has four distinct roots on the projective
+/// line): empty iff some member is definite.  A member next to the member
+/// of a natural quadric (λ = 0 or ∞; such a matrix has eigenvalues of both
+/// signs) is indefinite, and the inertia is constant between consecutive
+/// roots, so only the arcs away from λ = 0 and λ = ∞ need a sample.
+fn nonsingular<R: SignRing>(
+    a: &M4<R>,
+    b: &M4<R>,
+    f: &[R; 5],
+    lo: usize,
+    hi: usize,
+    disc: Option<i32>,
+    both_axial: bool,
+) -> Option<Outcome> {
+    let curve = Some(Outcome::Counts(
+        Counts::curve(0),
+        "pencil: nonsingular quartic",
+    ));
+    let empty = Some(Outcome::Counts(
+        Counts::empty(),
+        "pencil: definite member (nonsingular, no real point)",
+    ));
+    let disc = disc?;
+    if both_axial && lo == 1 && hi == 3 {
+        // roots 0, ∞ and those of f1 + f2λ + f3λ²
+        if disc < 0 || f[1].sign()? * f[3].sign()? < 0 {
+            return curve; // a complex pair, or roots on both sides of 0
+        }
+        // the arc between the two roots: its midpoint −f2/(2f3)
+        let m = member(a, b, &f[2].neg(), &R::int(2).mul(&f[3]));
+        return if definite4(&m)?.0 { empty } else { curve };
+    }
+    if !both_axial && lo == 0 && hi == 3 {
+        // A a sphere, B axial: roots ∞ and those of the cubic
+        if disc < 0 {
+            return curve;
+        }
+        for (n, d) in middle_samples(a, b, f)? {
+            if definite4(&member(a, b, &n, &d))?.0 {
+                return empty;
+            }
+        }
+        return curve;
+    }
+    Some(Outcome::Fallback("unexpected pencil degrees"))
+}
+
+/// Two samples `n/d` of a cubic F with three real roots `r1 < r2 < r3`,
+/// one in `(r1, r2)` and one in `(r2, r3)`: near the critical points of F,
+/// chosen in floating point and then *verified* exactly (F has the sign of
+/// its leading coefficient on `(r1, r2)` and the other sign on `(r2, r3)`;
+/// with `s1 < s2` these two signs place the samples).  The exact tiers
+/// fall back to exact root isolation when the verification fails.
+fn middle_samples<R: SignRing>(a: &M4<R>, b: &M4<R>, f: &[R; 5]) -> Option<Vec<(R, R)>> {
+    let lead = f[3].sign()?;
+    let check = |n: &R, d: &R, want: i32| -> Option<bool> {
+        // det(dA − nB) = d⁴F(n/d)
+        Some(det4(&member(a, b, n, d)).sign()? == want)
+    };
+    let [c0, c1, c2, c3] = [f[0].approx(), f[1].approx(), f[2].approx(), f[3].approx()];
+    // critical points: 3c3λ² + 2c2λ + c1 = 0
+    let dd = c2 * c2 - 3.0 * c1 * c3;
+    if dd.is_finite() && dd > 0.0 && c3 != 0.0 && c0.is_finite() {
+        let r = dd.sqrt();
+        let q = -(c2 + c2.signum() * r);
+        let (m1, m2) = (q / (3.0 * c3), c1 / q);
+        let (lo, hi) = if m1 < m2 { (m1, m2) } else { (m2, m1) };
+        if let (Some(s1), Some(s2)) = (dyadic_of(lo), dyadic_of(hi))
+            && lo < hi
+        {
+            let s1r = (R::from_z(&s1.0), R::from_z(&s1.1));
+            let s2r = (R::from_z(&s2.0), R::from_z(&s2.1));
+            if check(&s1r.0, &s1r.1, lead)? && check(&s2r.0, &s2r.1, -lead)? {
+                return Some(vec![s1r, s2r]);
+            }
+        }
+    }
+    // exact isolation (exact tiers only)
+    let coeffs: Option<Vec<BigInt>> = f[..4].iter().map(|c| c.exact()).collect();
+    let p = crate::poly::ZPoly::new(coeffs?);
+    let ivs = crate::roots::isolate_squarefree(&p);
+    if ivs.len() != 3 {
+        return None;
+    }
+    let mut out = Vec::new();
+    for w in ivs.windows(2) {
+        let s = if w[0].hi < w[1].lo {
+            (&w[0].hi + &w[1].lo) / crate::number::qi(2)
+        } else {
+            w[0].hi.clone()
+        };
+        out.push((R::from_z(s.numer()), R::from_z(s.denom())));
+    }
+    Some(out)
+}
+
+/// A finite double as `(n, d)` with `n/d` its exact value.
+fn dyadic_of(x: f64) -> Option<(BigInt, BigInt)> {
+    let q = crate::number::double_value(x)?;
+    Some((q.numer().clone(), q.denom().clone()))
+}
+
+/// Exactly one multiple root λ₀; `m0 = A − λ₀B` (scaled), `n` another
+/// member of the pencil.
+fn one_multiple_root<R: SignRing>(m0: &M4<R>, n: &M4<R>) -> Option<Outcome> {
+    // rank 3 iff a diagonal cofactor is non-zero (adj = c·ppᵀ)
+    let mut vertex = None;
+    for k in 0..4 {
+        if minor3(m0, k, k).sign()? != 0 {
+            vertex = Some(k);
+            break;
+        }
+    }
+    match vertex {
+        Some(k) => {
+            let p: [R; 4] = std::array::from_fn(|i| {
+                let c = minor3(m0, i, k);
+                if (i + k) % 2 == 0 { c } else { c.neg() }
+            });
+            nodal(m0, n, &p)
+        }
+        None => plane_pair(m0, n),
+    }
+}
+
+/// A cone member `m0` (rank 3, vertex p) at the only multiple root: p is
+/// the only singular point of the intersection; real points other than p
+/// correspond to the real generators of the cone off the tangent plane of
+/// `n` at p (each meets `n` once more), so there is a real curve iff the
+/// cone is real (the form of `m0` on `R⁴/p` is indefinite); p is an acnode
+/// iff the tangent cone (the cone's lines in `T_p n`) is a complex pair.  A
+/// line of the intersection must pass through p and lie in the tangent
+/// cone and on `n`: a common root of two binary forms.
+fn nodal<R: SignRing>(m0: &M4<R>, n: &M4<R>, p: &[R; 4]) -> Option<Outcome> {
+    let g: [R; 4] = std::array::from_fn(|i| dot(&n[i], p));
+    if dot(&g, p).sign()? != 0 {
+        return Some(Outcome::Fallback("vertex not on the intersection"));
+    }
+    let Some(j) = (0..4).find(|&i| g[i].sign() != Some(0)) else {
+        return Some(Outcome::Fallback("common singular point"));
+    };
+    g[j].sign()?;
+    let mut k = None;
+    for i in (0..4).filter(|&i| i != j) {
+        if p[i].sign()? != 0 {
+            k = Some(i);
+            break;
+        }
+    }
+    let Some(k) = k else {
+        return Some(Outcome::Fallback("degenerate vertex"));
+    };
+    // u, v: t_i = g_j e_i − g_i e_j for the two i ∉ {j, k}
+    let t = |i: usize| -> [R; 4] {
+        std::array::from_fn(|l| {
+            if l == i {
+                g[j].clone()
+            } else if l == j {
+                g[i].neg()
+            } else {
+                R::int(0)
+            }
+        })
+    };
+    let rest: Vec<usize> = (0..4).filter(|&i| i != j && i != k).collect();
+    let (u, v) = (t(rest[0]), t(rest[1]));
+    let m = [form(m0, &u, &u), form(m0, &u, &v), form(m0, &v, &v)];
+    let bq = [form(n, &u, &u), form(n, &u, &v), form(n, &v, &v)];
+    let disc_m = m[1].mul(&m[1]).sub(&m[0].mul(&m[2])).sign()?;
+    let r1 = det2(&m[0], &m[2], &bq[0], &bq[2]);
+    let res = r1.mul(&r1).sub(
+        &R::int(4)
+            .mul(&det2(&m[0], &m[1], &bq[0], &bq[1]).mul(&det2(&m[1], &m[2], &bq[1], &bq[2]))),
+    );
+    if res.sign()? == 0 {
+        return Some(Outcome::Rulings);
+    }
+    let idx: Vec<usize> = (0..4).filter(|&i| i != k).collect();
+    let sub: [[R; 3]; 3] =
+        std::array::from_fn(|r| std::array::from_fn(|c| m0[idx[r]][idx[c]].clone()));
+    let definite = definite3(&sub)?;
+    let affine = p[3].sign()? != 0;
+    if definite {
+        if disc_m >= 0 {
+            return Some(Outcome::Fallback("inconsistent tangent cone"));
+        }
+        return Some(Outcome::Counts(
+            if affine {
+                Counts::new(Class::Points, 0, 0, 1)
+            } else {
+                Counts::empty()
+            },
+            "pencil: a cone member with imaginary generators (isolated tangency point)",
+        ));
+    }
+    let acnode = disc_m < 0 && affine;
+    Some(Outcome::Counts(
+        Counts::curve(usize::from(acnode)),
+        "pencil: one singular point (nodal or cuspidal quartic)",
+    ))
+}
+
+/// A member of rank 2 at the only multiple root: two planes.  Complex
+/// conjugate planes meet in a real line L, and every real point of the
+/// intersection lies on L: the affine real points of `L ∩ n`.
+fn plane_pair<R: SignRing>(m0: &M4<R>, n: &M4<R>) -> Option<Outcome> {
+    let mut pivot = None;
+    'outer: for i in 0..4 {
+        for j in i + 1..4 {
+            let s = det2(&m0[i][i], &m0[i][j], &m0[j][i], &m0[j][j]).sign()?;
+            if s != 0 {
+                pivot = Some((i, j, s));
+                break 'outer;
+            }
+        }
+    }
+    let Some((i, j, s)) = pivot else {
+        return Some(Outcome::Fallback("member of rank ≤ 1"));
+    };
+    if s < 0 {
+        return Some(Outcome::Fallback("real plane pair in a non-planar case"));
+    }
+    let d2 = det2(&m0[i][i], &m0[i][j], &m0[j][i], &m0[j][j]);
+    let kernel = |k: usize| -> [R; 4] {
+        let mut x: [R; 4] = std::array::from_fn(|_| R::int(0));
+        x[k] = d2.clone();
+        x[i] = det2(&m0[j][j], &m0[i][j], &m0[j][k], &m0[i][k]).neg();
+        x[j] = det2(&m0[i][i], &m0[i][j], &m0[i][k], &m0[j][k]).neg();
+        x
+    };
+    let ks: Vec<usize> = (0..4).filter(|&k| k != i && k != j).collect();
+    let (x, y) = (kernel(ks[0]), kernel(ks[1]));
+    for v in [&x, &y] {
+        for r in 0..4 {
+            if dot(&m0[r], v).sign()? != 0 {
+                return Some(Outcome::Fallback("member of rank 3"));
+            }
+        }
+    }
+    let b = [form(n, &x, &x), form(n, &x, &y), form(n, &y, &y)];
+    if all_zero(&b)? {
+        return Some(Outcome::Rulings);
+    }
+    let disc = b[1].mul(&b[1]).sub(&b[0].mul(&b[2])).sign()?;
+    let mut count: usize = match disc {
+        1 => 2,
+        0 => 1,
+        _ => 0,
+    };
+    let (x3, y3) = (x[3].sign()?, y[3].sign()?);
+    if x3 == 0 && y3 == 0 {
+        count = 0;
+    } else if count > 0 {
+        let w: [R; 4] = std::array::from_fn(|l| y[3].mul(&x[l]).sub(&x[3].mul(&y[l])));
+        if form(n, &w, &w).sign()? == 0 {
+            count -= 1;
+        }
+    }
+    Some(Outcome::Counts(
+        Counts::of(0, 0, count),
+        "pencil: complex-conjugate plane pair (isolated tangency points)",
+    ))
+}
+
+// ------------------------------------------------------------ planar cases
+
+/// `u + v√d`.
+#[derive(Clone, Debug)]
+struct Sq<R> {
+    u: R,
+    v: R,
+}
+
+impl<R: SignRing> Sq<R> {
+    fn rat(u: R) -> Sq<R> {
+        Sq { u, v: R::int(0) }
+    }
+    fn add(&self, o: &Sq<R>) -> Sq<R> {
+        Sq {
+            u: self.u.add(&o.u),
+            v: self.v.add(&o.v),
+        }
+    }
+    fn mul(&self, o: &Sq<R>, d: &R) -> Sq<R> {
+        Sq {
+            u: self.u.mul(&o.u).add(&self.v.mul(&o.v).mul(d)),
+            v: self.u.mul(&o.v).add(&self.v.mul(&o.u)),
+        }
+    }
+    fn scale(&self, k: &R) -> Sq<R> {
+        Sq {
+            u: self.u.mul(k),
+            v: self.v.mul(k),
+        }
+    }
+    /// The exact sign (`d > 0`).
+    fn sign(&self, d: &R) -> Option<i32> {
+        let (su, sv) = (self.u.sign()?, self.v.sign()?);
+        if sv == 0 || su == sv {
+            return Some(su);
+        }
+        if su == 0 {
+            return Some(sv);
+        }
+        Some(
+            su * self
+                .u
+                .mul(&self.u)
+                .sub(&self.v.mul(&self.v).mul(d))
+                .sign()?,
+        )
+    }
+}
+
+/// The section of the plane through a line of the axial plane,
+/// perpendicular to it (Lemma 4.4): `z² = h²(p + σw)` (the case analysis
+/// of [`super::planar::section`], counts only).
+#[derive(Clone, Copy, Debug, Default)]
+struct Section {
+    conics: usize,
+    lines: usize,
+    /// An isolated point, at the line's base point (when `at_base`).
+    point: bool,
+    at_base: bool,
+    /// Lines of the section pass through the base point.
+    lines_through_base: bool,
+}
+
+fn section<R: SignRing>(h: &[[R; 3]; 3], p: &[Sq<R>; 3], w: &[Sq<R>; 2], d: &R) -> Option<Section> {
+    let mut a = Sq::rat(R::int(0));
+    let mut b = Sq::rat(R::int(0));
+    let mut c = Sq::rat(R::int(0));
+    for i in 0..2 {
+        for j in 0..2 {
+            a = a.add(&w[i].mul(&w[j], d).scale(&h[i][j]));
+        }
+        for j in 0..3 {
+            b = b.add(&w[i].mul(&p[j], d).scale(&h[i][j]));
+        }
+    }
+    for i in 0..3 {
+        for j in 0..3 {
+            c = c.add(&p[i].mul(&p[j], d).scale(&h[i][j]));
+        }
+    }
+    // (b here is half of the linear coefficient: irrelevant to the signs,
+    // k = C − B²/4A has the sign of (AC − b²)·A)
+    let (sa, sb, sc) = (a.sign(d)?, b.sign(d)?, c.sign(d)?);
+    let mut s = Section::default();
+    if sa == 0 && sb == 0 && sc == 0 {
+        s.lines = 1;
+        s.lines_through_base = true;
+        return Some(s);
+    }
+    if sa != 0 {
+        let k = sa * a.mul(&c, d).add(&b.mul(&b, d).scale(&R::int(-1))).sign(d)?;
+        if sa < 0 {
+            match k {
+                1 => s.conics = 1,
+                0 => {
+                    s.point = true;
+                    s.at_base = sb == 0;
+                }
+                _ => {}
+            }
+        } else if k != 0 {
+            s.conics = 1;
+        } else {
+            s.lines = 2;
+            s.lines_through_base = sb == 0;
+        }
+    } else if sb != 0 {
+        s.conics = 1;
+    } else if sc > 0 {
+        s.lines = 2;
+    }
+    Some(s)
+}
+
+/// The heights of an axial quadric as a conic on the axial plane, in the
+/// homogeneous frame coordinates `(s, t, w)` of `U = P1 + (s e1 + t e2)/w`:
+/// `κ(Qw)²h²(U)` with `κ = |a|²pd` (docs/maths.md), from the vectors
+/// `E1 = Q e1`, `E2 = Q e2`, `E0 = Q(P1 − P)`.
+fn height_conic<R: SignRing>(x: &QIn<R>, e: &[[R; 3]; 3], qq: &R) -> [[R; 3]; 3] {
+    let a2 = dot(&x.a, &x.a);
+    let ea: [R; 3] = std::array::from_fn(|i| dot(&e[i], &x.a));
+    let mut h: [[R; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let ee = dot(&e[i], &e[j]);
+            let aa = ea[i].mul(&ea[j]);
+            match x.kind {
+                Kind::Cone => x.pn.add(&x.pd).mul(&aa).sub(&x.pd.mul(&a2).mul(&ee)),
+                _ => x.pd.mul(&aa.sub(&a2.mul(&ee))),
+            }
+        })
+    });
+    if x.kind == Kind::Cylinder {
+        h[2][2] = h[2][2].add(&x.pn.mul(&a2).mul(&qq.mul(qq)));
+    }
+    h
+}
+
+/// Coplanar distinct axes: `None` inside when the projection conic does not
+/// factor (then the pencil decides), else the planar counts of
+/// [`super::planar::planar_components`].
+fn planar<R: SignRing>(x: &QIn<R>, y: &QIn<R>, parallel: bool) -> Option<Option<Outcome>> {
+    let d = point_difference(x, y);
+    let qq = x.q.mul(&y.q);
+    let e2 = if parallel { d.clone() } else { y.a.clone() };
+    let e1s: [R; 3] = std::array::from_fn(|i| qq.mul(&x.a[i]));
+    let e2s: [R; 3] = std::array::from_fn(|i| qq.mul(&e2[i]));
+    let zero: [R; 3] = std::array::from_fn(|_| R::int(0));
+    let negd: [R; 3] = std::array::from_fn(|i| d[i].neg());
+    let h1 = height_conic(x, &[e1s.clone(), e2s.clone(), zero], &qq);
+    let h2 = height_conic(y, &[e1s, e2s, negd], &qq);
+    let k1 = dot(&x.a, &x.a).mul(&x.pd);
+    let k2 = dot(&y.a, &y.a).mul(&y.pd);
+    let f: [[R; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| k2.mul(&h1[i][j]).sub(&k1.mul(&h2[i][j]))));
+    if det3(&f).sign()? != 0 {
+        return Some(None);
+    }
+    Some(Some(planar_counts(&f, &h1)?))
+}
+
+fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3]) -> Option<Outcome> {
+    const WHY: &str = "axial plane: projection conic factors (Lemma 8.1)";
+    let r = |x: &R| Sq::rat(x.clone());
+    let zero = R::int(0);
+    // rank
+    let mut rank2 = false;
+    'm: for i in 0..3 {
+        for j in 0..3 {
+            for k in i + 1..3 {
+                for l in j + 1..3 {
+                    if det2(&f[i][j], &f[i][l], &f[k][j], &f[k][l]).sign()? != 0 {
+                        rank2 = true;
+                        break 'm;
+                    }
+                }
+            }
+        }
+    }
+    let count = |secs: &[Section], crossing: bool| -> Outcome {
+        let conics = secs.iter().map(|s| s.conics).sum();
+        let lines = secs.iter().map(|s| s.lines).sum();
+        let mut points = 0;
+        for (i, s) in secs.iter().enumerate() {
+            if !s.point {
+                continue;
+            }
+            if crossing && s.at_base {
+                // the point is X: dropped on a line through X, merged with
+                // another point at X
+                let others = secs.iter().enumerate().filter(|&(j, _)| j != i);
+                if others.clone().any(|(_, o)| o.lines_through_base)
+                    || others.clone().any(|(j, o)| j < i && o.point && o.at_base)
+                {
+                    continue;
+                }
+            }
+            points += 1;
+        }
+        Outcome::Counts(Counts::of(conics, lines, points), WHY)
+    };
+    if !rank2 {
+        let Some(row) = (0..3).find(|&i| f[i].iter().any(|x| x.sign() != Some(0))) else {
+            return Some(Outcome::Counts(Counts::empty(), WHY)); // F ≡ 0
+        };
+        for x in &f[row] {
+            x.sign()?;
+        }
+        let v = &f[row];
+        if v[0].sign()? == 0 && v[1].sign()? == 0 {
+            return Some(Outcome::Counts(Counts::empty(), WHY));
+        }
+        let p = if v[0].sign()? != 0 {
+            [r(&v[2].neg()), r(&zero), r(&v[0])]
+        } else {
+            [r(&zero), r(&v[2].neg()), r(&v[1])]
+        };
+        let s = section(h, &p, &[r(&v[1].neg()), r(&v[0])], &zero)?;
+        return Some(count(&[s], false));
+    }
+    // kernel of a rank-2 conic: cross product of two independent rows
+    let mut k = None;
+    'k: for i in 0..3 {
+        for j in i + 1..3 {
+            let c = cross(&f[i], &f[j]);
+            if !all_zero(&c)? {
+                k = Some(c);
+                break 'k;
+            }
+        }
+    }
+    let k = k?;
+    if k[2].sign()? != 0 {
+        let dd = f[0][1].mul(&f[0][1]).sub(&f[0][0].mul(&f[1][1]));
+        let x = [r(&k[0]), r(&k[1]), r(&k[2])];
+        match dd.sign()? {
+            -1 => {
+                // conjugate lines: points over X
+                let hx = x
+                    .iter()
+                    .enumerate()
+                    .fold(r(&zero), |acc, (i, xi)| {
+                        (0..3).fold(acc, |a2, j| a2.add(&xi.mul(&x[j], &zero).scale(&h[i][j])))
+                    })
+                    .sign(&zero)?;
+                let n = match hx {
+                    1 => 2,
+                    0 => 1,
+                    _ => 0,
+                };
+                return Some(Outcome::Counts(Counts::of(0, 0, n), WHY));
+            }
+            0 => return Some(Outcome::Fallback("degenerate factorisation")),
+            _ => {}
+        }
+        let one = R::int(1);
+        let dirs: [[Sq<R>; 2]; 2] = if f[0][0].sign()? != 0 {
+            let m = f[0][1].neg();
+            [
+                [
+                    Sq {
+                        u: m.clone(),
+                        v: one.clone(),
+                    },
+                    r(&f[0][0]),
+                ],
+                [Sq { u: m, v: one.neg() }, r(&f[0][0])],
+            ]
+        } else if f[1][1].sign()? != 0 {
+            let m = f[0][1].neg();
+            [
+                [
+                    r(&f[1][1]),
+                    Sq {
+                        u: m.clone(),
+                        v: one.clone(),
+                    },
+                ],
+                [r(&f[1][1]), Sq { u: m, v: one.neg() }],
+            ]
+        } else {
+            [[r(&one), r(&zero)], [r(&zero), r(&one)]]
+        };
+        let secs = [
+            section(h, &x, &dirs[0], &dd)?,
+            section(h, &x, &dirs[1], &dd)?,
+        ];
+        return Some(count(&secs, true));
+    }
+    // parallel lines with direction (k0, k1)
+    let pv = [k[1].neg(), k[0].clone()];
+    let a = f[0][0]
+        .mul(&pv[0].mul(&pv[0]))
+        .add(&R::int(2).mul(&f[0][1]).mul(&pv[0].mul(&pv[1])))
+        .add(&f[1][1].mul(&pv[1].mul(&pv[1])));
+    let b = pv[0].mul(&f[0][2]).add(&pv[1].mul(&f[1][2]));
+    let c = f[2][2].clone();
+    let w = [r(&k[0]), r(&k[1])];
+    if a.sign()? == 0 {
+        if b.sign()? == 0 {
+            return Some(Outcome::Counts(Counts::empty(), WHY));
+        }
+        let p = [
+            r(&c.neg().mul(&pv[0])),
+            r(&c.neg().mul(&pv[1])),
+            r(&R::int(2).mul(&b)),
+        ];
+        return Some(count(&[section(h, &p, &w, &zero)?], false));
+    }
+    let disc = b.mul(&b).sub(&a.mul(&c));
+    match disc.sign()? {
+        -1 => Some(Outcome::Counts(Counts::empty(), WHY)),
+        0 => {
+            let p = [r(&b.neg().mul(&pv[0])), r(&b.neg().mul(&pv[1])), r(&a)];
+            Some(count(&[section(h, &p, &w, &zero)?], false))
+        }
+        _ => {
+            let mut secs = Vec::new();
+            for sg in [1, -1] {
+                let sigma = Sq {
+                    u: b.neg(),
+                    v: R::int(sg),
+                };
+                let p = [sigma.scale(&pv[0]), sigma.scale(&pv[1]), r(&a)];
+                secs.push(section(h, &p, &w, &disc)?);
+            }
+            Some(count(&secs, false))
+        }
+    }
+}
+
+// ------------------------------------------------------- circles (common axis)
+
+/// Two spheres (the circle of [`super::coaxial::sphere_sphere`]).
+fn two_spheres<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
+    const WHY: &str = "sphere-sphere (radical plane)";
+    let d = point_difference(x, y);
+    let dd = dot(&d, &d);
+    if dd.sign()? == 0 {
+        return Some(Outcome::Counts(Counts::empty(), WHY));
+    }
+    // d² = Δ/s with s = (q1q2)²; ρ² has the sign of 4Δ·r1·s·pd1·pd2² − T²
+    let s = x.q.mul(&y.q);
+    let s = s.mul(&s);
+    let t = dd
+        .mul(&x.pd.mul(&y.pd))
+        .add(&x.pn.mul(&s).mul(&y.pd))
+        .sub(&y.pn.mul(&s).mul(&x.pd));
+    let e = R::int(4)
+        .mul(&dd)
+        .mul(&x.pn)
+        .mul(&s)
+        .mul(&x.pd)
+        .mul(&y.pd.mul(&y.pd))
+        .sub(&t.mul(&t));
+    let c = match e.sign()? {
+        1 => Counts::of(1, 0, 0),
+        0 => Counts::of(0, 0, 1),
+        _ => Counts::empty(),
+    };
+    Some(Outcome::Counts(c, WHY))
+}
+
+/// A sphere whose centre lies on the axis of `w` ([`super::coaxial::sphere_on_axis`]).
+fn sphere_on_axis<R: SignRing>(s: &QIn<R>, w: &QIn<R>) -> Option<Outcome> {
+    const WHY: &str = "sphere centred on the axis (circles)";
+    let a2 = dot(&w.a, &w.a);
+    let c = match w.kind {
+        Kind::Cylinder => match s.pn.mul(&w.pd).sub(&w.pn.mul(&s.pd)).sign()? {
+            1 => Counts::of(2, 0, 0),
+            0 => Counts::of(1, 0, 0),
+            _ => Counts::empty(),
+        },
+        _ => {
+            // (O − V)·a = wv/(q_s q_v), disc ∝ (tn+td) rn qq² |a|² − tn rd wv²
+            let u = point_difference(w, s);
+            let wv = dot(&u, &w.a);
+            let qq = s.q.mul(&w.q);
+            let qq2a = qq.mul(&qq).mul(&a2);
+            let disc =
+                w.pn.add(&w.pd)
+                    .mul(&s.pn)
+                    .mul(&qq2a)
+                    .sub(&w.pn.mul(&s.pd).mul(&wv.mul(&wv)));
+            match disc.sign()? {
+                -1 => Counts::empty(),
+                0 => Counts::of(1, 0, 0),
+                _ => {
+                    let through_vertex = wv.mul(&wv).mul(&s.pd).sub(&s.pn.mul(&qq2a)).sign()? == 0;
+                    if through_vertex {
+                        Counts::of(1, 0, 1)
+                    } else {
+                        Counts::of(2, 0, 0)
+                    }
+                }
+            }
+        }
+    };
+    Some(Outcome::Counts(c, WHY))
+}
+
+/// Two axial quadrics on one axis ([`super::coaxial::same_axis`]).
+fn same_axis<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
+    const WHY: &str = "common axis (circles)";
+    let c = match (x.kind, y.kind) {
+        (Kind::Cylinder, Kind::Cylinder) => Counts::empty(),
+        (Kind::Cone, Kind::Cone) => {
+            if dot(&point_difference(x, y), &x.a).sign()? == 0 {
+                Counts::of(0, 0, 1)
+            } else if x.pn.mul(&y.pd).sub(&y.pn.mul(&x.pd)).sign()? == 0 {
+                Counts::of(1, 0, 0)
+            } else {
+                Counts::of(2, 0, 0)
+            }
+        }
+        _ => Counts::of(2, 0, 0),
+    };
+    Some(Outcome::Counts(c, WHY))
+}
+
+/// Are the two quadrics the same surface (equal parameters)?
+fn same_surface<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<bool> {
+    if x.kind != y.kind {
+        return Some(false);
+    }
+    let d = point_difference(x, y);
+    let same_param = x.pn.mul(&y.pd).sub(&y.pn.mul(&x.pd)).sign()? == 0;
+    Some(match x.kind {
+        Kind::Sphere => same_param && all_zero(&d)?,
+        Kind::Cylinder => {
+            same_param && all_zero(&cross(&x.a, &y.a))? && all_zero(&cross(&d, &x.a))?
+        }
+        Kind::Cone => same_param && all_zero(&d)? && all_zero(&cross(&x.a, &y.a))?,
+    })
+}
+
+/// The whole fast program in one tier.
+pub(crate) fn program<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<(Outcome, Axes)> {
+    let axes = axes_of(x, y)?;
+    if same_surface(x, y)? {
+        return Some((
+            Outcome::Counts(
+                Counts::new(Class::SameSurface, 0, 0, 0),
+                "proportional equations",
+            ),
+            axes,
+        ));
+    }
+    let out = match (x.kind, y.kind) {
+        (Kind::Sphere, Kind::Sphere) => two_spheres(x, y)?,
+        (Kind::Sphere, _) | (_, Kind::Sphere) => {
+            let (s, w) = if x.kind == Kind::Sphere {
+                (x, y)
+            } else {
+                (y, x)
+            };
+            let u = point_difference(w, s);
+            if all_zero(&cross(&u, &w.a))? {
+                sphere_on_axis(s, w)?
+            } else {
+                pencil_route(&matrix(s), &matrix(w), false)?
+            }
+        }
+        _ => match axes {
+            Axes::Coincident => same_axis(x, y)?,
+            Axes::Parallel | Axes::Intersecting => match planar(x, y, axes == Axes::Parallel)? {
+                Some(o) => o,
+                None => pencil_route(&matrix(x), &matrix(y), true)?,
+            },
+            _ => pencil_route(&matrix(x), &matrix(y), true)?,
+        },
+    };
+    Some((out, axes))
+}
+
+/// Runs [`program`] in the three tiers.
+fn run_tiers(x: &Prep, y: &Prep) -> (Outcome, Axes) {
+    fn go<R: SignRing + FromPrep>(x: &Prep, y: &Prep) -> Option<(Outcome, Axes)> {
+        program(&x.tier::<R>(), &y.tier::<R>())
+    }
+    tiered(
+        || go::<Fe>(x, y),
+        || go::<Ck>(x, y),
+        || {
+            go::<BigInt>(x, y)
+                .unwrap_or((Outcome::Fallback("undecided in big integers"), Axes::None))
+        },
+    )
+}
+
+/// What to compute in [`classify_with`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ClassifyOptions {
+    /// Compute the exact components (conics, lines, points, curve data)
+    /// and the deciders' details, as [`classify`] does.  Without them only
+    /// the class, the counts, the axes and Theorem 8 are given, by the fast
+    /// route.
+    pub components: bool,
+}
+
+impl Default for ClassifyOptions {
+    fn default() -> Self {
+        ClassifyOptions { components: true }
+    }
+}
+
+/// The answer of [`classify_with`].
+#[derive(Clone, Debug)]
+pub struct Classification {
+    /// Class and counts.
+    pub counts: Counts,
+    /// Relation of the axes (`None` when a sphere is involved).
+    pub axes: Option<AxesRelation>,
+    /// Theorem 8.1/8.2 where it applies.
+    pub thm8: Option<bool>,
+    /// How the class was decided.
+    pub method: &'static str,
+    /// True when the fast route decided (false: the complete route).
+    pub fast: bool,
+    /// The full report, when components were asked for (or the fast route
+    /// had to fall back to the complete one).
+    pub report: Option<NaturalReport>,
+}
+
+/// The fast route on prepared quadrics: class and counts, falling back to
+/// the complete route (and then carrying its report) where the fast route
+/// cannot decide with certainty.
+pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<Classification, Error> {
+    let (x, y) = (&a.prep, &b.prep);
+    let (out, axes) = run_tiers(x, y);
+    let thm8 = a.conic_intersection_thm8(b);
+    let fallback = |why: &'static str| -> Result<Classification, Error> {
+        let r = classify(a.natural(), b.natural())?;
+        Ok(Classification {
+            counts: Counts::of_report(&r),
+            axes: r.axes.clone(),
+            thm8: r.thm8,
+            method: why,
+            fast: false,
+            report: Some(r),
+        })
+    };
+    let (counts, method) = match out {
+        Outcome::Counts(c, m) => (c, m),
+        Outcome::Fallback(why) => return fallback(why),
+        Outcome::Rulings => {
+            let mut lines = common_rulings(a.natural(), b.natural());
+            for l in common_rulings(b.natural(), a.natural()) {
+                if !lines.iter().any(|m| same_line(m, &l)) {
+                    lines.push(l);
+                }
+            }
+            if lines.is_empty() {
+                return fallback("several multiple roots and no common ruling");
+            }
+            (
+                Counts::new(Class::Curve, 0, lines.len(), 0),
+                "common ruling: a line and a twisted cubic",
+            )
+        }
+    };
+    Ok(Classification {
+        counts,
+        axes: axes_relation_of(x, y, axes),
+        thm8,
+        method,
+        fast: true,
+        report: None,
+    })
+}
+
+/// Classifies two natural quadrics: with `components` the complete route
+/// ([`classify`], exact components), without them the fast route
+/// ([`classify_counts`]).  The class and counts are the same either way.
+///
+/// ```
+/// use quadsect::natural::{parse_natural, classify_with, ClassifyOptions, result::Class};
+/// let a = parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
+/// let b = parse_natural("cone vertex=0,0,2 axis=0,1,0 tan2=3").unwrap();
+/// let r = classify_with(&a, &b, &ClassifyOptions { components: false }).unwrap();
+/// assert_eq!((r.counts.class, r.counts.points), (Class::Points, 2));
+/// assert!(r.fast && r.report.is_none());
+/// ```
+pub fn classify_with(
+    a: &Natural,
+    b: &Natural,
+    opts: &ClassifyOptions,
+) -> Result<Classification, Error> {
+    if opts.components {
+        let r = classify(a, b)?;
+        return Ok(Classification {
+            counts: Counts::of_report(&r),
+            axes: r.axes.clone(),
+            thm8: r.thm8,
+            method: r.method,
+            fast: false,
+            report: Some(r),
+        });
+    }
+    classify_counts(&Prepared::new(a), &Prepared::new(b))
+}
