@@ -34,7 +34,7 @@ use super::result::{Class, NaturalReport};
 use super::topology::{common_rulings, same_line};
 use super::types::Natural;
 use crate::error::Error;
-use crate::number::filter::{Ck, Fe, SignRing, all_zero, cross, dot, tiered};
+use crate::number::filter::{Ball, BallR, Ck, SignRing, all_zero, cross, dot, tiered};
 use num_bigint::BigInt;
 
 /// Class and counts of an intersection (SPEC §4 conventions: real affine
@@ -269,10 +269,17 @@ enum Root<R> {
     Ratio(R, R),
 }
 
-/// The non-planar cases, from the pencil of `A` and `B` (`sphere_first`:
-/// A is a sphere and B axial).
+/// The non-planar cases, from the pencil of `A` and `B`: B is axial, A is
+/// axial too (`both_axial`) or a sphere.
 fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<Outcome> {
-    let f = pencil_coefficients(a, b);
+    let mut f = pencil_coefficients(a, b);
+    // det B = 0 (B axial: its vertex, or the point at infinity of its
+    // axis, is in the kernel), and det A = 0 when A is axial too: exact
+    // zeros the real-valued filter could not certify
+    f[4] = R::int(0);
+    if both_axial {
+        f[0] = R::int(0);
+    }
     let mut nz = [false; 5];
     for k in 0..5 {
         nz[k] = f[k].sign()? != 0;
@@ -302,6 +309,15 @@ fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<O
             disc2 = Some(s);
         }
         3 => {
+            // three sign changes of F certify three distinct real roots
+            // (no discriminant needed: it suffers from the cancellation of
+            // the coefficients)
+            if !both_axial
+                && lo == 0
+                && let Some(samples) = float_samples(a, b, &f)
+            {
+                return definite_at(a, b, &samples);
+            }
             let (d, c, bb, aa) = (&core[0], &core[1], &core[2], &core[3]);
             let disc = R::int(18)
                 .mul(&aa.mul(bb))
@@ -340,6 +356,28 @@ fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<O
     }
 }
 
+/// A nonsingular quartic with real points.
+const NONSINGULAR: Outcome = Outcome::Counts(
+    Counts {
+        class: Class::Curve,
+        conics: 0,
+        lines: 0,
+        points: 0,
+    },
+    "pencil: nonsingular quartic",
+);
+
+/// A nonsingular intersection without real points.
+const DEFINITE: Outcome = Outcome::Counts(
+    Counts {
+        class: Class::Empty,
+        conics: 0,
+        lines: 0,
+        points: 0,
+    },
+    "pencil: definite member (nonsingular, no real point)",
+);
+
 /// A nonsingular intersection (F has four distinct roots on the projective
 /// line): empty iff some member is definite.  A member next to the member
 /// of a natural quadric (λ = 0 or ∞; such a matrix has eigenvalues of both
@@ -354,21 +392,27 @@ fn nonsingular<R: SignRing>(
     disc: Option<i32>,
     both_axial: bool,
 ) -> Option<Outcome> {
-    let curve = Some(Outcome::Counts(
-        Counts::curve(0),
-        "pencil: nonsingular quartic",
-    ));
-    let empty = Some(Outcome::Counts(
-        Counts::empty(),
-        "pencil: definite member (nonsingular, no real point)",
-    ));
+    let (curve, empty) = (Some(NONSINGULAR), Some(DEFINITE));
     let disc = disc?;
     if both_axial && lo == 1 && hi == 3 {
         // roots 0, ∞ and those of f1 + f2λ + f3λ²
         if disc < 0 || f[1].sign()? * f[3].sign()? < 0 {
             return curve; // a complex pair, or roots on both sides of 0
         }
-        // the arc between the two roots: its midpoint −f2/(2f3)
+        // the arc between the two roots r1, r2 of G = f1 + f2λ + f3λ²: a
+        // double near their midpoint, verified (F = λG, and G has the sign
+        // of −f3 only between its roots), else the midpoint −f2/(2f3)
+        let lead = f[3].sign()?;
+        let approx = -f[2].approx() / (2.0 * f[3].approx());
+        if let Some((n, d)) = dyadic_of(approx).filter(|_| approx != 0.0) {
+            let want = if approx > 0.0 { -lead } else { lead };
+            let m = member(a, b, &R::from_z(&n), &R::from_z(&d));
+            if let Some((def, d4)) = definite4(&m)
+                && d4 == want
+            {
+                return if def { empty } else { curve };
+            }
+        }
         let m = member(a, b, &f[2].neg(), &R::int(2).mul(&f[3]));
         return if definite4(&m)?.0 { empty } else { curve };
     }
@@ -377,47 +421,62 @@ fn nonsingular<R: SignRing>(
         if disc < 0 {
             return curve;
         }
-        for (n, d) in middle_samples(a, b, f)? {
-            if definite4(&member(a, b, &n, &d))?.0 {
-                return empty;
-            }
-        }
-        return curve;
+        let samples = match float_samples(a, b, f) {
+            Some(s) => s,
+            None => exact_samples(f)?,
+        };
+        return definite_at(a, b, &samples);
     }
     Some(Outcome::Fallback("unexpected pencil degrees"))
 }
 
-/// Two samples `n/d` of a cubic F with three real roots `r1 < r2 < r3`,
-/// one in `(r1, r2)` and one in `(r2, r3)`: near the critical points of F,
-/// chosen in floating point and then *verified* exactly (F has the sign of
-/// its leading coefficient on `(r1, r2)` and the other sign on `(r2, r3)`;
-/// with `s1 < s2` these two signs place the samples).  The exact tiers
-/// fall back to exact root isolation when the verification fails.
-fn middle_samples<R: SignRing>(a: &M4<R>, b: &M4<R>, f: &[R; 5]) -> Option<Vec<(R, R)>> {
-    let lead = f[3].sign()?;
-    let check = |n: &R, d: &R, want: i32| -> Option<bool> {
-        // det(dA − nB) = d⁴F(n/d)
-        Some(det4(&member(a, b, n, d)).sign()? == want)
-    };
-    let [c0, c1, c2, c3] = [f[0].approx(), f[1].approx(), f[2].approx(), f[3].approx()];
-    // critical points: 3c3λ² + 2c2λ + c1 = 0
-    let dd = c2 * c2 - 3.0 * c1 * c3;
-    if dd.is_finite() && dd > 0.0 && c3 != 0.0 && c0.is_finite() {
-        let r = dd.sqrt();
-        let q = -(c2 + c2.signum() * r);
-        let (m1, m2) = (q / (3.0 * c3), c1 / q);
-        let (lo, hi) = if m1 < m2 { (m1, m2) } else { (m2, m1) };
-        if let (Some(s1), Some(s2)) = (dyadic_of(lo), dyadic_of(hi))
-            && lo < hi
-        {
-            let s1r = (R::from_z(&s1.0), R::from_z(&s1.1));
-            let s2r = (R::from_z(&s2.0), R::from_z(&s2.1));
-            if check(&s1r.0, &s1r.1, lead)? && check(&s2r.0, &s2r.1, -lead)? {
-                return Some(vec![s1r, s2r]);
-            }
+/// The nonsingular answer from samples of the two candidate arcs.
+fn definite_at<R: SignRing>(a: &M4<R>, b: &M4<R>, samples: &[(R, R)]) -> Option<Outcome> {
+    for (n, d) in samples {
+        if definite4(&member(a, b, n, d))?.0 {
+            return Some(DEFINITE);
         }
     }
-    // exact isolation (exact tiers only)
+    Some(NONSINGULAR)
+}
+
+/// Two samples `n/d` of a cubic F, one in `(r1, r2)` and one in
+/// `(r2, r3)` where `r1 < r2 < r3` are its roots: doubles near the critical
+/// points of F, *verified* exactly — F has the sign of its leading
+/// coefficient on `(r1, r2)` and the other sign on `(r2, r3)`, so with
+/// `s1 < s2` and these two signs F changes sign three times: three
+/// distinct real roots, one on each side of each sample.  `None` when the
+/// floating-point guess or its verification fails.
+fn float_samples<R: SignRing>(a: &M4<R>, b: &M4<R>, f: &[R; 5]) -> Option<Vec<(R, R)>> {
+    let lead = f[3].sign()?;
+    let [c1, c2, c3] = [f[1].approx(), f[2].approx(), f[3].approx()];
+    // critical points: 3c3λ² + 2c2λ + c1 = 0
+    let dd = c2 * c2 - 3.0 * c1 * c3;
+    if !(dd.is_finite() && dd > 0.0 && c3 != 0.0) {
+        return None;
+    }
+    let q = -(c2 + c2.signum() * dd.sqrt());
+    let (m1, m2) = (q / (3.0 * c3), c1 / q);
+    let (lo, hi) = if m1 < m2 { (m1, m2) } else { (m2, m1) };
+    if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
+        return None;
+    }
+    let mut out = Vec::new();
+    for (x, want) in [(lo, lead), (hi, -lead)] {
+        let (n, d) = dyadic_of(x)?;
+        let (n, d) = (R::from_z(&n), R::from_z(&d));
+        // det(dA − nB) = d⁴F(n/d)
+        if det4(&member(a, b, &n, &d)).sign()? != want {
+            return None;
+        }
+        out.push((n, d));
+    }
+    Some(out)
+}
+
+/// The same samples from an exact isolation of the roots of F (exact
+/// tiers only): rationals between consecutive isolating intervals.
+fn exact_samples<R: SignRing>(f: &[R; 5]) -> Option<Vec<(R, R)>> {
     let coeffs: Option<Vec<BigInt>> = f[..4].iter().map(|c| c.exact()).collect();
     let p = crate::poly::ZPoly::new(coeffs?);
     let ivs = crate::roots::isolate_squarefree(&p);
@@ -1085,7 +1144,12 @@ fn run_tiers(x: &Prep, y: &Prep) -> (Outcome, Axes) {
         program(&x.tier::<R>(), &y.tier::<R>())
     }
     tiered(
-        || go::<Fe>(x, y),
+        || {
+            let real = (x.has_reals() && y.has_reals())
+                .then(|| go::<BallR>(x, y))
+                .flatten();
+            real.or_else(|| go::<Ball>(x, y))
+        },
         || go::<Ck>(x, y),
         || {
             go::<BigInt>(x, y)

@@ -24,7 +24,9 @@
 use super::deciders::AxesRelation;
 use super::types::Natural;
 use crate::number::Q;
-use crate::number::filter::{Ck, Fe, SignRing, all_zero, cross, dot, sign_with_bound, z_to_f64};
+use crate::number::filter::{
+    Ball, BallR, Ck, SignRing, all_zero, cross, dot, sign_with_bound, z_to_f64,
+};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
@@ -50,6 +52,9 @@ pub(crate) struct Prep {
     pub kind: Kind,
     pub z: [BigInt; NZ],
     f: [(f64, u32); NZ],
+    /// The real values (point, 1, axis, parameter, 1) as doubles, for the
+    /// real-valued filter; `None` when one is out of `[2^-64, 2^64]`.
+    r: Option<[(f64, u32); NZ]>,
     i: [Option<i128>; NZ],
     thm: ThmF,
 }
@@ -83,6 +88,25 @@ fn common_denominator(v: &[Q; 3]) -> ([BigInt; 3], BigInt) {
         }
     });
     (c, l)
+}
+
+/// A rational as a double with its rounding count for the real-valued
+/// filter: exact (`k = 0`) for a dyadic with a 53-bit numerator, else the
+/// quotient of the two converted integers (`k = 5`: two conversions of two
+/// roundings each and a division); `None` outside `[2^-64, 2^64]`.
+fn real_of(x: &Q) -> Option<(f64, u32)> {
+    if x.is_zero() {
+        return Some((0.0, 0));
+    }
+    let (n, d) = (x.numer(), x.denom());
+    let dz = d.trailing_zeros().unwrap_or(0);
+    let (v, k) = if n.bits() <= 53 && d.bits() == dz + 1 && dz < 1000 {
+        (z_to_f64(n).0 * 2f64.powi(-(dz as i32)), 0)
+    } else {
+        (z_to_f64(n).0 / z_to_f64(d).0, 5)
+    };
+    let m = v.abs();
+    (m.is_finite() && (5.4e-20..=1.8e19).contains(&m)).then_some((v, k))
 }
 
 /// A primitive integer vector with the direction of `v`.
@@ -130,6 +154,27 @@ impl Prep {
             p.denom().clone(),
         ];
         let f = std::array::from_fn(|k| z_to_f64(&z[k]));
+        let (pt, ax): (&[Q; 3], Option<&[Q; 3]>) = match q {
+            Natural::Sphere(s) => (&s.center, None),
+            Natural::Cylinder(k) => (&k.point, Some(&k.axis)),
+            Natural::Cone(k) => (&k.vertex, Some(&k.axis)),
+        };
+        let one = (1.0, 0);
+        let zero = (0.0, 0);
+        let r = (|| -> Option<[(f64, u32); NZ]> {
+            let axis = |k: usize| ax.map_or(Some(zero), |a| real_of(&a[k]));
+            Some([
+                real_of(&pt[0])?,
+                real_of(&pt[1])?,
+                real_of(&pt[2])?,
+                one,
+                axis(0)?,
+                axis(1)?,
+                axis(2)?,
+                real_of(p)?,
+                one,
+            ])
+        })();
         let i = std::array::from_fn(|k| z[k].to_i128());
         let exact = |x: BigInt| z_to_f64(&x).0;
         let thm = if kind == Kind::Sphere {
@@ -156,7 +201,19 @@ impl Prep {
                 ma: max(AX),
             }
         };
-        Prep { kind, z, f, i, thm }
+        Prep {
+            kind,
+            z,
+            f,
+            r,
+            i,
+            thm,
+        }
+    }
+
+    /// True when the real-valued filter can run on this quadric.
+    pub fn has_reals(&self) -> bool {
+        self.r.is_some()
     }
 
     /// The quadric's integers in a tier.
@@ -178,10 +235,22 @@ pub(crate) trait FromPrep: Sized {
     fn from_prep(p: &Prep, k: usize) -> Self;
 }
 
-impl FromPrep for Fe {
+impl FromPrep for Ball {
     #[inline]
     fn from_prep(p: &Prep, k: usize) -> Self {
-        Fe::input(p.f[k].0, p.f[k].1)
+        Ball::input(p.f[k].0, p.f[k].1)
+    }
+}
+
+impl FromPrep for BallR {
+    /// The real values (callers check [`Prep::has_reals`]; NaN otherwise,
+    /// which no sign test accepts).
+    #[inline]
+    fn from_prep(p: &Prep, k: usize) -> Self {
+        match &p.r {
+            Some(r) => BallR::input(r[k].0, r[k].1),
+            None => BallR::input(f64::NAN, 0),
+        }
     }
 }
 
@@ -339,7 +408,18 @@ fn thm8_f64(p: &ThmF, r: &ThmF, pk: Kind, rk: Kind) -> Option<Option<bool>> {
     let nn = p.a2 * r.a2 - g * g;
     let mnn = p.a2 * r.a2 + mg * mg;
     if sgn(nn, mnn)? == 0 {
-        return None; // parallel axes: the exact tiers answer (rare)
+        // parallel: coincident iff |D|²A1 − e1² = 0, else Theorem 8.2
+        let dd = dt(&d, &d);
+        if sgn(dd * p.a2 - e1 * e1, 3.0 * md * md * p.a2 + me1 * me1)? == 0 {
+            return Some(None);
+        }
+        return Some(Some(match (pk, rk) {
+            (Kind::Cylinder, Kind::Cylinder) => true,
+            (Kind::Cone, Kind::Cone) => {
+                sgn(p.pn * r.pd - r.pn * p.pd, p.pn * r.pd + r.pn * p.pd)? == 0
+            }
+            _ => false,
+        }));
     }
     let n = [
         p.a[1] * r.a[2] - p.a[2] * r.a[1],

@@ -2,51 +2,49 @@
 //! three number types in turn (STYLE: filters first).
 //!
 //! A predicate written once against [`SignRing`] is evaluated first with
-//! [`Fe`] (an `f64` with a running error bound), then, if some sign was too
-//! close to zero to be decided, with [`Ck`] (checked `i128`), and finally with
-//! [`BigInt`], which always decides.  The first two answer `None` from
-//! [`SignRing::sign`] when they cannot certify a sign (near zero for `Fe`,
-//! overflow for `Ck`); the program then returns `None` and the caller moves
-//! to the next tier.  So no sign is ever guessed: a tier either proves the
-//! sign or declines.
+//! [`Ball`] (an `f64` midpoint with a rigorous radius), then, if some sign
+//! was too close to zero to be decided, with [`Ck`] (checked `i128`), and
+//! finally with [`BigInt`], which always decides.  The first two answer
+//! `None` from [`SignRing::sign`] when they cannot certify a sign (near
+//! zero for a ball, overflow for `Ck`); the program then returns `None` and
+//! the caller moves to the next tier.  So no sign is ever guessed: a tier
+//! either proves the sign or declines.
 //!
-//! **Integer-valued programs only.**  Every quantity must be a polynomial
-//! with integer coefficients in integer inputs (the callers clear
-//! denominators once).  This is what lets [`Fe`] certify zero: an integer
-//! within distance `< 1/2` of 0 is 0.
+//! **Ball arithmetic** (docs/maths.md, "Floating-point filters").  A value
+//! is a pair `(m, r)` with the invariant that the exact value y satisfies
+//! `|y − m| ≤ r`.  With `u = 2^-53`, round-to-nearest gives
+//! `|fl(s) − s| ≤ u·|fl(s)|` for a sum or product s whose result is normal;
+//! a sum with a subnormal result is exact, a product with a subnormal
+//! result is within `2^-1075`.  Hence
 //!
-//! **The error bound of [`Fe`]** (docs/maths.md, "Floating-point filters").
-//! Each value carries `v` (the computed value), `a` (the computed value of
-//! the same program with every input replaced by its absolute value and
-//! every subtraction by an addition — the *permanent*), and `k`, the
-//! largest number of roundings on a path from the inputs: an input converted
-//! with rounding has `k = 2` (exact conversions `k = 0`), `x ± y` has
-//! `max(k_x, k_y) + 1` and `x·y` has `k_x + k_y + 1`.  With `u = 2^-53` and
-//! round-to-nearest, each operation satisfies `fl(x∘y) = (x∘y)(1 + δ)`,
-//! `|δ| ≤ u` (no underflow: every computed value is an integer-valued
-//! float, so non-zero values have magnitude ≥ 1).  Expanding the program,
-//! the computed value is `Σ t·(1 + θ_t)` over the terms t of its expansion
-//! with `|θ_t| ≤ γ_k = ku/(1 − ku)` (Higham, *Accuracy and Stability of
-//! Numerical Algorithms*, Lemma 3.1), so `|v − y| ≤ γ_k·Σ|t|`; the computed
-//! permanent satisfies `a ≥ (1 − γ_k)·Σ|t|`.  Hence
-//! `|v − y| ≤ γ_k/(1 − γ_k)·a = ku/(1 − 2ku)·a ≤ (k + 1)·u·a·(1 − u)`
-//! for `k ≤ 2^20`, and the rounded product `fl((k + 1)u·a)` is an upper
-//! bound `b` of the error.  The sign is then decided as
+//! * `x + y`: `m = fl(mx + my)`, exact radius `rx + ry + u|m|`;
+//! * `x · y`: `m = fl(mx·my)`, exact radius
+//!   `|mx|ry + rx|my| + rx·ry + u|m| + 2^-1075`;
 //!
-//! * `v > b` ⇒ `y > 0`, `v < −b` ⇒ `y < 0`;
-//! * otherwise, if `2b < 1`, then `|y| ≤ |v| + b ≤ 2b < 1` and `y` is an
-//!   integer, so `y = 0`;
-//! * otherwise undecided.
+//! the radius formulas are themselves evaluated in round-to-nearest on
+//! non-negative terms (at most 8 roundings, each by a factor ≥ `1 − u`), so
+//! adding `2^-1070` (which also covers products of radii that underflow)
+//! and multiplying by `1 + 2^-48 > (1 − u)^-9` makes the computed radius an
+//! upper bound.  Overflow gives infinite or NaN radii, and no comparison
+//! accepts them.
 //!
-//! Overflow makes `a` infinite or NaN (the permanent dominates every
-//! intermediate by monotonicity of rounding), and every comparison with it
-//! fails: undecided.
+//! **Deciding a sign.**  `m > r` ⇒ `y > 0`, `m < −r` ⇒ `y < 0`; `r = 0` and
+//! `m = 0` ⇒ `y = 0`.  In an *integer-valued* program ([`Ball`] with
+//! `INT = true`: every quantity an integer polynomial in integer inputs, the
+//! callers clear denominators once) also `|m| + r < 1` ⇒ `y = 0`.  Programs
+//! on the real inputs themselves ([`BallR`]: the doubles of the input, no
+//! denominators cleared, so the magnitudes stay small) certify zero only
+//! exactly.  Otherwise undecided.
+//!
+//! An input integer or rational is converted to the nearest double or
+//! within two roundings (`r = 0` when exact, else `r = 4u|m|` — at most
+//! five roundings for a quotient of converted integers take `r = 8u|m|`).
 
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 
 /// A commutative ring of integers in which the sign of a value can be
-/// asked; [`Fe`] and [`Ck`] may decline (`None`).
+/// asked; [`Ball`] and [`Ck`] may decline (`None`).
 pub(crate) trait SignRing: Clone {
     /// The integer `z` (rounded for [`Fe`], `None`-valued on overflow for [`Ck`]).
     fn from_z(z: &BigInt) -> Self;
@@ -71,55 +69,55 @@ pub(crate) trait SignRing: Clone {
 
 /// `u = 2^-53`, the unit roundoff of `f64`.
 const U: f64 = 1.0 / 9_007_199_254_740_992.0;
-
-/// The error bound of a value with permanent `a` and `k` roundings, or
-/// infinity when `k` is too large for the derivation (`k ≤ 2^20`).
-#[inline]
-pub(crate) fn fe_bound(a: f64, k: u32) -> f64 {
-    if k > 1 << 20 {
-        return f64::INFINITY;
-    }
-    ((k + 1) as f64 * U) * a
-}
+/// The inflation of computed radii: `1 + 2^-48`.
+const INFL: f64 = 1.0 + 1.0 / 281_474_976_710_656.0;
+/// The absolute term covering subnormal products: `2^-1070`.
+const ETA: f64 = 1.0e-322;
 
 /// The sign of an integer-valued quantity computed as `v` with error at
-/// most `b` (see the module docs), or `None`.
+/// most `b`, or `None` (the integer rule of the module docs).
 #[inline]
 pub(crate) fn sign_with_bound(v: f64, b: f64) -> Option<i32> {
     if v > b {
         Some(1)
     } else if v < -b {
         Some(-1)
-    } else if 2.0 * b < 1.0 && !v.is_nan() {
+    } else if (v.abs() + b) * INFL < 1.0 {
         Some(0)
     } else {
         None
     }
 }
 
-/// An `f64` with its permanent and rounding count (the filter tier).
+/// A ball `(m, r)`: the exact value lies in `[m − r, m + r]` (the filter
+/// tier).  `INT`: the program is integer-valued (zero is certified inside
+/// `(−1, 1)`), else real-valued ([`BallR`]).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Fe {
-    /// Computed value.
-    pub v: f64,
-    /// Computed permanent (≥ 0).
-    pub a: f64,
-    /// Roundings on the longest path.
-    pub k: u32,
+pub(crate) struct Ball<const INT: bool = true> {
+    /// Midpoint.
+    pub m: f64,
+    /// Radius (≥ 0).
+    pub r: f64,
 }
 
-impl Fe {
-    /// An input integer given as an `f64` that is exact (`k = 0`) or the
-    /// nearest double of it (`k = 1`); conversions that may be off by more
-    /// than half an ulp must use `k = 2`.
+/// The filter on real-valued inputs (see the module docs).
+pub(crate) type BallR = Ball<false>;
+
+impl<const INT: bool> Ball<INT> {
+    /// An input within `k` roundings of `m` (`k = 0`: exact).
     #[inline]
-    pub fn input(v: f64, k: u32) -> Fe {
-        Fe { v, a: v.abs(), k }
+    pub fn input(m: f64, k: u32) -> Self {
+        let r = if k == 0 {
+            0.0
+        } else {
+            (2 * k) as f64 * U * m.abs() * INFL
+        };
+        Ball { m, r }
     }
 }
 
-/// `z` as an `f64` within a relative error `2u` (exact when `|z| < 2^53`),
-/// with the rounding count to use (`0` exact, `2` otherwise).
+/// `z` as an `f64` within a relative error `2u` (exact when it fits 53
+/// bits), with the rounding count to use (`0` exact, `2` otherwise).
 pub(crate) fn z_to_f64(z: &BigInt) -> (f64, u32) {
     if let Some(v) = z.to_i64()
         && v.unsigned_abs() < (1u64 << 53)
@@ -140,59 +138,74 @@ pub(crate) fn z_to_f64(z: &BigInt) -> (f64, u32) {
         );
     }
     let shift = bits.saturating_sub(64);
+    let exact = bits - z.trailing_zeros().unwrap_or(0) <= 53;
     let top = (z.magnitude() >> shift).to_u64().unwrap_or(u64::MAX) as f64;
     let v = top * 2f64.powi(shift as i32);
-    (if z.is_negative() { -v } else { v }, 2)
+    (
+        if z.is_negative() { -v } else { v },
+        if exact { 0 } else { 2 },
+    )
 }
 
-impl SignRing for Fe {
+impl<const INT: bool> SignRing for Ball<INT> {
     fn from_z(z: &BigInt) -> Self {
         let (v, k) = z_to_f64(z);
-        Fe::input(v, k)
+        Self::input(v, k)
     }
     #[inline]
     fn int(v: i64) -> Self {
         debug_assert!(v.unsigned_abs() < 1 << 53);
-        Fe::input(v as f64, 0)
+        Self::input(v as f64, 0)
     }
     #[inline]
     fn add(&self, o: &Self) -> Self {
-        Fe {
-            v: self.v + o.v,
-            a: self.a + o.a,
-            k: self.k.max(o.k) + 1,
+        let m = self.m + o.m;
+        Ball {
+            m,
+            r: (self.r + o.r + U * m.abs()) * INFL,
         }
     }
     #[inline]
     fn sub(&self, o: &Self) -> Self {
-        Fe {
-            v: self.v - o.v,
-            a: self.a + o.a,
-            k: self.k.max(o.k) + 1,
+        let m = self.m - o.m;
+        Ball {
+            m,
+            r: (self.r + o.r + U * m.abs()) * INFL,
         }
     }
     #[inline]
     fn mul(&self, o: &Self) -> Self {
-        Fe {
-            v: self.v * o.v,
-            a: self.a * o.a,
-            k: self.k + o.k + 1,
+        if (self.m == 0.0 && self.r == 0.0) || (o.m == 0.0 && o.r == 0.0) {
+            return Ball { m: 0.0, r: 0.0 }; // an exact zero factor
+        }
+        let m = self.m * o.m;
+        Ball {
+            m,
+            r: (self.m.abs() * o.r + self.r * o.m.abs() + self.r * o.r + U * m.abs() + ETA) * INFL,
         }
     }
     #[inline]
     fn neg(&self) -> Self {
-        Fe {
-            v: -self.v,
-            a: self.a,
-            k: self.k,
+        Ball {
+            m: -self.m,
+            r: self.r,
         }
     }
     #[inline]
     fn sign(&self) -> Option<i32> {
-        sign_with_bound(self.v, fe_bound(self.a, self.k))
+        let (m, r) = (self.m, self.r);
+        if m > r {
+            Some(1)
+        } else if m < -r {
+            Some(-1)
+        } else if (r == 0.0 && m == 0.0) || (INT && (m.abs() + r) * INFL < 1.0) {
+            Some(0)
+        } else {
+            None
+        }
     }
     fn approx(&self) -> f64 {
-        self.v
+        self.m
     }
     fn exact(&self) -> Option<BigInt> {
         None
@@ -320,6 +333,9 @@ pub(crate) fn tiered<T>(
 mod tests {
     use super::*;
 
+    /// The integer-valued filter.
+    type BallI = Ball<true>;
+
     fn z(s: &str) -> BigInt {
         s.parse().unwrap()
     }
@@ -332,12 +348,25 @@ mod tests {
     #[test]
     fn filter_decides_far_from_zero_and_exact_small_zeros() {
         let s = |a: i64, b: i64, c: i64, d: i64| {
-            det2(&Fe::int(a), &Fe::int(b), &Fe::int(c), &Fe::int(d)).sign()
+            det2(&BallI::int(a), &BallI::int(b), &BallI::int(c), &BallI::int(d)).sign()
         };
         assert_eq!(s(3, 4, 2, 5), Some(1));
         assert_eq!(s(2, 5, 3, 4), Some(-1));
-        // exactly zero with small operands: the bound is < 1/2
+        // exactly zero with small operands: the ball lies inside (−1, 1)
         assert_eq!(s(6, 4, 3, 8), Some(0));
+        // the real-valued filter does not certify that zero (a rounding
+        // radius remains), only an exactly computed one
+        let r = |a: i64, b: i64, c: i64, d: i64| {
+            det2(
+                &BallR::int(a),
+                &BallR::int(b),
+                &BallR::int(c),
+                &BallR::int(d),
+            )
+            .sign()
+        };
+        assert_eq!(r(6, 4, 3, 8), None);
+        assert_eq!(r(0, 4, 3, 0), Some(0));
     }
 
     #[test]
@@ -349,10 +378,10 @@ mod tests {
         let m = z("1099511627775");
         let t = z("1099511627776");
         let f = det2(
-            &Fe::from_z(&p),
-            &Fe::from_z(&m),
-            &Fe::from_z(&t),
-            &Fe::from_z(&t),
+            &BallI::from_z(&p),
+            &BallI::from_z(&m),
+            &BallI::from_z(&t),
+            &BallI::from_z(&t),
         );
         assert_eq!(f.sign(), None);
         let c = det2(
@@ -365,27 +394,51 @@ mod tests {
         assert_eq!(SignRing::sign(&det2(&p, &m, &t, &t)), Some(-1));
         // exactly zero with large operands: undecided by the filter
         let f0 = det2(
-            &Fe::from_z(&p),
-            &Fe::from_z(&m),
-            &Fe::from_z(&p),
-            &Fe::from_z(&m),
+            &BallI::from_z(&p),
+            &BallI::from_z(&m),
+            &BallI::from_z(&p),
+            &BallI::from_z(&m),
         );
         assert_eq!(f0.sign(), None);
     }
 
     #[test]
     fn filter_boundary_cases() {
-        // a value exactly at the error bound is not decided by the
-        // inequality; 2b < 1 decides zero only for an exactly computed 0
-        let b = fe_bound(1.0, 0);
-        assert_eq!(sign_with_bound(b, b), Some(0)); // 2b < 1: |y| < 1 ⇒ y = 0
+        // a value exactly on the error bound is not decided by the
+        // inequality; |v| + b < 1 decides zero for an integer
+        let b = 1.0e-10;
+        assert_eq!(sign_with_bound(b, b), Some(0)); // |y| < 1 ⇒ y = 0
         assert_eq!(sign_with_bound(0.5, 0.5), None); // |y| ≤ 1 could be ±1
+        let ball = |m: f64, r: f64| Ball::<true> { m, r }.sign();
+        let real = |m: f64, r: f64| BallR { m, r }.sign();
+        assert_eq!(ball(1.0, 1.0), None); // y ∈ [0, 2]
+        assert_eq!(ball(0.5, 0.4999), Some(1));
+        assert_eq!(ball(0.5, 0.5), None);
+        assert_eq!(real(0.0, 0.0), Some(0));
+        assert_eq!(real(0.0, 1e-300), None);
+        assert_eq!(real(-1e-300, 1e-300), None);
         assert_eq!(sign_with_bound(0.50000001, 0.5), Some(1));
         assert_eq!(sign_with_bound(-0.5, 0.25), Some(-1));
         assert_eq!(sign_with_bound(0.25, 0.25), Some(0)); // |y| ≤ 0.5: y = 0
         assert_eq!(sign_with_bound(f64::NAN, 0.0), None);
         assert_eq!(sign_with_bound(1.0, f64::INFINITY), None);
         assert_eq!(sign_with_bound(1.0, f64::NAN), None);
+    }
+
+    #[test]
+    fn real_mode_certifies_only_structural_zeros() {
+        let x = BallR::input(0.1, 1);
+        let y = BallR::input(0.3, 1);
+        // 0.1·3 − 0.3: undecided (near zero)
+        assert_eq!(x.mul(&BallR::int(3)).sub(&y).sign(), None);
+        // 0·x: exactly zero
+        assert_eq!(BallR::int(0).mul(&x).sign(), Some(0));
+        assert_eq!(x.mul(&y).sign(), Some(1));
+        // a product that underflows keeps a radius covering it
+        let t = BallR::input(1e-200, 0);
+        let tt = t.mul(&t);
+        assert!(tt.r >= 1e-322);
+        assert_eq!(tt.sub(&tt).sign(), None);
     }
 
     #[test]
@@ -407,6 +460,12 @@ mod tests {
             let x = z(s);
             let (v, k) = z_to_f64(&x);
             assert_eq!(k, 2);
+            // and a ball from it contains the exact value
+            let b = Ball::<true>::from_z(&x);
+            let lo = num_rational::BigRational::from_float(b.m - b.r).unwrap();
+            let hi = num_rational::BigRational::from_float(b.m + b.r).unwrap();
+            let ex = num_rational::BigRational::from_integer(x.clone());
+            assert!(lo <= ex && ex <= hi, "{s}");
             let exact = num_rational::BigRational::from_integer(x.clone());
             let back = num_rational::BigRational::from_float(v).unwrap();
             let err = (exact.clone() - back).abs();
@@ -424,8 +483,8 @@ mod tests {
                              shift in 0u32..30) {
             let big: Vec<BigInt> = xs.iter().map(|&x| BigInt::from(x) << shift as usize).collect();
             let prog = |v: &[BigInt]| -> (Option<i32>, i32) {
-                let f: Vec<Fe> = v.iter().map(Fe::from_z).collect();
-                let e = |r: &[Fe]| r[0].mul(&r[1]).mul(&r[2]).sub(&r[3].mul(&r[4]).mul(&r[5]));
+                let f: Vec<BallI> = v.iter().map(BallI::from_z).collect();
+                let e = |r: &[BallI]| r[0].mul(&r[1]).mul(&r[2]).sub(&r[3].mul(&r[4]).mul(&r[5]));
                 let ex = |r: &[BigInt]| &r[0] * &r[1] * &r[2] - &r[3] * &r[4] * &r[5];
                 (e(&f).sign(), crate::number::sign_z(&ex(v)))
             };
