@@ -24,6 +24,27 @@ fn str_field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, Err
     })
 }
 
+/// An optional boolean field.
+fn bool_field(obj: &Map<String, Value>, name: &str, default: bool) -> Result<bool, Error> {
+    match obj.get(name) {
+        None => Ok(default),
+        Some(Value::Bool(b)) => Ok(*b),
+        Some(_) => Err(Error::new(
+            ErrorKind::BadField,
+            format!("field \"{name}\" must be true or false"),
+        )),
+    }
+}
+
+/// The number mode of an op: `"float": true` reads literals as doubles.
+fn number_mode(obj: &Map<String, Value>) -> Result<crate::number::NumberMode, Error> {
+    Ok(if bool_field(obj, "float", false)? {
+        crate::number::NumberMode::Float
+    } else {
+        crate::number::NumberMode::Exact
+    })
+}
+
 /// Runs one operation given as a JSON object (`op` and its arguments) and
 /// returns the same JSON as the CLI's `--json`.
 pub fn run_op(obj: &Map<String, Value>) -> Result<Value, Error> {
@@ -42,21 +63,28 @@ pub fn run_op(obj: &Map<String, Value>) -> Result<Value, Error> {
             Ok(crate::report::resultant_json(&r))
         }
         "tangent" => {
-            let r = crate::tangent::decide_str(
+            let r = crate::tangent::decide_str_in(
                 str_field(obj, "ellipsoid")?,
                 str_field(obj, "surface")?,
+                number_mode(obj)?,
             )?;
             Ok(crate::report::tangent_json(&r))
         }
         "natural" => {
+            let mode = number_mode(obj)?;
             let q = |name: &str| -> Result<crate::natural::Natural, Error> {
                 let v = field(obj, name)?;
                 match v {
-                    Value::String(s) => crate::natural::parse_natural(s),
-                    other => crate::natural::types::from_json(other),
+                    Value::String(s) => crate::natural::types::parse_natural_in(s, mode),
+                    other => crate::natural::types::from_json_in(other, mode),
                 }
                 .map_err(|e| e.context(&format!("in \"{name}\"")))
             };
+            if !bool_field(obj, "components", true)? {
+                let opts = crate::natural::ClassifyOptions { components: false };
+                let r = crate::natural::classify_with(&q("a")?, &q("b")?, &opts)?;
+                return Ok(crate::report::natural_counts_json(&r));
+            }
             let r = crate::natural::classify(&q("a")?, &q("b")?)?;
             Ok(crate::report::natural_json(&r))
         }

@@ -348,7 +348,13 @@ mod tests {
     #[test]
     fn filter_decides_far_from_zero_and_exact_small_zeros() {
         let s = |a: i64, b: i64, c: i64, d: i64| {
-            det2(&BallI::int(a), &BallI::int(b), &BallI::int(c), &BallI::int(d)).sign()
+            det2(
+                &BallI::int(a),
+                &BallI::int(b),
+                &BallI::int(c),
+                &BallI::int(d),
+            )
+            .sign()
         };
         assert_eq!(s(3, 4, 2, 5), Some(1));
         assert_eq!(s(2, 5, 3, 4), Some(-1));

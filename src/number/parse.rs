@@ -409,6 +409,119 @@ mod tests {
         assert_eq!(parse_rational("0.1/0.3").unwrap(), q(1, 3));
     }
 
+    /// `x` in the C99 `%a` form (`0x1.<13 hex digits>p<exp>`, subnormals
+    /// `0x0.<…>p-1022`).
+    fn hex_of(x: f64) -> String {
+        let bits = x.to_bits();
+        let sign = if bits >> 63 == 1 { "-" } else { "" };
+        let exp = ((bits >> 52) & 0x7ff) as i64;
+        let frac = bits & ((1u64 << 52) - 1);
+        if exp == 0 {
+            format!("{sign}0x0.{frac:013x}p-1022")
+        } else {
+            format!("{sign}0x1.{frac:013x}p{}", exp - 1023)
+        }
+    }
+
+    #[test]
+    fn hex_floats() {
+        assert_eq!(parse_rational("0x1p-3").unwrap(), q(1, 8));
+        assert_eq!(parse_rational("-0x1p-3").unwrap(), q(-1, 8));
+        assert_eq!(parse_rational("0X1.8P1").unwrap(), q(3, 1));
+        assert_eq!(parse_rational("0x.8").unwrap(), q(1, 2));
+        assert_eq!(parse_rational("0x10").unwrap(), q(16, 1));
+        assert_eq!(parse_rational("0x1.").unwrap(), q(1, 1));
+        assert_eq!(parse_rational("0xa.8p+2").unwrap(), q(42, 1));
+        assert_eq!(parse_rational("0x1p3/0x1p1").unwrap(), q(4, 1));
+        assert_eq!(
+            parse_rational("0x1.6a09e667f3bcdp-1").unwrap(),
+            crate::number::double_value(std::f64::consts::FRAC_1_SQRT_2).unwrap()
+        );
+        // scan_number leaves what follows a hex literal to the caller
+        assert_eq!(scan_number(b"0x1p3x", 0).unwrap(), (q(8, 1), 5));
+        assert_eq!(scan_number(b"0xay", 0).unwrap(), (q(10, 1), 3));
+        // "0x" without a hex digit or '.' after it is the number 0
+        assert_eq!(scan_number(b"0x^2", 0).unwrap(), (q(0, 1), 1));
+        assert_eq!(scan_number(b"0xy", 0).unwrap(), (q(0, 1), 1));
+    }
+
+    #[test]
+    fn malformed_hex_floats_name_the_problem_and_column() {
+        for (text, msg, col) in [
+            (
+                "0x.p1",
+                "a hexadecimal number needs at least one hex digit",
+                3,
+            ),
+            (
+                "0x1p",
+                "the binary exponent 'p' of a hexadecimal number must be followed by decimal digits",
+                5,
+            ),
+            (
+                "0x1p+",
+                "the binary exponent 'p' of a hexadecimal number must be followed by decimal digits",
+                6,
+            ),
+            ("0x1.8.5", "unexpected '.' in a hexadecimal number", 6),
+            ("0x1g", "unexpected 'g' in a hexadecimal number", 4),
+            ("0x1p3e4", "unexpected 'e' in a hexadecimal number", 6),
+            (
+                "0x1p999999999",
+                "binary exponent too large (limit 330000)",
+                5,
+            ),
+            (
+                "  -0x1p",
+                "the binary exponent 'p' of a hexadecimal number must be followed by decimal digits",
+                8,
+            ),
+        ] {
+            let e = parse_rational(text).unwrap_err();
+            assert_eq!((e.message.as_str(), e.column), (msg, col), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn float_mode_rounds_each_literal_to_the_nearest_double() {
+        let f = |t: &str| parse_rational_with(t, NumberMode::Float).unwrap();
+        let d = |x: f64| crate::number::double_value(x).unwrap();
+        assert_eq!(f("0.1"), d(0.1));
+        assert_eq!(f("0.7071067811865476"), d(0.7071067811865476));
+        // halfway between 1 and 1 + 2^-52: ties to even (1)
+        assert_eq!(
+            f("1.00000000000000011102230246251565404236316680908203125"),
+            q(1, 1)
+        );
+        // halfway between 1 + 2^-52 and 1 + 2^-51: ties to even (1 + 2^-51)
+        assert_eq!(
+            f("1.00000000000000033306690738754696212708950042724609375"),
+            d(1.0 + 2f64.powi(-51))
+        );
+        // each literal on its own: 1/3 is the quotient of the doubles 1 and 3
+        assert_eq!(f("1/3"), q(1, 3));
+        assert_eq!(f("0.1/0.3"), d(0.1) / d(0.3));
+        // hex literals with more than 53 bits are rounded too
+        assert_eq!(f("0x1.00000000000008p0"), q(1, 1));
+        let e = parse_rational_with("1e400", NumberMode::Float).unwrap_err();
+        assert_eq!(e.column, 1);
+        assert!(e.message.contains("out of the double range"));
+        assert_eq!(f("1e-400"), q(0, 1));
+    }
+
+    proptest::proptest! {
+        /// A random double written as a hex float parses to its exact value.
+        #[test]
+        fn hex_round_trips(bits in proptest::num::u64::ANY) {
+            let x = f64::from_bits(bits);
+            if x.is_finite() {
+                let t = hex_of(x);
+                proptest::prop_assert_eq!(parse_rational(&t).unwrap(), crate::number::double_value(x).unwrap(), "{}", t);
+                proptest::prop_assert_eq!(parse_rational_with(&t, NumberMode::Float).unwrap(), crate::number::double_value(x).unwrap());
+            }
+        }
+    }
+
     #[test]
     fn bad_literals() {
         for bad in [

@@ -516,6 +516,44 @@ mod tests {
     }
 
     #[test]
+    fn hex_literals_and_implicit_multiplication() {
+        // the grammar of number::parse: a hex literal starts at 0x only
+        // when a hex digit or '.' follows; a variable may follow it
+        assert_eq!(s("0x1p3x"), "8*x");
+        assert_eq!(s("0x1.8p1x^2 - 0x.8y"), "3*x^2 - 1/2*y");
+        assert_eq!(s("0x^2 + 1"), "1");
+        assert_eq!(s("2x + 0xy"), "2*x");
+        assert_eq!(s("0xap-1(x+1)"), "5*x + 5");
+        assert_eq!(s("-0x1p-3"), "-1/8");
+        let e = parse_poly("x + 0x1p").unwrap_err();
+        assert_eq!(e.column, 9);
+        assert!(e.message.contains("binary exponent"), "{e}");
+        // inside a hex literal 'e' is a digit: 0x1.8e = 1 + 8/16 + 14/256
+        assert_eq!(
+            parse_poly("0x1.8e").unwrap().to_string_canonical(),
+            "199/128"
+        );
+        let e = parse_poly("0x1g + x").unwrap_err();
+        assert_eq!(
+            (e.message.as_str(), e.column),
+            ("unexpected 'g' in a hexadecimal number", 4)
+        );
+    }
+
+    #[test]
+    fn float_mode_reads_literals_as_doubles() {
+        let f = |t: &str| {
+            parse_poly_in(t, &Limits::default(), NumberMode::Float)
+                .unwrap()
+                .to_string_canonical()
+        };
+        assert_eq!(f("0.5x + 0.25"), "1/2*x + 1/4");
+        assert_eq!(f("0.1x"), "3602879701896397/36028797018963968*x");
+        assert_eq!(f("x/10"), "1/10*x"); // 10 is a double: the quotient stays exact
+        assert_eq!(s("0.1x"), "1/10*x");
+    }
+
+    #[test]
     fn errors_name_problem_and_column() {
         let cases = [
             ("x + ", "unexpected end of expression", 5),
