@@ -165,7 +165,7 @@ fn degenerate() -> impl Strategy<Value = (Natural, Natural)> {
     let small = -2i64..3;
     let ax = (-2i64..3, -2i64..3, -2i64..3).prop_filter("axis", |a| *a != (0, 0, 0));
     (
-        0u8..10,
+        0u8..11,
         (small.clone(), small.clone(), small),
         ax.clone(),
         ax,
@@ -283,6 +283,15 @@ fn degenerate() -> impl Strategy<Value = (Natural, Natural)> {
                         v(a1)
                     ),
                 ),
+                // §7: a cylinder and a cone touching at two points (the
+                // complex-conjugate plane pair), scaled by r
+                10 => (
+                    format!("cylinder point={} axis=1,0,0 radius2={}", v(p), r * r),
+                    format!(
+                        "cone vertex={} axis=0,1,0 tan2=3",
+                        v((p.0, p.1, p.2 + 2 * r))
+                    ),
+                ),
                 // a sphere centred on an axis (through the vertex or not)
                 _ => {
                     let n2 = a1.0 * a1.0 + a1.1 * a1.1 + a1.2 * a1.2;
@@ -352,14 +361,15 @@ fn dyadic_and_rational_inputs() {
     let _ = Q::from(num_bigint::BigInt::from(1));
 }
 
+/// The degenerate families reach every branch of the fast route (so the
+/// properties above test them all) and never need the complete route.
 #[test]
-#[ignore]
-fn histogram() {
+fn degenerate_families_cover_every_branch_of_the_fast_route() {
     use proptest::strategy::ValueTree;
     use proptest::test_runner::TestRunner;
     let mut runner = TestRunner::deterministic();
-    let mut h = std::collections::BTreeMap::new();
-    for i in 0..600 {
+    let mut methods = std::collections::BTreeSet::new();
+    for i in 0..400 {
         let (a, b) = if i % 2 == 0 {
             degenerate().new_tree(&mut runner).unwrap().current()
         } else {
@@ -367,19 +377,27 @@ fn histogram() {
             let m = motion().new_tree(&mut runner).unwrap().current();
             (moved(&p.0, m.0, m.1), moved(&p.1, m.0, m.1))
         };
-        let full = classify(&a, &b).unwrap();
         let fast = classify_with(&a, &b, &ClassifyOptions { components: false }).unwrap();
-        assert_eq!(
-            fast.counts,
-            Counts::of_report(&full),
-            "{} / {}",
+        assert!(
+            fast.fast,
+            "{} / {}: {}",
             a.to_short(),
-            b.to_short()
+            b.to_short(),
+            fast.method
         );
-        *h.entry((format!("{:?}", fast.counts), fast.fast, fast.method))
-            .or_insert(0) += 1;
+        methods.insert(fast.method);
     }
-    for (k, n) in h {
-        println!("{n:5} {k:?}");
+    for m in [
+        "proportional equations",
+        "common axis (circles)",
+        "sphere centred on the axis (circles)",
+        "axial plane: projection conic factors (Lemma 8.1)",
+        "pencil: nonsingular quartic",
+        "pencil: one singular point (nodal or cuspidal quartic)",
+        "pencil: a cone member with imaginary generators (isolated tangency point)",
+        "pencil: complex-conjugate plane pair (isolated tangency points)",
+        "common ruling: a line and a twisted cubic",
+    ] {
+        assert!(methods.contains(m), "no degenerate pair reached \"{m}\"");
     }
 }
