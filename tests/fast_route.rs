@@ -165,7 +165,7 @@ fn degenerate() -> impl Strategy<Value = (Natural, Natural)> {
     let small = -2i64..3;
     let ax = (-2i64..3, -2i64..3, -2i64..3).prop_filter("axis", |a| *a != (0, 0, 0));
     (
-        0u8..11,
+        0u8..13,
         (small.clone(), small.clone(), small),
         ax.clone(),
         ax,
@@ -292,6 +292,61 @@ fn degenerate() -> impl Strategy<Value = (Natural, Natural)> {
                         v((p.0, p.1, p.2 + 2 * r))
                     ),
                 ),
+                // a common ruling: a cone with its vertex on a cylinder and a
+                // generator parallel to the cylinder's axis (tan²α from the
+                // angle between the cone's axis and the z-axis)
+                11 => {
+                    let u = (r, s - 2, 0);
+                    let ax = (a2.0, a2.1, if a2.2 == 0 { 1 } else { a2.2 });
+                    (
+                        format!(
+                            "cylinder point={} axis=0,0,1 radius2={}",
+                            v(p),
+                            u.0 * u.0 + u.1 * u.1
+                        ),
+                        format!(
+                            "cone vertex={} axis={} tan2={}/{}",
+                            v((p.0 + u.0, p.1 + u.1, p.2)),
+                            v(ax),
+                            ax.0 * ax.0 + ax.1 * ax.1,
+                            ax.2 * ax.2
+                        ),
+                    )
+                }
+                // two cones sharing a generator: the second vertex on a line
+                // d of the first cone through its vertex
+                12 => {
+                    // first cone: axis z, tan² = (d0² + d1²)/d2² for d = (a1.0, a1.1, 1)
+                    let d = (a1.0, a1.1, 1);
+                    let t1 = d.0 * d.0 + d.1 * d.1;
+                    let v2 = (p.0 + s * d.0, p.1 + s * d.1, p.2 + s * d.2);
+                    let dot = d.0 * a2.0 + d.1 * a2.1 + d.2 * a2.2;
+                    let cr = (
+                        d.1 * a2.2 - d.2 * a2.1,
+                        d.2 * a2.0 - d.0 * a2.2,
+                        d.0 * a2.1 - d.1 * a2.0,
+                    );
+                    let num = cr.0 * cr.0 + cr.1 * cr.1 + cr.2 * cr.2;
+                    if t1 == 0 || dot == 0 || num == 0 {
+                        (
+                            format!("cone vertex={} axis=0,0,1 tan2=1", v(p)),
+                            format!(
+                                "cone vertex={} axis=1,0,1 tan2=1",
+                                v((p.0 + 1, p.1, p.2 + 1))
+                            ),
+                        )
+                    } else {
+                        (
+                            format!("cone vertex={} axis=0,0,1 tan2={t1}", v(p)),
+                            format!(
+                                "cone vertex={} axis={} tan2={num}/{}",
+                                v(v2),
+                                v(a2),
+                                dot * dot
+                            ),
+                        )
+                    }
+                }
                 // a sphere centred on an axis (through the vertex or not)
                 _ => {
                     let n2 = a1.0 * a1.0 + a1.1 * a1.1 + a1.2 * a1.2;

@@ -31,7 +31,6 @@ use super::prepared::{
     Axes, FromPrep, Kind, Prep, Prepared, QIn, axes_of, axes_relation_of, point_difference,
 };
 use super::result::{Class, NaturalReport};
-use super::topology::{common_rulings, same_line};
 use super::types::Natural;
 use crate::error::Error;
 use crate::number::filter::{Ball, BallR, Ck, SignRing, all_zero, cross, dot, tiered};
@@ -663,6 +662,164 @@ fn plane_pair<R: SignRing>(m0: &M4<R>, n: &M4<R>) -> Option<Outcome> {
     ))
 }
 
+// ------------------------------------------------------------ common rulings
+
+/// The number of common real roots of two binary quadratic forms
+/// `a0 s² + a1 st + a2 t²` (the first not identically zero), counted as
+/// [`super::topology`] counts common rulings: all real roots of the first
+/// when the second vanishes identically or is proportional to it, one when
+/// their resultant vanishes otherwise (a single common root of real forms
+/// is real), none else.
+fn common_roots<R: SignRing>(p: &[R; 3], q: &[R; 3]) -> Option<usize> {
+    let real_roots = || -> Option<usize> {
+        Some(
+            match p[1]
+                .mul(&p[1])
+                .sub(&R::int(4).mul(&p[0].mul(&p[2])))
+                .sign()?
+            {
+                1 => 2,
+                0 => 1,
+                _ => 0,
+            },
+        )
+    };
+    if all_zero(q)? {
+        return real_roots();
+    }
+    let (m02, m01, m12) = (
+        det2(&p[0], &p[2], &q[0], &q[2]),
+        det2(&p[0], &p[1], &q[0], &q[1]),
+        det2(&p[1], &p[2], &q[1], &q[2]),
+    );
+    if m02.mul(&m02).sub(&m01.mul(&m12)).sign()? != 0 {
+        return Some(0);
+    }
+    if all_zero(&[m02, m01, m12])? {
+        return real_roots();
+    }
+    Some(1)
+}
+
+/// `(f(u,u), 2f(u,v), f(v,v))`: the binary form of `f` on `span(u, v)`.
+fn binary<R: SignRing, const N: usize>(f: &[[R; N]; N], u: &[R; N], v: &[R; N]) -> [R; 3] {
+    let fu: [R; N] = std::array::from_fn(|i| dot(&f[i], u));
+    let fv: [R; N] = std::array::from_fn(|i| dot(&f[i], v));
+    [dot(u, &fu), R::int(2).mul(&dot(u, &fv)), dot(v, &fv)]
+}
+
+/// The number of real lines of `x` (a ruling: through the vertex of a
+/// cone, parallel to the axis of a cylinder) lying on `y`, the count of
+/// [`super::topology::common_rulings`]; `None` inside: not decided here.
+fn ruling_count<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Option<usize>> {
+    let my = matrix(y);
+    let mx = matrix(x);
+    let block = |m: &M4<R>| -> [[R; 3]; 3] {
+        std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()))
+    };
+    let zero = R::int(0);
+    match x.kind {
+        Kind::Sphere => Some(Some(0)),
+        Kind::Cone => {
+            let v4 = [x.c[0].clone(), x.c[1].clone(), x.c[2].clone(), x.q.clone()];
+            let w: [R; 4] = std::array::from_fn(|i| dot(&my[i], &v4));
+            if dot(&w, &v4).sign()? != 0 {
+                return Some(Some(0)); // the vertex is not on y
+            }
+            let g = [w[0].clone(), w[1].clone(), w[2].clone()];
+            if all_zero(&g)? {
+                return Some(None); // a common vertex
+            }
+            let mut u1 = None;
+            for j in 0..3 {
+                let mut e: [R; 3] = std::array::from_fn(|_| zero.clone());
+                e[j] = R::int(1);
+                let c = cross(&g, &e);
+                if !all_zero(&c)? {
+                    u1 = Some(c);
+                    break;
+                }
+            }
+            let u1 = u1?;
+            let u2 = cross(&g, &u1);
+            let p = binary(&block(&mx), &u1, &u2);
+            if all_zero(&p)? {
+                return Some(None);
+            }
+            Some(Some(common_roots(&p, &binary(&block(&my), &u1, &u2))?))
+        }
+        Kind::Cylinder => {
+            let a4 = [x.a[0].clone(), x.a[1].clone(), x.a[2].clone(), zero.clone()];
+            let ha: [R; 4] = std::array::from_fn(|i| dot(&my[i], &a4));
+            if dot(&ha, &a4).sign()? != 0 {
+                return Some(Some(0)); // the axis direction is not on y's asymptotic cone
+            }
+            // the cross-section plane through the point: P = (c + C u + S v)/q
+            let e = if all_zero(&x.a[..2])? {
+                [R::int(1), zero.clone(), zero.clone()]
+            } else {
+                [zero.clone(), zero.clone(), R::int(1)]
+            };
+            let u = cross(&x.a, &e);
+            let v = cross(&x.a, &u);
+            let c4 = [x.c[0].clone(), x.c[1].clone(), x.c[2].clone(), x.q.clone()];
+            let ha3 = [ha[0].clone(), ha[1].clone(), ha[2].clone()];
+            let (lu, lv, l0) = (dot(&ha3, &u), dot(&ha3, &v), dot(&ha, &c4));
+            if lu.sign()? == 0 && lv.sign()? == 0 {
+                return Some(Some(0));
+            }
+            // the line lu·C + lv·S + l0·W = 0 in (C, S, W)
+            let base = if lu.sign()? != 0 {
+                [l0.neg(), zero.clone(), lu.clone()]
+            } else {
+                [zero.clone(), l0.neg(), lv.clone()]
+            };
+            let dir = [lv.neg(), lu.clone(), zero.clone()];
+            // the circle pd(C²|u|² + S²|v|²) − q²pn W² and y, as forms in (C, S, W)
+            let circle: [[R; 3]; 3] = std::array::from_fn(|i| {
+                std::array::from_fn(|j| match (i, j) {
+                    (0, 0) => x.pd.mul(&dot(&u, &u)),
+                    (1, 1) => x.pd.mul(&dot(&v, &v)),
+                    (2, 2) => x.q.mul(&x.q).mul(&x.pn).neg(),
+                    _ => zero.clone(),
+                })
+            });
+            let emb: [[R; 4]; 3] = [
+                [u[0].clone(), u[1].clone(), u[2].clone(), zero.clone()],
+                [v[0].clone(), v[1].clone(), v[2].clone(), zero.clone()],
+                c4,
+            ];
+            let yform: [[R; 3]; 3] =
+                std::array::from_fn(|i| std::array::from_fn(|j| form(&my, &emb[i], &emb[j])));
+            // along base + σ·dir: (σ², σ, 1) coefficients, as (s², st, t²) with t = 1
+            let along = |f: &[[R; 3]; 3]| binary(f, &dir, &base);
+            Some(Some(common_roots(&along(&circle), &along(&yform))?))
+        }
+    }
+}
+
+/// A possible common ruling: the rulings of each quadric lying on the
+/// other, counted both ways; a line and a twisted cubic when there are some
+/// (the complete route's answer), else not a case of the fast route.
+fn rulings<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
+    let (Some(n1), Some(n2)) = (ruling_count(x, y)?, ruling_count(y, x)?) else {
+        return Some(Outcome::Fallback("common vertex in a non-planar case"));
+    };
+    if x.kind != Kind::Sphere && y.kind != Kind::Sphere && n1 != n2 {
+        return Some(Outcome::Fallback("ruling counts differ"));
+    }
+    let n = n1.max(n2);
+    if n == 0 {
+        return Some(Outcome::Fallback(
+            "several multiple roots and no common ruling",
+        ));
+    }
+    Some(Outcome::Counts(
+        Counts::new(Class::Curve, 0, n, 0),
+        "common ruling: a line and a twisted cubic",
+    ))
+}
+
 // ------------------------------------------------------------ planar cases
 
 /// `u + v√d`.
@@ -1135,6 +1292,10 @@ pub(crate) fn program<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<(Outcome, A
             _ => pencil_route(&matrix(x), &matrix(y), true)?,
         },
     };
+    let out = match out {
+        Outcome::Rulings => rulings(x, y)?,
+        o => o,
+    };
     Some((out, axes))
 }
 
@@ -1213,21 +1374,7 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<Classification, Err
     let (counts, method) = match out {
         Outcome::Counts(c, m) => (c, m),
         Outcome::Fallback(why) => return fallback(why),
-        Outcome::Rulings => {
-            let mut lines = common_rulings(a.natural(), b.natural());
-            for l in common_rulings(b.natural(), a.natural()) {
-                if !lines.iter().any(|m| same_line(m, &l)) {
-                    lines.push(l);
-                }
-            }
-            if lines.is_empty() {
-                return fallback("several multiple roots and no common ruling");
-            }
-            (
-                Counts::new(Class::Curve, 0, lines.len(), 0),
-                "common ruling: a line and a twisted cubic",
-            )
-        }
+        Outcome::Rulings => return fallback("possible common ruling"),
     };
     Ok(Classification {
         counts,

@@ -488,8 +488,7 @@ pub fn classify_nonplanar(
     Ok((comps, notes))
 }
 
-/// Are two lines (point, direction) with data in Q(√d) the same line?
-pub(crate) fn same_line(a: &(EPoint, EPoint), b: &(EPoint, EPoint)) -> bool {
+fn same_line(a: &(EPoint, EPoint), b: &(EPoint, EPoint)) -> bool {
     // both lines exact in Q(√d): same if b's point is on a and directions parallel
     let q = |e: &Exact| match e {
         Exact::Quad(x) => Some(x.clone()),
