@@ -121,62 +121,81 @@ fn starts_hex(s: &[u8], pos: usize) -> bool {
         && (s[pos + 2].is_ascii_hexdigit() || s[pos + 2] == b'.')
 }
 
+/// The end of the run of digits (by `is_digit`) starting at `i`.
+fn digit_run(s: &[u8], mut i: usize, is_digit: fn(&u8) -> bool) -> usize {
+    while i < s.len() && is_digit(&s[i]) {
+        i += 1;
+    }
+    i
+}
+
+/// `digits [. digits]` from `i`: the integer digits, the position of the
+/// point and the fraction digits (when there is a point), and the end.
+fn mantissa(
+    s: &[u8],
+    i: usize,
+    is_digit: fn(&u8) -> bool,
+) -> (&[u8], Option<(usize, &[u8])>, usize) {
+    let e = digit_run(s, i, is_digit);
+    if e < s.len() && s[e] == b'.' {
+        let f = digit_run(s, e + 1, is_digit);
+        return (&s[i..e], Some((e, &s[e + 1..f])), f);
+    }
+    (&s[i..e], None, e)
+}
+
+/// After an exponent letter at `i`: the sign, and the decimal digits'
+/// start and end.
+fn exponent_digits(s: &[u8], i: usize) -> (bool, usize, usize) {
+    let mut j = i + 1;
+    let neg = j < s.len() && s[j] == b'-';
+    if j < s.len() && (s[j] == b'+' || s[j] == b'-') {
+        j += 1;
+    }
+    (neg, j, digit_run(s, j, u8::is_ascii_digit))
+}
+
+/// The value of a run of decimal digits, `None` beyond `limit`.
+fn small_value(d: &[u8], limit: i64) -> Option<i64> {
+    if d.len() > 9 {
+        return None;
+    }
+    std::str::from_utf8(d)
+        .ok()
+        .and_then(|t| t.parse().ok())
+        .filter(|v| *v <= limit)
+}
+
 /// A hexadecimal literal at `pos` (which starts with `0x` and a hex digit
 /// or `.`): exactly `hexdigits × 2^exponent`.
 fn scan_hex(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
-    let mut i = pos + 2;
-    let int_start = i;
-    while i < s.len() && s[i].is_ascii_hexdigit() {
-        i += 1;
-    }
-    let int_part = &s[int_start..i];
-    let mut frac_part: &[u8] = &[];
-    if i < s.len() && s[i] == b'.' {
-        let fs = i + 1;
-        let mut j = fs;
-        while j < s.len() && s[j].is_ascii_hexdigit() {
-            j += 1;
-        }
-        frac_part = &s[fs..j];
-        if int_part.is_empty() && frac_part.is_empty() {
-            return Err(err("a hexadecimal number needs at least one hex digit", i));
-        }
-        i = j;
+    let (int_part, frac, mut i) = mantissa(s, pos + 2, u8::is_ascii_hexdigit);
+    let frac_part = frac.map_or(&[][..], |f| f.1);
+    if let Some((dot, _)) = frac
+        && int_part.is_empty()
+        && frac_part.is_empty()
+    {
+        return Err(err(
+            "a hexadecimal number needs at least one hex digit",
+            dot,
+        ));
     }
     let ndig = (int_part.len() + frac_part.len()) as i64;
     let mut exp: i64 = 0;
     if i < s.len() && (s[i] == b'p' || s[i] == b'P') {
-        let mut j = i + 1;
-        let mut neg = false;
-        if j < s.len() && (s[j] == b'+' || s[j] == b'-') {
-            neg = s[j] == b'-';
-            j += 1;
-        }
-        let es = j;
-        while j < s.len() && s[j].is_ascii_digit() {
-            j += 1;
-        }
+        let (neg, es, j) = exponent_digits(s, i);
         if j == es {
             return Err(err(
                 "the binary exponent 'p' of a hexadecimal number must be followed by decimal digits",
                 j,
             ));
         }
-        let ed = &s[es..j];
-        let v: i64 = if ed.len() > 9 {
-            i64::MAX
-        } else {
-            std::str::from_utf8(ed)
-                .ok()
-                .and_then(|t| t.parse().ok())
-                .unwrap_or(i64::MAX)
-        };
-        if v > MAX_HEX_BITS {
-            return Err(err(
+        let v = small_value(&s[es..j], MAX_HEX_BITS).ok_or_else(|| {
+            err(
                 format!("binary exponent too large (limit {MAX_HEX_BITS})"),
                 es,
-            ));
-        }
+            )
+        })?;
         exp = if neg { -v } else { v };
         i = j;
     }
@@ -216,28 +235,17 @@ fn scan_hex(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
 
 /// A decimal literal at `pos`.
 fn scan_decimal(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
-    let mut i = pos;
-    let start_int = i;
-    while i < s.len() && s[i].is_ascii_digit() {
-        i += 1;
-    }
-    let int_part = &s[start_int..i];
-    let mut frac_part: &[u8] = &[];
-    if i < s.len() && s[i] == b'.' {
-        let fs = i + 1;
-        let mut j = fs;
-        while j < s.len() && s[j].is_ascii_digit() {
-            j += 1;
-        }
-        frac_part = &s[fs..j];
+    let (int_part, frac, i) = mantissa(s, pos, u8::is_ascii_digit);
+    let frac_part = frac.map_or(&[][..], |f| f.1);
+    if let Some((dot, _)) = frac {
         if int_part.is_empty() && frac_part.is_empty() {
-            return Err(err("a lone '.' is not a number", i));
+            return Err(err("a lone '.' is not a number", dot));
         }
         if frac_part.is_empty() {
-            return Err(err("a decimal point must be followed by digits", i));
+            return Err(err("a decimal point must be followed by digits", dot));
         }
-        i = j;
     }
+    let mut i = i;
     if int_part.is_empty() && frac_part.is_empty() {
         return Err(err("expected a number", pos));
     }
@@ -249,37 +257,13 @@ fn scan_decimal(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
     }
     let mut exp: i64 = 0;
     if i < s.len() && (s[i] == b'e' || s[i] == b'E') {
-        let mut j = i + 1;
-        let mut neg = false;
-        if j < s.len() && (s[j] == b'+' || s[j] == b'-') {
-            neg = s[j] == b'-';
-            j += 1;
-        }
-        let es = j;
-        while j < s.len() && s[j].is_ascii_digit() {
-            j += 1;
-        }
+        let (neg, es, j) = exponent_digits(s, i);
         if j > es {
-            let ed = &s[es..j];
-            if ed.len() > 7 {
-                return Err(err(
-                    format!("exponent too large (limit {MAX_EXPONENT})"),
-                    es,
-                ));
-            }
-            let v: i64 = std::str::from_utf8(ed)
-                .ok()
-                .and_then(|t| t.parse().ok())
-                .unwrap_or(i64::MAX);
-            if v > MAX_EXPONENT {
-                return Err(err(
-                    format!("exponent too large (limit {MAX_EXPONENT})"),
-                    es,
-                ));
-            }
+            let v = small_value(&s[es..j], MAX_EXPONENT)
+                .ok_or_else(|| err(format!("exponent too large (limit {MAX_EXPONENT})"), es))?;
             exp = if neg { -v } else { v };
             i = j;
-        } else if j > i + 1 {
+        } else if es > i + 1 {
             // "1e+" or "1e-" without digits
             return Err(err("exponent sign must be followed by digits", j));
         }
