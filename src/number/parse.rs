@@ -129,13 +129,12 @@ fn digit_run(s: &[u8], mut i: usize, is_digit: fn(&u8) -> bool) -> usize {
     i
 }
 
-/// `digits [. digits]` from `i`: the integer digits, the position of the
-/// point and the fraction digits (when there is a point), and the end.
-fn mantissa(
-    s: &[u8],
-    i: usize,
-    is_digit: fn(&u8) -> bool,
-) -> (&[u8], Option<(usize, &[u8])>, usize) {
+/// The integer digits, the point's position with the fraction digits
+/// (when there is a point), and the end of a mantissa.
+type Mantissa<'a> = (&'a [u8], Option<(usize, &'a [u8])>, usize);
+
+/// `digits [. digits]` from `i`.
+fn mantissa(s: &[u8], i: usize, is_digit: fn(&u8) -> bool) -> Mantissa<'_> {
     let e = digit_run(s, i, is_digit);
     if e < s.len() && s[e] == b'.' {
         let f = digit_run(s, e + 1, is_digit);
