@@ -396,12 +396,22 @@ fn sgn(v: f64, m: f64) -> Option<i32> {
 /// 2^-46(1 − u)`).
 #[inline]
 fn thm8_f64(p: &ThmF, r: &ThmF, pk: Kind, rk: Kind) -> Option<Option<bool>> {
-    let d = [
-        p.q * r.c[0] - r.q * p.c[0],
-        p.q * r.c[1] - r.q * p.c[1],
-        p.q * r.c[2] - r.q * p.c[2],
-    ];
-    let md = p.q * r.mc + r.q * p.mc;
+    // integer points (q = 1, the usual case) need no scaling
+    let (d, md) = if p.q == 1.0 && r.q == 1.0 {
+        (
+            [r.c[0] - p.c[0], r.c[1] - p.c[1], r.c[2] - p.c[2]],
+            r.mc + p.mc,
+        )
+    } else {
+        (
+            [
+                p.q * r.c[0] - r.q * p.c[0],
+                p.q * r.c[1] - r.q * p.c[1],
+                p.q * r.c[2] - r.q * p.c[2],
+            ],
+            p.q * r.mc + r.q * p.mc,
+        )
+    };
     let dt = |u: &[f64; 3], v: &[f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     let (e1, e2, g) = (dt(&d, &p.a), dt(&d, &r.a), dt(&p.a, &r.a));
     let (me1, me2, mg) = (3.0 * md * p.ma, 3.0 * md * r.ma, 3.0 * p.ma * r.ma);
