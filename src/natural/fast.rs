@@ -1313,6 +1313,13 @@ fn run_tiers(x: &Prep, y: &Prep) -> (Outcome, Axes) {
         },
         || go::<Ck>(x, y),
         || {
+            // big integers: the pencil's coefficients have about 20 times
+            // the inputs' bits (degree 4 in entries of degree ≤ 5)
+            crate::budget::check_size(
+                "the pencil of two natural quadrics",
+                25,
+                20 * x.max_bits().max(y.max_bits()),
+            );
             go::<BigInt>(x, y)
                 .unwrap_or((Outcome::Fallback("undecided in big integers"), Axes::None))
         },

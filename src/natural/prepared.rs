@@ -211,6 +211,11 @@ impl Prep {
         }
     }
 
+    /// The largest bit size of the stored integers.
+    pub fn max_bits(&self) -> u64 {
+        self.z.iter().map(|x| x.bits()).max().unwrap_or(0)
+    }
+
     /// True when the real-valued filter can run on this quadric.
     pub fn has_reals(&self) -> bool {
         self.r.is_some()
