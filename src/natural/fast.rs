@@ -4,8 +4,9 @@
 //!
 //! The decisions are signs of integer polynomials in the quadrics'
 //! parameters (denominators cleared once, [`super::prepared`]), written once
-//! against [`SignRing`] and run in three tiers: an `f64` filter with a
-//! proven error bound, checked `i128`, big integers.  The branching follows
+//! against `number::filter::SignRing` and run in tiers: ball arithmetic
+//! (an `f64` filter with proven rounding) on the real inputs, then on the
+//! integers, checked `i128`, big integers.  The branching follows
 //! [`super::classify::classify`] exactly (same surface; two spheres; a
 //! sphere centred on an axis; a common axis; coplanar axes whose projection
 //! conic factors; everything else), and so do the planar counts; the
@@ -1299,7 +1300,8 @@ pub(crate) fn program<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<(Outcome, A
     Some((out, axes))
 }
 
-/// Runs [`program`] in the three tiers.
+/// Runs [`program`] in the tiers (real balls, integer balls, checked
+/// `i128`, big integers).
 fn run_tiers(x: &Prep, y: &Prep) -> (Outcome, Axes) {
     fn go<R: SignRing + FromPrep>(x: &Prep, y: &Prep) -> Option<(Outcome, Axes)> {
         program(&x.tier::<R>(), &y.tier::<R>())
