@@ -75,6 +75,12 @@ struct ThmF {
     /// `max |cᵢ|`, `max |aᵢ|`.
     mc: f64,
     ma: f64,
+    /// Precomputed bound factors: `k = |a|² + 3·max|aᵢ|²` (so that
+    /// `3·md·max|a₁|·k₂` bounds the permanent of `s1n`), `α = max|aᵢ|²·x`,
+    /// `β = k²·y`.
+    k: f64,
+    alpha: f64,
+    beta: f64,
 }
 
 /// The numbers of an integer vector over one common positive denominator.
@@ -199,8 +205,15 @@ impl Prep {
                 pd: fv(PD),
                 mc: max(C),
                 ma: max(AX),
+                k: 0.0,
+                alpha: 0.0,
+                beta: 0.0,
             }
         };
+        let mut thm = thm;
+        thm.k = thm.a2 + 3.0 * thm.ma * thm.ma;
+        thm.alpha = thm.ma * thm.ma * thm.x;
+        thm.beta = thm.k * thm.k * thm.y;
         Prep {
             kind,
             z,
@@ -419,7 +432,7 @@ fn thm8_f64(p: &ThmF, r: &ThmF, pk: Kind, rk: Kind) -> Option<Option<bool>> {
     };
     let dt = |u: &[f64; 3], v: &[f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     let (e1, e2, g) = (dt(&d, &p.a), dt(&d, &r.a), dt(&p.a, &r.a));
-    let (me1, me2, mg) = (3.0 * md * p.ma, 3.0 * md * r.ma, 3.0 * p.ma * r.ma);
+    let (me1, mg) = (3.0 * md * p.ma, 3.0 * p.ma * r.ma);
     let nn = p.a2 * r.a2 - g * g;
     let mnn = p.a2 * r.a2 + mg * mg;
     if sgn(nn, mnn)? == 0 {
@@ -446,13 +459,15 @@ fn thm8_f64(p: &ThmF, r: &ThmF, pk: Kind, rk: Kind) -> Option<Option<bool>> {
     }
     let s1 = e1 * r.a2 - e2 * g;
     let s2 = e1 * g - e2 * p.a2;
-    let ms1 = me1 * r.a2 + me2 * mg;
-    let ms2 = me1 * mg + me2 * p.a2;
+    // permanents: s1n ≤ me1·A2 + me2·mg = 3·md·ma1·k2, s2n ≤ 3·md·ma2·k1
+    let ms1 = 3.0 * md * p.ma * r.k;
+    let ms2 = 3.0 * md * r.ma * p.k;
     let qq = p.q * r.q;
     let (e, m) = match (pk, rk) {
         (Kind::Cone, Kind::Cone) => (
             s1 * s1 * (p.x * r.y) - s2 * s2 * (r.x * p.y),
-            ms1 * ms1 * (p.x * r.y) + ms2 * ms2 * (r.x * p.y),
+            // ms1²·x1·y2 + ms2²·x2·y1 = 9md²(α1β2 + α2β1)
+            9.0 * md * md * (p.alpha * r.beta + r.alpha * p.beta),
         ),
         (Kind::Cone, _) => {
             let (nf, mn) = (qq * nn, qq * mnn);
