@@ -297,7 +297,11 @@ fn degenerate() -> impl Strategy<Value = (Natural, Natural)> {
                 // angle between the cone's axis and the z-axis)
                 11 => {
                     let u = (r, s - 2, 0);
-                    let ax = (a2.0, a2.1, if a2.2 == 0 { 1 } else { a2.2 });
+                    let ax = (
+                        if a2.0 == 0 && a2.1 == 0 { 1 } else { a2.0 },
+                        a2.1,
+                        if a2.2 == 0 { 1 } else { a2.2 },
+                    );
                     (
                         format!(
                             "cylinder point={} axis=0,0,1 radius2={}",
