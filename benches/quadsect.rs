@@ -13,7 +13,7 @@ fn main() {
         .find(|a| ["kernel", "tangent", "natural", "all"].contains(&a.as_str()))
         .unwrap_or_else(|| "all".to_string());
     let inputs = std::env::var("QUADSECT_BENCH_INPUTS").ok();
-    match quadsect::cli::bench::run(&suite, inputs.as_deref()) {
+    match quadsect::cli::bench::run(&suite, inputs.as_deref(), None) {
         Ok(rows) => print!("{}", quadsect::cli::bench::to_markdown(&rows)),
         Err(e) => {
             eprintln!("bench: {e}");

@@ -182,7 +182,7 @@ pub use kernel::{
 pub use natural::{
     Class, ClassifyOptions, Cone, Cylinder, Natural, NaturalReport, Sphere, classify, classify_with,
 };
-pub use number::{QSqrt, Sign};
+pub use number::{NumberMode, QSqrt, Sign};
 pub use poly::{IntPoly, Polynomial, Var};
 pub use roots::RealAlg;
 pub use tangent::{Ellipsoid, TangentOptions, TangentReport, Verdict, decide, decide_with};
@@ -198,6 +198,21 @@ pub use tangent::{Ellipsoid, TangentOptions, TangentReport, Verdict, decide, dec
 /// ```
 pub fn parse_rational(s: &str) -> Result<Rational, Error> {
     number::parse_rational(s).map_err(Error::from)
+}
+
+/// [`parse_rational`] in a [`NumberMode`]: with [`NumberMode::Float`] a
+/// decimal literal becomes its nearest double (round to nearest, ties to
+/// even) — the number a program reading the text would hold.  Hexadecimal
+/// floats (`0x1.8p-1`) are exact in both modes.
+///
+/// ```
+/// use quadsect::{NumberMode, Rational};
+/// let x = quadsect::parse_rational_in("0.1", NumberMode::Float).unwrap();
+/// assert_eq!(Some(x), Rational::from_float(0.1_f64));
+/// assert_eq!(quadsect::parse_rational("0x1.8p-1").unwrap(), Rational::new(3.into(), 4.into()));
+/// ```
+pub fn parse_rational_in(s: &str, mode: NumberMode) -> Result<Rational, Error> {
+    number::parse_rational_with(s, mode).map_err(Error::from)
 }
 
 /// Arbitrary-precision integers (re-exported from `num-bigint`).

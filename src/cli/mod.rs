@@ -65,6 +65,10 @@ enum Command {
         /// JSON output (the fields of docs/contract.md §3).
         #[arg(long)]
         json: bool,
+        /// Read every decimal literal as the nearest double (round to nearest,
+        /// ties to even), i.e. the numbers a program reading them would use.
+        #[arg(long)]
+        float: bool,
     },
     /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
     Natural {
@@ -75,6 +79,16 @@ enum Command {
         /// JSON output (the fields of docs/contract.md §4).
         #[arg(long)]
         json: bool,
+        /// Compute the exact components (the default).
+        #[arg(long, overrides_with = "no_components")]
+        components: bool,
+        /// Class and counts only, by the fast route (no components).
+        #[arg(long, overrides_with = "components")]
+        no_components: bool,
+        /// Read every decimal literal as the nearest double (round to nearest,
+        /// ties to even).
+        #[arg(long)]
+        float: bool,
     },
     /// Median timings of the kernel (resultants, isolation, Sturm), the tangent
     /// point method and the natural-quadric deciders.
@@ -86,6 +100,10 @@ enum Command {
         /// benches/data/kernel_inputs.json).
         #[arg(long)]
         inputs: Option<String>,
+        /// Natural-quadric pair file (default: the copy shipped in the
+        /// binary, benches/data/natural_pairs.json).
+        #[arg(long)]
+        pairs: Option<String>,
         /// JSON output.
         #[arg(long)]
         json: bool,
@@ -105,6 +123,14 @@ fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() 
     } else {
         write!(out, "{}", human())
     };
+}
+
+fn number_mode(float: bool) -> crate::number::NumberMode {
+    if float {
+        crate::number::NumberMode::Float
+    } else {
+        crate::number::NumberMode::Exact
+    }
 }
 
 /// Runs one request of the dispatch table and prints its answer.
@@ -130,18 +156,44 @@ fn run(cli: Cli) -> Result<(), Error> {
             ellipsoid,
             surface,
             json,
-        } => answer(json, Request::Tangent { ellipsoid, surface })?,
-        Command::Natural { a, b, json } => {
-            let a = a.parse().map_err(|e: Error| e.context("in A"))?;
-            let b = b.parse().map_err(|e: Error| e.context("in B"))?;
-            answer(json, Request::Natural { a, b })?
+            float,
+        } => answer(
+            json,
+            Request::Tangent {
+                ellipsoid,
+                surface,
+                mode: number_mode(float),
+            },
+        )?,
+        Command::Natural {
+            a,
+            b,
+            json,
+            components: _,
+            no_components,
+            float,
+        } => {
+            let mode = number_mode(float);
+            let parse = |t: &str, what: &str| {
+                crate::natural::types::parse_natural_in(t, mode).map_err(|e| e.context(what))
+            };
+            let (a, b) = (parse(&a, "in A")?, parse(&b, "in B")?);
+            answer(
+                json,
+                Request::Natural {
+                    a,
+                    b,
+                    components: !no_components,
+                },
+            )?
         }
         Command::Bench {
             suite,
             inputs,
+            pairs,
             json,
         } => {
-            let rows = bench::run(&suite, inputs.as_deref())?;
+            let rows = bench::run(&suite, inputs.as_deref(), pairs.as_deref())?;
             emit(json, || bench::to_json(&rows), || bench::to_markdown(&rows));
         }
         Command::Batch { file } => {

@@ -204,6 +204,71 @@ pub struct NaturalReport {
     pub(crate) section7: Option<super::tangency::Section7>,
     pub(crate) method: &'static str,
     pub(crate) notes: Vec<String>,
+    /// Class and counts (the same whichever route answered).
+    pub(crate) counts: Counts,
+    /// False when only the class and counts were asked for (fast route).
+    pub(crate) components_computed: bool,
+    /// For a request without components: which route answered.
+    pub(crate) route: Option<Route>,
+}
+
+/// Which route answered a request for the class and counts only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Route {
+    /// The fast exact route (no components computed).
+    Fast,
+    /// The complete route, because the fast one could not decide (the
+    /// reason).
+    Complete(&'static str),
+}
+
+/// Class and counts of an intersection (contract §4 conventions: real
+/// affine components, a double line once, acnodes of a curve in `points`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Counts {
+    /// The class.
+    pub class: Class,
+    /// Real affine conics.
+    pub conics: usize,
+    /// Real affine lines.
+    pub lines: usize,
+    /// Isolated real points (acnodes of a curve included).
+    pub points: usize,
+}
+
+impl Counts {
+    pub(crate) fn new(class: Class, conics: usize, lines: usize, points: usize) -> Counts {
+        Counts {
+            class,
+            conics,
+            lines,
+            points,
+        }
+    }
+
+    pub(crate) fn same_surface() -> Counts {
+        Counts::new(Class::SameSurface, 0, 0, 0)
+    }
+
+    /// The counts of a list of components.
+    pub(crate) fn of_components(components: &[Component]) -> Counts {
+        let count = |f: fn(&Component) -> bool| components.iter().filter(|c| f(c)).count();
+        let acnodes: usize = components
+            .iter()
+            .map(|c| match c {
+                Component::Curve { singular, .. } => {
+                    singular.iter().filter(|(_, iso)| *iso).count()
+                }
+                _ => 0,
+            })
+            .sum();
+        Counts::new(
+            class_of(components),
+            count(|c| matches!(c, Component::Conic { .. })),
+            count(|c| matches!(c, Component::Line { .. })),
+            count(|c| matches!(c, Component::Point { .. })) + acnodes,
+        )
+    }
 }
 
 impl NaturalReport {
@@ -261,38 +326,29 @@ impl NaturalReport {
 
     /// Number of real affine conics.
     pub fn conics(&self) -> usize {
-        self.components
-            .iter()
-            .filter(|c| matches!(c, Component::Conic { .. }))
-            .count()
+        self.counts.conics
     }
 
     /// Number of real affine lines (a double line counts once).
     pub fn lines(&self) -> usize {
-        self.components
-            .iter()
-            .filter(|c| matches!(c, Component::Line { .. }))
-            .count()
+        self.counts.lines
     }
 
     /// Number of isolated real points (acnodes of a curve included).
     pub fn points(&self) -> usize {
-        let own = self
-            .components
-            .iter()
-            .filter(|c| matches!(c, Component::Point { .. }))
-            .count();
-        let acn: usize = self
-            .components
-            .iter()
-            .map(|c| match c {
-                Component::Curve { singular, .. } => {
-                    singular.iter().filter(|(_, iso)| *iso).count()
-                }
-                _ => 0,
-            })
-            .sum();
-        own + acn
+        self.counts.points
+    }
+
+    /// True when the fast route answered (no components computed).
+    pub(crate) fn answered_fast(&self) -> bool {
+        self.route == Some(Route::Fast)
+    }
+
+    /// False when only the class and counts were asked for
+    /// ([`super::ClassifyOptions::without_components`]): then
+    /// [`NaturalReport::components`] and the deciders are empty.
+    pub fn has_components(&self) -> bool {
+        self.components_computed
     }
 }
 

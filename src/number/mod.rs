@@ -9,13 +9,16 @@
 //! Floats appear only in printed approximations, and those are computed from
 //! the exact value by integer arithmetic ([`approx_decimal`]).
 
+pub(crate) mod filter;
 pub mod fixed;
+pub(crate) mod float;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
 mod sign;
 
-pub use parse::{NumberError, parse_rational, scan_number};
+pub use float::double_value;
+pub use parse::{NumberError, NumberMode, parse_rational, parse_rational_with, scan_number_with};
 pub use qsqrt::QSqrt;
 pub use sign::Sign;
 

@@ -17,7 +17,7 @@
 //! keep hostile inputs from hanging: see [`Limits`].
 
 use super::mpoly::{MPoly, QMPoly};
-use crate::number::{Q, scan_number};
+use crate::number::{NumberMode, Q, scan_number_with};
 use num_traits::{One, Zero};
 use std::fmt;
 
@@ -78,6 +78,13 @@ pub fn parse_poly(text: &str) -> Result<QMPoly, ParseError> {
 
 /// Parses a polynomial expression with explicit limits.
 pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError> {
+    parse_poly_in(text, limits, NumberMode::Exact)
+}
+
+/// Parses a polynomial expression with explicit limits, reading every
+/// number literal in the given [`NumberMode`] (float mode: each literal
+/// becomes its nearest double).
+pub fn parse_poly_in(text: &str, limits: &Limits, mode: NumberMode) -> Result<QMPoly, ParseError> {
     if text.len() > limits.max_input_bytes {
         return Err(ParseError {
             message: format!(
@@ -94,6 +101,7 @@ pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError
         pos: 0,
         depth: 0,
         limits,
+        mode,
     };
     p.skip_ws();
     if p.pos == p.s.len() {
@@ -115,6 +123,7 @@ struct Parser<'a> {
     pos: usize,
     depth: usize,
     limits: &'a Limits,
+    mode: NumberMode,
 }
 
 fn variable(c: u8) -> Option<usize> {
@@ -414,10 +423,11 @@ impl Parser<'_> {
             return Err(self.err_at("unexpected end of expression", self.pos));
         };
         if c.is_ascii_digit() || c == b'.' {
-            let (v, end) = scan_number(self.s, self.pos).map_err(|e| ParseError {
-                message: e.message,
-                column: self.err_at("", e.column - 1).column,
-            })?;
+            let (v, end) =
+                scan_number_with(self.s, self.pos, self.mode).map_err(|e| ParseError {
+                    message: e.message,
+                    column: self.err_at("", e.column - 1).column,
+                })?;
             self.pos = end;
             return Ok(MPoly::constant(v));
         }
@@ -482,6 +492,44 @@ mod tests {
     }
 
     #[test]
+    fn hex_literals_and_implicit_multiplication() {
+        // the grammar of number::parse: a hex literal starts at 0x only
+        // when a hex digit or '.' follows; a variable may follow it
+        assert_eq!(s("0x1p3x"), "8*x");
+        assert_eq!(s("0x1.8p1x^2 - 0x.8y"), "3*x^2 - 1/2*y");
+        assert_eq!(s("0x^2 + 1"), "1");
+        assert_eq!(s("2x + 0xy"), "2*x");
+        assert_eq!(s("0xap-1(x+1)"), "5*x + 5");
+        assert_eq!(s("-0x1p-3"), "-1/8");
+        let e = parse_poly("x + 0x1p").unwrap_err();
+        assert_eq!(e.column, 9);
+        assert!(e.message.contains("binary exponent"), "{e}");
+        // inside a hex literal 'e' is a digit: 0x1.8e = 1 + 8/16 + 14/256
+        assert_eq!(
+            parse_poly("0x1.8e").unwrap().to_string_canonical(),
+            "199/128"
+        );
+        let e = parse_poly("0x1g + x").unwrap_err();
+        assert_eq!(
+            (e.message.as_str(), e.column),
+            ("unexpected 'g' in a hexadecimal number", 4)
+        );
+    }
+
+    #[test]
+    fn float_mode_reads_literals_as_doubles() {
+        let f = |t: &str| {
+            parse_poly_in(t, &Limits::default(), NumberMode::Float)
+                .unwrap()
+                .to_string_canonical()
+        };
+        assert_eq!(f("0.5x + 0.25"), "1/2*x + 1/4");
+        assert_eq!(f("0.1x"), "3602879701896397/36028797018963968*x");
+        assert_eq!(f("x/10"), "1/10*x"); // 10 is a double: the quotient stays exact
+        assert_eq!(s("0.1x"), "1/10*x");
+    }
+
+    #[test]
     fn errors_name_problem_and_column() {
         let cases = [
             ("x + ", "unexpected end of expression", 5),
@@ -537,5 +585,18 @@ mod doc_examples {
         assert_eq!(p.to_string_canonical(), "2*x^2 - 3*x + 1/4*y + 3");
         let e = parse_poly("(x + 1))").unwrap_err();
         assert_eq!(e.to_string(), "unexpected ')' at column 8");
+    }
+}
+
+#[cfg(test)]
+mod doc_examples_more {
+    //! Examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_poly_in() {
+        use crate::number::NumberMode;
+        use crate::poly::{Limits, parse_poly_in};
+        let p = parse_poly_in("0x1p3x + 0.5", &Limits::default(), NumberMode::Float).unwrap();
+        assert_eq!(p.to_string_canonical(), "8*x + 1/2");
     }
 }

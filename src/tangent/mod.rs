@@ -36,7 +36,7 @@ pub(crate) use crate::geom::QuadricForm;
 
 use crate::budget::{Budget, Exhausted};
 use crate::error::{Error, ErrorKind};
-use crate::poly::{IntPoly, Polynomial, QMPoly, ZPoly, parse_poly};
+use crate::poly::{IntPoly, Polynomial, QMPoly, ZPoly};
 use crate::roots::RealAlg;
 use std::cmp::Ordering;
 use std::fmt;
@@ -381,8 +381,20 @@ impl TangentReport {
 /// assert_eq!(r.max().unwrap().to_string(), "187/9");
 /// ```
 pub fn decide_str(ellipsoid: &str, surface: &str) -> Result<TangentReport, Error> {
-    let e = parse_poly(ellipsoid).map_err(|x| Error::from(x).context("in the ellipsoid"))?;
-    let s = parse_poly(surface).map_err(|x| Error::from(x).context("in the surface"))?;
+    decide_str_in(ellipsoid, surface, crate::number::NumberMode::Exact)
+}
+
+/// [`decide_str`] with the number literals read in the given mode
+/// ([`NumberMode::Float`](crate::NumberMode::Float): each decimal literal
+/// becomes its nearest double, as a program reading it would see it).
+pub fn decide_str_in(
+    ellipsoid: &str,
+    surface: &str,
+    mode: crate::number::NumberMode,
+) -> Result<TangentReport, Error> {
+    let parse = |t: &str| crate::poly::parse_poly_in(t, &crate::poly::Limits::default(), mode);
+    let e = parse(ellipsoid).map_err(|x| Error::from(x).context("in the ellipsoid"))?;
+    let s = parse(surface).map_err(|x| Error::from(x).context("in the surface"))?;
     decide_poly(&e, &s)
 }
 

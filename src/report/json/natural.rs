@@ -4,7 +4,7 @@ use crate::geom::vec3::V3;
 use crate::natural::Natural;
 use crate::natural::exact::{EPoint, Exact, normalize_direction};
 use crate::natural::result::Plane;
-use crate::natural::result::{Component, NaturalReport, PlanarDeciders};
+use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 use serde_json::{Value, json};
@@ -114,7 +114,39 @@ fn section7_json(s: &Section7) -> Value {
 }
 
 /// `quadsect natural --json`.
+///
+/// For a request without components the fast route's answer has `class`,
+/// `conics`, `lines`, `points`, `axes`, `thm8`, `method` and `route`
+/// (`fast`); when the complete route had to answer, its whole report
+/// follows with `route: "complete"` and the `fallback` reason.
 pub fn natural_json(r: &NaturalReport) -> Value {
+    match r.route {
+        Some(Route::Fast) => {
+            return json!({
+                "class": r.class.as_str(),
+                "conics": r.conics(),
+                "lines": r.lines(),
+                "points": r.points(),
+                "axes": r.axes.as_ref().map(|a| a.as_str()),
+                "thm8": r.thm8,
+                "method": r.method,
+                "route": "fast",
+            });
+        }
+        Some(Route::Complete(why)) => {
+            let mut v = complete_json(r);
+            if let Value::Object(m) = &mut v {
+                m.insert("route".into(), json!("complete"));
+                m.insert("fallback".into(), json!(why));
+            }
+            return v;
+        }
+        None => {}
+    }
+    complete_json(r)
+}
+
+fn complete_json(r: &NaturalReport) -> Value {
     json!({
         "class": r.class.as_str(),
         "conics": r.conics(),

@@ -1,7 +1,7 @@
 //! Human-readable text of `quadsect natural` (contract §4 JSON and the human summary).
 
 use crate::natural::exact::{EPoint, epoint_text, normalize_direction};
-use crate::natural::result::{Class, Component, NaturalReport};
+use crate::natural::result::{Class, Component, NaturalReport, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 
@@ -145,7 +145,7 @@ pub fn natural_human(r: &NaturalReport) -> String {
         };
         s.push_str(&format!("§7        {v}\n"));
     }
-    if r.components.is_empty() && r.class != Class::SameSurface {
+    if r.components.is_empty() && r.class != Class::SameSurface && r.components_computed {
         s.push_str("no real intersection\n");
     }
     for (i, c) in r.components.iter().enumerate() {
@@ -153,6 +153,11 @@ pub fn natural_human(r: &NaturalReport) -> String {
     }
     for n in &r.notes {
         s.push_str(&format!("note: {n}\n"));
+    }
+    match r.route {
+        Some(Route::Fast) => s.push_str("route     fast (no components computed)\n"),
+        Some(Route::Complete(why)) => s.push_str(&format!("route     complete ({why})\n")),
+        None => {}
     }
     s
 }
