@@ -1,9 +1,17 @@
 //! The `quadsect` command line: argument parsing and dispatch only.
 
+mod cli_alloc;
+mod cli_limits;
+
 use clap::{Parser, Subcommand};
+use cli_limits::LimitArgs;
+use quadsect::budget::{self, Exhausted};
 use quadsect::{Error, ErrorKind};
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
+
+#[global_allocator]
+static ALLOC: cli_alloc::Counting = cli_alloc::Counting;
 
 #[derive(Parser)]
 #[command(
@@ -33,6 +41,8 @@ enum Command {
         /// JSON output (SPEC §5).
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// The resultant of two polynomials with respect to a variable.
     Resultant {
@@ -48,6 +58,8 @@ enum Command {
         /// JSON output.
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// Ellipsoid vs algebraic surface: intersect, touch or separated (exact, with certificate).
     Tangent {
@@ -60,6 +72,8 @@ enum Command {
         /// JSON output (SPEC §3).
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
     Natural {
@@ -70,6 +84,8 @@ enum Command {
         /// JSON output (SPEC §4).
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// Median timings (kernel on ../shared/bench/inputs.json, tangent, natural).
     Bench {
@@ -87,17 +103,53 @@ enum Command {
     Batch {
         /// Input file; standard input when absent or "-".
         file: Option<String>,
+        /// Worker threads (default: all cores).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
+}
+
+/// The JSON or the human form (only the one asked for is built).
+fn render(
+    json: bool,
+    v: impl FnOnce() -> serde_json::Value,
+    human: impl FnOnce() -> String,
+) -> String {
+    if json { format!("{}\n", v()) } else { human() }
 }
 
 /// Prints the JSON or the human form (only the one asked for is built).
 fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() -> String) {
-    let mut out = std::io::stdout().lock();
-    let _ = if json {
-        writeln!(out, "{}", v())
-    } else {
-        write!(out, "{}", human())
-    };
+    print_text(&render(json, v, human));
+}
+
+fn print_text(text: &str) {
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}
+
+/// Computes and formats an answer within the budget of `limits` and prints
+/// it.  When the budget runs out, `exhausted` gives the text of the answer
+/// for that case (`None`: there is none, the error alone is reported); the
+/// command then fails with the budget error (exit status 3).
+fn within(
+    limits: &LimitArgs,
+    compute: impl FnOnce() -> Result<String, Error>,
+    exhausted: impl FnOnce(&Exhausted) -> Option<String>,
+) -> Result<(), Error> {
+    match budget::run(&limits.budget(), compute) {
+        Ok(text) => {
+            print_text(&text?);
+            Ok(())
+        }
+        Err(e) => {
+            if let Some(text) = exhausted(&e) {
+                print_text(&text);
+            }
+            Err(e.into())
+        }
+    }
 }
 
 fn run(cli: Cli) -> Result<(), Error> {
@@ -110,41 +162,88 @@ fn run(cli: Cli) -> Result<(), Error> {
                 || quadsect::examples::to_human(&r),
             );
         }
-        Command::Roots { expr, json } => {
-            let r = quadsect::ops::roots(&expr)?;
-            emit(
-                json,
-                || quadsect::report::roots_json(&r),
-                || quadsect::report::roots_human(&r),
-            );
-        }
-        Command::Resultant { f, g, var, json } => {
-            let r = quadsect::ops::resultant(&f, &g, &var)?;
-            emit(
-                json,
-                || quadsect::report::resultant_json(&r),
-                || quadsect::report::resultant_human(&r),
-            );
-        }
+        Command::Roots { expr, json, limits } => within(
+            &limits,
+            || {
+                let r = quadsect::ops::roots(&expr)?;
+                Ok(render(
+                    json,
+                    || quadsect::report::roots_json(&r),
+                    || quadsect::report::roots_human(&r),
+                ))
+            },
+            |_| None,
+        )?,
+        Command::Resultant {
+            f,
+            g,
+            var,
+            json,
+            limits,
+        } => within(
+            &limits,
+            || {
+                let r = quadsect::ops::resultant(&f, &g, &var)?;
+                Ok(render(
+                    json,
+                    || quadsect::report::resultant_json(&r),
+                    || quadsect::report::resultant_human(&r),
+                ))
+            },
+            |_| None,
+        )?,
         Command::Tangent {
             ellipsoid,
             surface,
             json,
-        } => {
-            let r = quadsect::tangent::decide_str(&ellipsoid, &surface)?;
-            emit(
-                json,
-                || quadsect::report::tangent_json(&r),
-                || quadsect::report::tangent_human(&r),
-            );
-        }
-        Command::Natural { a, b, json } => {
-            let r = quadsect::natural::classify_str(&a, &b)?;
-            emit(
-                json,
-                || quadsect::report::natural_json(&r),
-                || quadsect::report::natural_human(&r),
-            );
+            limits,
+        } => within(
+            &limits,
+            || {
+                let r = quadsect::tangent::decide_str(&ellipsoid, &surface)?;
+                Ok(render(
+                    json,
+                    || quadsect::report::tangent_json(&r),
+                    || quadsect::report::tangent_human(&r),
+                ))
+            },
+            |e| {
+                let zero = quadsect::poly::QMPoly::zero;
+                let r =
+                    quadsect::tangent::TangentReport::budget_exhausted(zero(), zero(), e.clone());
+                Some(render(
+                    json,
+                    || quadsect::report::tangent_json(&r),
+                    || quadsect::report::tangent_human(&r),
+                ))
+            },
+        )?,
+        Command::Natural { a, b, json, limits } => {
+            let qa = quadsect::natural::parse_natural(&a).map_err(|e| e.context("in A"))?;
+            let qb = quadsect::natural::parse_natural(&b).map_err(|e| e.context("in B"))?;
+            within(
+                &limits,
+                || {
+                    let r = quadsect::natural::classify(&qa, &qb)?;
+                    Ok(render(
+                        json,
+                        || quadsect::report::natural_json(&r),
+                        || quadsect::report::natural_human(&r),
+                    ))
+                },
+                |e| {
+                    let r = quadsect::natural::result::NaturalReport::budget_exhausted(
+                        &qa,
+                        &qb,
+                        e.clone(),
+                    );
+                    Some(render(
+                        json,
+                        || quadsect::report::natural_json(&r),
+                        || quadsect::report::natural_human(&r),
+                    ))
+                },
+            )?
         }
         Command::Bench {
             suite,
@@ -158,20 +257,36 @@ fn run(cli: Cli) -> Result<(), Error> {
                 || quadsect::bench::to_markdown(&rows),
             );
         }
-        Command::Batch { file } => {
-            let progress = std::io::stderr().is_terminal();
+        Command::Batch {
+            file,
+            threads,
+            limits,
+        } => {
+            let mut opts = quadsect::batch::BatchOptions {
+                budget: limits.budget(),
+                progress: std::io::stderr().is_terminal(),
+                ..Default::default()
+            };
+            if let Some(n) = threads {
+                opts.threads = n.max(1);
+                opts.lookahead = quadsect::batch::DEFAULT_LOOKAHEAD * opts.threads;
+            }
             let out = std::io::BufWriter::new(std::io::stdout().lock());
             let res = match file.as_deref() {
-                None | Some("-") => {
-                    quadsect::batch::run_batch(std::io::stdin().lock(), out, progress)
-                }
+                None | Some("-") => quadsect::batch::run_batch_with(
+                    std::io::BufReader::new(std::io::stdin()),
+                    out,
+                    &opts,
+                ),
                 Some(path) => {
                     let f = std::fs::File::open(path).map_err(|e| {
                         Error::new(ErrorKind::Io, format!("cannot open batch file {path}: {e}"))
                     })?;
-                    quadsect::batch::run_batch(std::io::BufReader::new(f), out, progress)
+                    opts.input_bytes = f.metadata().ok().filter(|m| m.is_file()).map(|m| m.len());
+                    quadsect::batch::run_batch_with(std::io::BufReader::new(f), out, &opts)
                 }
             };
+            // a closed output pipe ends the run quietly (exit status 0)
             res.map_err(|e| Error::new(ErrorKind::Io, format!("batch I/O error: {e}")))?;
         }
     }
@@ -183,6 +298,7 @@ fn main() -> ExitCode {
     std::panic::set_hook(Box::new(|info| {
         eprintln!("internal error: {info}");
     }));
+    budget::set_memory_probe(cli_alloc::thread_net_bytes);
     let cli = Cli::parse();
     match std::panic::catch_unwind(|| run(cli)) {
         Ok(Ok(())) => ExitCode::SUCCESS,

@@ -2,6 +2,7 @@
 //! result out.  The CLI (`main.rs`) only parses arguments and prints what
 //! these return through [`crate::report`].
 
+use crate::budget::Budget;
 use crate::elim::resultant_mpoly;
 use crate::error::{Error, ErrorKind};
 use crate::poly::mpoly::{QMPoly, VAR_NAMES, var_index};
@@ -59,6 +60,33 @@ pub fn roots(expr: &str) -> Result<RootsResult, Error> {
         integer_poly: z,
         report,
     })
+}
+
+/// [`roots`] within a compute budget: an error of kind
+/// [`ErrorKind::Budget`] when a limit runs out.
+///
+/// ```
+/// use quadsect::budget::Budget;
+/// use quadsect::ErrorKind;
+/// let r = quadsect::ops::roots_within("x^3 - 2x", &Budget::default()).unwrap();
+/// assert_eq!(r.report.distinct_real, 3);
+/// let none = Budget::unlimited().with_time_limit(Some(std::time::Duration::ZERO));
+/// let e = quadsect::ops::roots_within("x^3000 - 3x^1001 + 1", &none).unwrap_err();
+/// assert_eq!(e.kind(), ErrorKind::Budget);
+/// ```
+pub fn roots_within(expr: &str, budget: &Budget) -> Result<RootsResult, Error> {
+    crate::budget::run(budget, || roots(expr)).unwrap_or_else(|e| Err(e.into()))
+}
+
+/// [`resultant`] within a compute budget: an error of kind
+/// [`ErrorKind::Budget`] when a limit runs out.
+pub fn resultant_within(
+    f: &str,
+    g: &str,
+    var: &str,
+    budget: &Budget,
+) -> Result<ResultantResult, Error> {
+    crate::budget::run(budget, || resultant(f, g, var)).unwrap_or_else(|e| Err(e.into()))
 }
 
 /// The result of `quadsect resultant`.

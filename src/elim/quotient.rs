@@ -38,6 +38,19 @@ impl Quotient {
     /// The quotient of a zero-dimensional Gröbner basis (`None` otherwise).
     pub fn new(gb: GroebnerBasis) -> Option<Quotient> {
         let basis = gb.standard_monomials()?;
+        // the multiplication matrices have dim² entries
+        let n = basis.len();
+        let bits = gb
+            .polys
+            .iter()
+            .flat_map(|g| g.terms.iter().map(|(_, c)| c.bits()))
+            .max()
+            .unwrap_or(0);
+        crate::budget::check_size(
+            "a multiplication matrix of the quotient algebra",
+            n.saturating_mul(n),
+            bits,
+        );
         let index = basis.iter().enumerate().map(|(i, m)| (*m, i)).collect();
         Some(Quotient { gb, basis, index })
     }
@@ -66,6 +79,7 @@ impl Quotient {
         self.basis
             .iter()
             .map(|b| {
+                crate::budget::check();
                 let terms: Vec<(Mono, BigInt)> = f
                     .terms
                     .iter()
@@ -111,6 +125,7 @@ pub fn mat_vec(m: &QMatrix, v: &[Q]) -> Vec<Q> {
         if v[j].is_zero() {
             continue;
         }
+        crate::budget::check();
         for (o, mij) in out.iter_mut().zip(m[j].iter()) {
             if !mij.is_zero() {
                 *o += mij * &v[j];
@@ -130,6 +145,7 @@ pub fn mat_comb(terms: &[(Q, &QMatrix)]) -> QMatrix {
             continue;
         }
         for j in 0..n {
+            crate::budget::check();
             for i in 0..rows {
                 if !m[j][i].is_zero() {
                     out[j][i] += &m[j][i] * k;
@@ -180,6 +196,7 @@ fn gauss_jordan_ff(
             if i == r {
                 continue;
             }
+            crate::budget::check();
             let f = std::mem::take(&mut row[c]);
             for j in c + 1..width {
                 let mut t = p * &row[j];
@@ -228,6 +245,15 @@ pub fn krylov_shape(
         .map(|col| col.iter().map(|c| c.numer() * (&l / c.denom())).collect())
         .collect();
     let (v0, lv) = to_integers(v);
+    // the Krylov vectors w_0 … w_n have entries of up to about
+    // n·bits(M) + bits(V) bits; the elimination works on minors of them
+    let mbits = mi.iter().flatten().map(|c| c.bits()).max().unwrap_or(0);
+    let vbits = v0.iter().map(|c| c.bits()).max().unwrap_or(0);
+    crate::budget::check_size(
+        "the Krylov matrix of a minimal polynomial",
+        n.saturating_mul(n + 1 + rhs.len()),
+        (n as u64).saturating_mul(mbits + crate::poly::upoly::log2_ceil(n)) + vbits,
+    );
     // Krylov vectors w_0 … w_n (integral)
     let mut ws: Vec<Vec<BigInt>> = Vec::with_capacity(n + 1);
     ws.push(v0);
@@ -238,6 +264,7 @@ pub fn krylov_shape(
             if cj.is_zero() {
                 continue;
             }
+            crate::budget::check();
             for (o, mij) in out.iter_mut().zip(mi[j].iter()) {
                 if !mij.is_zero() {
                     *o += mij * cj;

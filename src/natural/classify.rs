@@ -77,6 +77,7 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
             section7: None,
             method: "proportional equations",
             notes,
+            exhausted: None,
         });
     }
     let (components, method): (Vec<Component>, &'static str) = match (a, b) {
@@ -166,6 +167,7 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
         section7: sec7,
         method,
         notes,
+        exhausted: None,
     })
 }
 
@@ -185,6 +187,37 @@ pub fn section7_agrees(s7: &Section7, comps: &[Component]) -> bool {
                     == p.len()
         }
     }
+}
+
+/// [`classify`] within a compute budget: when a limit runs out the class
+/// is `Undecided` and [`NaturalReport::exhausted`] says which limit.
+///
+/// ```
+/// use quadsect::budget::Budget;
+/// use quadsect::natural::{classify_within, parse_natural, result::Class};
+/// let a = parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
+/// let b = parse_natural("cylinder point=0,0,0 axis=0,1,0 radius2=1").unwrap();
+/// assert_eq!(classify_within(&a, &b, &Budget::default()).unwrap().class, Class::Conics);
+/// ```
+pub fn classify_within(
+    a: &Natural,
+    b: &Natural,
+    budget: &crate::budget::Budget,
+) -> Result<NaturalReport, Error> {
+    crate::budget::run(budget, || classify(a, b))
+        .unwrap_or_else(|e| Ok(NaturalReport::budget_exhausted(a, b, e)))
+}
+
+/// [`classify_str`] within a compute budget (the parsing of the two
+/// quadrics, bounded by the number syntax's limits, runs before it).
+pub fn classify_str_within(
+    a: &str,
+    b: &str,
+    budget: &crate::budget::Budget,
+) -> Result<NaturalReport, Error> {
+    let qa = parse_natural(a).map_err(|e| e.context("in A"))?;
+    let qb = parse_natural(b).map_err(|e| e.context("in B"))?;
+    classify_within(&qa, &qb, budget)
 }
 
 /// Parses two quadrics (JSON or short syntax) and classifies them.

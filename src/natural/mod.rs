@@ -13,5 +13,5 @@ pub mod topology;
 pub mod types;
 pub mod vec3;
 
-pub use classify::{classify, classify_str};
+pub use classify::{classify, classify_str, classify_str_within, classify_within};
 pub use types::{Cone, Cylinder, Natural, Sphere, cayley_rotation, parse_natural};

@@ -126,6 +126,9 @@ pub enum Class {
     Empty,
     /// A space curve that is not made of lines and conics.
     Curve,
+    /// Not decided: the compute budget ran out (see
+    /// [`NaturalReport::exhausted`]).
+    Undecided,
 }
 
 impl Class {
@@ -139,6 +142,7 @@ impl Class {
             Class::Points => "points",
             Class::Empty => "empty",
             Class::Curve => "curve",
+            Class::Undecided => "undecided",
         }
     }
 }
@@ -193,9 +197,33 @@ pub struct NaturalReport {
     pub method: &'static str,
     /// Remarks.
     pub notes: Vec<String>,
+    /// The compute budget that ran out (class `Undecided`).
+    pub exhausted: Option<crate::budget::Exhausted>,
 }
 
 impl NaturalReport {
+    /// The answer when the compute budget ran out: class `Undecided`, no
+    /// components, and the limit that was hit.
+    pub fn budget_exhausted(
+        a: &Natural,
+        b: &Natural,
+        e: crate::budget::Exhausted,
+    ) -> NaturalReport {
+        NaturalReport {
+            a: a.clone(),
+            b: b.clone(),
+            class: Class::Undecided,
+            axes: None,
+            thm8: None,
+            components: vec![],
+            deciders: None,
+            section7: None,
+            method: "none (the compute budget ran out)",
+            notes: vec![],
+            exhausted: Some(e),
+        }
+    }
+
     /// Number of real affine conics.
     pub fn conics(&self) -> usize {
         self.components

@@ -19,6 +19,8 @@
 use super::mpoly::{MPoly, NVARS, QMPoly};
 use crate::number::{Q, scan_number};
 use num_traits::{One, Zero};
+use std::collections::HashMap;
+use std::collections::hash_map::Entry;
 use std::fmt;
 
 /// Size limits of the parser.  Inputs beyond them are rejected with a clear
@@ -239,28 +241,52 @@ impl Parser<'_> {
     }
 
     fn expr(&mut self) -> Result<QMPoly, ParseError> {
-        let mut acc = self.term()?;
+        let first = self.term()?;
+        let negate = match self.peek() {
+            Some(b'+') => false,
+            Some(b'-') => true,
+            _ => return Ok(first),
+        };
+        // a sum of many terms is accumulated by monomial, so that its cost
+        // is linear in the input (repeated merges would be quadratic)
+        let mut sum = Sum::default();
+        sum.add(&first, false);
+        let mut negate = negate;
         loop {
-            match self.peek() {
-                Some(b'+') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = &acc + &t;
-                }
-                Some(b'-') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = &acc - &t;
-                }
-                _ => return Ok(acc),
+            self.pos += 1;
+            let t = self.term()?;
+            crate::budget::check_for(sum.bits);
+            sum.add(&t, negate);
+            if sum.terms.len() > self.limits.max_terms {
+                return Err(self.err_at(
+                    &format!(
+                        "expression too large: more than {} terms",
+                        self.limits.max_terms
+                    ),
+                    self.pos,
+                ));
             }
-            self.check_size(&acc, self.pos)?;
+            if sum.bits > self.limits.max_coeff_bits {
+                return Err(self.err_at(
+                    &format!(
+                        "a coefficient has more than {} bits (size limit)",
+                        self.limits.max_coeff_bits
+                    ),
+                    self.pos,
+                ));
+            }
+            negate = match self.peek() {
+                Some(b'+') => false,
+                Some(b'-') => true,
+                _ => return Ok(MPoly::from_terms(sum.terms)),
+            };
         }
     }
 
     fn term(&mut self) -> Result<QMPoly, ParseError> {
         let mut acc = self.unary()?;
         loop {
+            crate::budget::check();
             match self.peek() {
                 Some(b'*') => {
                     let at = self.pos;
@@ -458,6 +484,35 @@ impl Parser<'_> {
         }
         let ch = self.current_char();
         Err(self.err_at(&format!("unexpected '{ch}'"), self.pos))
+    }
+}
+
+/// The running value of a sum in [`Parser::expr`]: its non-zero terms by
+/// monomial, and the largest coefficient size (bits of the numerator or
+/// the denominator) among the coefficients changed so far.
+#[derive(Default)]
+struct Sum {
+    terms: HashMap<[u32; NVARS], Q>,
+    bits: u64,
+}
+
+impl Sum {
+    fn add(&mut self, p: &QMPoly, negate: bool) {
+        for (e, c) in p.terms() {
+            let c = if negate { -c } else { c.clone() };
+            let v = match self.terms.entry(*e) {
+                Entry::Occupied(mut o) => {
+                    *o.get_mut() += c;
+                    if o.get().is_zero() {
+                        o.remove();
+                        continue;
+                    }
+                    o.into_mut()
+                }
+                Entry::Vacant(v) => v.insert(c),
+            };
+            self.bits = self.bits.max(v.numer().bits().max(v.denom().bits()));
+        }
     }
 }
 

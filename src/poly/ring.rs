@@ -44,6 +44,13 @@ pub trait Ring: Clone + PartialEq + Debug {
     }
     /// `self / o` when `o` divides `self` exactly, otherwise `None`.
     fn div_exact(&self, o: &Self) -> Option<Self>;
+    /// The bit size of the largest integer stored (numerator plus
+    /// denominator for a rational, the largest coefficient for a
+    /// polynomial): what the size budget ([`crate::budget::check_size`])
+    /// measures.
+    fn bit_size(&self) -> u64 {
+        0
+    }
     /// `self^e` by repeated squaring.
     fn rpow(&self, mut e: u32) -> Self {
         let mut base = self.clone();
@@ -95,6 +102,9 @@ impl Ring for BigInt {
     fn rsub_assign(&mut self, o: &Self) {
         *self -= o;
     }
+    fn bit_size(&self) -> u64 {
+        self.bits()
+    }
     fn div_exact(&self, o: &Self) -> Option<Self> {
         if Zero::is_zero(o) {
             return None;
@@ -102,6 +112,13 @@ impl Ring for BigInt {
         let (q, r) = self.div_rem(o);
         if Zero::is_zero(&r) { Some(q) } else { None }
     }
+}
+
+/// The budget check before a rational operation (each one computes a gcd,
+/// whose cost grows quadratically with the size of the numbers).
+#[inline]
+fn check_pair(a: &BigRational, b: &BigRational) {
+    crate::budget::check_for(a.bit_size().max(b.bit_size()));
 }
 
 impl Ring for BigRational {
@@ -118,22 +135,30 @@ impl Ring for BigRational {
         Zero::is_zero(self)
     }
     fn radd(&self, o: &Self) -> Self {
+        check_pair(self, o);
         self + o
     }
     fn rsub(&self, o: &Self) -> Self {
+        check_pair(self, o);
         self - o
     }
     fn rmul(&self, o: &Self) -> Self {
+        check_pair(self, o);
         self * o
     }
     fn rneg(&self) -> Self {
         -self
     }
     fn radd_assign(&mut self, o: &Self) {
+        check_pair(self, o);
         *self += o;
     }
     fn rsub_assign(&mut self, o: &Self) {
+        check_pair(self, o);
         *self -= o;
+    }
+    fn bit_size(&self) -> u64 {
+        self.numer().bits() + self.denom().bits()
     }
     fn div_exact(&self, o: &Self) -> Option<Self> {
         if Zero::is_zero(o) {

@@ -113,6 +113,22 @@ fn section7_json(s: &Section7) -> Value {
 
 /// `quadsect natural --json`.
 pub fn natural_json(r: &NaturalReport) -> Value {
+    if let Some(e) = &r.exhausted {
+        return json!({
+            "class": r.class.as_str(),
+            "conics": null,
+            "lines": null,
+            "points": null,
+            "axes": null,
+            "thm8": null,
+            "components": [],
+            "method": r.method,
+            "a": r.a.to_json(),
+            "b": r.b.to_json(),
+            "notes": r.notes,
+            "reason": crate::report::budget_reason_json(e),
+        });
+    }
     json!({
         "class": r.class.as_str(),
         "conics": r.conics(),
@@ -204,6 +220,9 @@ fn component_human(c: &Component) -> String {
 
 /// `quadsect natural` for people.
 pub fn natural_human(r: &NaturalReport) -> String {
+    if let Some(e) = &r.exhausted {
+        return format!("class     {}\nreason    {e}\n", r.class.as_str());
+    }
     let mut s = format!(
         "class     {}  ({} conics, {} lines, {} points)\n",
         r.class.as_str(),

@@ -160,7 +160,11 @@ fn method_json(m: &Method) -> Value {
 /// `quadsect tangent --json`.
 pub fn tangent_json(r: &TangentReport) -> Value {
     let c = &r.certificate;
-    let mut cert = method_json(&c.method);
+    let mut cert = if r.exhausted.is_some() {
+        json!({"method": "none"})
+    } else {
+        method_json(&c.method)
+    };
     if let Value::Object(m) = &mut cert {
         m.insert(
             "critical_values".into(),
@@ -187,7 +191,7 @@ pub fn tangent_json(r: &TangentReport) -> Value {
             m.insert("reason".into(), json!(reason));
         }
     }
-    json!({
+    let mut out = json!({
         "intersect": r.intersect,
         "touching": r.touching,
         "side": side_str(r.side),
@@ -197,7 +201,18 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         "judging_poly": upoly_string(&r.judging_poly, U),
         "certificate": cert,
         "verdict": r.verdict.as_str(),
-    })
+    });
+    // why an undecided answer is undecided: the budget that ran out, or
+    // the step that could not produce a certificate
+    let reason = match (&r.exhausted, &r.reason) {
+        (Some(e), _) => Some(crate::report::budget_reason_json(e)),
+        (None, Some(why)) => Some(json!({"kind": "no-certificate", "message": why})),
+        (None, None) => None,
+    };
+    if let (Some(reason), Value::Object(m)) = (reason, &mut out) {
+        m.insert("reason".into(), reason);
+    }
+    out
 }
 
 fn alg_human(a: &RealAlg) -> String {
@@ -247,6 +262,9 @@ pub fn tangent_human(r: &TangentReport) -> String {
     ));
     if let Some(reason) = &r.reason {
         s.push_str(&format!("reason    {reason}\n"));
+    }
+    if r.exhausted.is_some() {
+        return s;
     }
     if let Some(m) = &r.min {
         s.push_str(&format!("min S|E   {}\n", alg_human(m)));

@@ -33,6 +33,7 @@ pub mod witness;
 pub use ellipsoid::{Ellipsoid, QuadricForm};
 pub use witness::WitnessPoint;
 
+use crate::budget::{Budget, Exhausted};
 use crate::error::{Error, ErrorKind};
 use crate::poly::{QMPoly, ZPoly, parse_poly};
 use crate::roots::RealAlg;
@@ -148,6 +149,71 @@ pub struct TangentReport {
     pub certificate: Certificate,
     /// Why no verdict could be given (only for `Undecided`).
     pub reason: Option<String>,
+    /// The compute budget that ran out, when that is why the verdict is
+    /// `Undecided` (see [`decide_within`]).
+    pub exhausted: Option<Exhausted>,
+}
+
+impl TangentReport {
+    /// The answer when the compute budget ran out: `Undecided`, with the
+    /// limit that was hit.
+    pub fn budget_exhausted(ellipsoid: QMPoly, surface: QMPoly, e: Exhausted) -> TangentReport {
+        let mut r = undecided_report(ellipsoid, surface, e.to_string());
+        r.exhausted = Some(e);
+        r
+    }
+}
+
+/// [`decide`] within a compute budget: when a limit runs out (time, memory,
+/// size of an intermediate object, cancellation) the answer is `Undecided`
+/// with [`TangentReport::exhausted`] saying which — never a long run and
+/// never a guess.  Bad input is still an error.
+///
+/// ```
+/// use quadsect::budget::{Budget, Limit};
+/// use quadsect::poly::parse_poly;
+/// use quadsect::tangent::{decide_within, Verdict};
+/// let (e, s) = (parse_poly("x^2+y^2+z^2-25").unwrap(), parse_poly("x^3+y*z-1").unwrap());
+/// let quick = Budget::unlimited().with_time_limit(Some(std::time::Duration::ZERO));
+/// let r = decide_within(&e, &s, &quick).unwrap();
+/// assert_eq!(r.verdict, Verdict::Undecided);
+/// assert_eq!(r.exhausted.unwrap().limit(), Limit::Time);
+/// let r = decide_within(&e, &s, &Budget::default()).unwrap();
+/// assert_eq!(r.verdict, Verdict::Intersecting);
+/// ```
+pub fn decide_within(
+    ellipsoid: &QMPoly,
+    surface: &QMPoly,
+    budget: &Budget,
+) -> Result<TangentReport, Error> {
+    crate::budget::run(budget, || decide(ellipsoid, surface)).unwrap_or_else(|e| {
+        Ok(TangentReport::budget_exhausted(
+            ellipsoid.clone(),
+            surface.clone(),
+            e,
+        ))
+    })
+}
+
+/// [`decide_str`] within a compute budget (parsing included), as
+/// [`decide_within`].  When the budget runs out before both expressions
+/// are parsed, the report's polynomials are zero.
+pub fn decide_str_within(
+    ellipsoid: &str,
+    surface: &str,
+    budget: &Budget,
+) -> Result<TangentReport, Error> {
+    let mut parsed: Option<(QMPoly, QMPoly)> = None;
+    let r = crate::budget::run(budget, || {
+        let e = parse_poly(ellipsoid).map_err(|x| Error::from(x).context("in --ellipsoid"))?;
+        let s = parse_poly(surface).map_err(|x| Error::from(x).context("in --surface"))?;
+        let (e, s) = parsed.insert((e, s));
+        decide(e, s)
+    });
+    r.unwrap_or_else(|x| {
+        let (e, s) = parsed.unwrap_or_else(|| (QMPoly::zero(), QMPoly::zero()));
+        Ok(TangentReport::budget_exhausted(e, s, x))
+    })
 }
 
 /// Decides E against S given as text.
@@ -282,9 +348,13 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
 
 /// The answer when no certificate could be produced (never a guess).
 fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
+    undecided_report(e.poly.clone(), surface.clone(), why)
+}
+
+fn undecided_report(ellipsoid: QMPoly, surface: QMPoly, why: String) -> TangentReport {
     TangentReport {
-        ellipsoid: e.poly.clone(),
-        surface: surface.clone(),
+        ellipsoid,
+        surface,
         verdict: Verdict::Undecided,
         intersect: None,
         touching: None,
@@ -302,6 +372,7 @@ fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
             notes: vec![],
         },
         reason: Some(why),
+        exhausted: None,
     }
 }
 
@@ -421,6 +492,7 @@ fn finish(
             notes,
         },
         reason: None,
+        exhausted: None,
     }
 }
 
