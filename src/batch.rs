@@ -283,6 +283,19 @@ impl Window {
     }
 }
 
+/// Stops the reader and cancels the running lines when the run ends.
+struct StopOnDrop {
+    window: Arc<Window>,
+    cancel: Arc<AtomicBool>,
+}
+
+impl Drop for StopOnDrop {
+    fn drop(&mut self) {
+        self.cancel.store(true, Ordering::Relaxed);
+        self.window.stop();
+    }
+}
+
 /// Reads the lines of `input` lazily (one more only when the look-ahead
 /// allows it) and queues them; returns the first read error.
 fn read_lines(
@@ -375,6 +388,12 @@ pub fn run_batch_with(
         }),
         changed: Condvar::new(),
     });
+    // however the run ends, the reader stops and the lines still running
+    // are cancelled
+    let _stop = StopOnDrop {
+        window: window.clone(),
+        cancel: cancel.clone(),
+    };
     let (job_tx, job_rx) = mpsc::channel::<Job>();
     let (ans_tx, ans_rx) = mpsc::channel::<Job>();
     let reader = {
@@ -446,9 +465,6 @@ pub fn run_batch_with(
         b.finish_and_clear();
     }
     if closed {
-        // stop the reader and cancel the lines still running
-        cancel.store(true, Ordering::Relaxed);
-        window.stop();
         return Ok(BatchSummary {
             lines: written,
             output_closed: true,

@@ -41,9 +41,11 @@ pub const CHECK_EVERY: u32 = 64;
 
 /// Default wall-time limit of one CLI operation (or one batch line).
 pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
-/// Default memory limit of the CLI process, in bytes (when the allocator
-/// reports its use, see [`set_memory_probe`]).
-pub const DEFAULT_MEMORY_LIMIT: usize = 2 << 30;
+/// Default memory limit of one CLI operation (or one batch line), in bytes:
+/// the growth of the memory probe's count during the operation (see
+/// [`set_memory_probe`]; the CLI counts per thread), and the largest
+/// estimated size of one intermediate object ([`check_size`]).
+pub const DEFAULT_MEMORY_LIMIT: usize = 1 << 30;
 /// Default largest number of terms of an intermediate polynomial (or
 /// entries of a Gröbner basis / matrix) checked by [`check_size`].
 pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
@@ -292,6 +294,8 @@ pub fn run<T>(budget: &Budget, f: impl FnOnce() -> T) -> Result<T, Exhausted> {
         }
     });
     let previous = ACTIVE.with(|a| a.borrow_mut().replace(new));
+    // the first check of the run reads the clock
+    COUNTDOWN.with(|c| c.set(1));
     let result = catch_unwind(AssertUnwindSafe(f));
     ACTIVE.with(|a| *a.borrow_mut() = previous);
     match result {
@@ -398,12 +402,17 @@ pub fn check_now() {
     }
 }
 
+/// The storage of one term (or matrix entry) besides its coefficient's
+/// digits, in the memory estimate of [`check_size`]: an exponent vector or
+/// index and the big integers' headers.
+const TERM_BYTES: u128 = 48;
+
 /// Checks the size of an intermediate object that is about to be built or
 /// has just grown: `terms` (terms of a polynomial, entries of a matrix or
 /// basis) and `bits` (the largest coefficient's bit size).  `what` names
 /// the object for the message.  Besides the term and bit limits, an object
-/// whose estimated storage (`terms · bits / 8` bytes) alone exceeds the
-/// memory limit is refused (this needs no memory probe).  Also performs
+/// whose estimated storage (`terms · (bits / 8 + 48)` bytes) alone exceeds
+/// the memory limit is refused (this needs no memory probe).  Also performs
 /// [`check`].
 ///
 /// The estimates passed here are upper bounds computed from the operands
@@ -414,7 +423,7 @@ pub fn check_size(what: &str, terms: usize, bits: u64) {
         let a = a.borrow();
         let a = a.as_ref()?;
         if let Some(limit) = a.memory {
-            let bytes = (terms as u128) * (bits as u128) / 8;
+            let bytes = (terms as u128) * (bits as u128 / 8 + TERM_BYTES);
             if bytes > limit as u128 {
                 return Some(Exhausted::new(
                     Limit::Size,

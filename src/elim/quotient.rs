@@ -38,7 +38,7 @@ impl Quotient {
     /// The quotient of a zero-dimensional Gröbner basis (`None` otherwise).
     pub fn new(gb: GroebnerBasis) -> Option<Quotient> {
         let basis = gb.standard_monomials()?;
-        // the multiplication matrices have dim² entries
+        // the multiplication matrices by x, y, z have dim² entries each
         let n = basis.len();
         let bits = gb
             .polys
@@ -47,8 +47,8 @@ impl Quotient {
             .max()
             .unwrap_or(0);
         crate::budget::check_size(
-            "a multiplication matrix of the quotient algebra",
-            n.saturating_mul(n),
+            "the multiplication matrices of the quotient algebra",
+            n.saturating_mul(n).saturating_mul(3),
             bits,
         );
         let index = basis.iter().enumerate().map(|(i, m)| (*m, i)).collect();
@@ -240,20 +240,31 @@ pub fn krylov_shape(
 ) -> Result<KrylovShape, crate::error::Error> {
     let n = v.len();
     let l = crate::number::denom_lcm(m.iter().flatten());
-    let mi: Vec<Vec<BigInt>> = m
-        .iter()
-        .map(|col| col.iter().map(|c| c.numer() * (&l / c.denom())).collect())
-        .collect();
-    let (v0, lv) = to_integers(v);
     // the Krylov vectors w_0 … w_n have entries of up to about
-    // n·bits(M) + bits(V) bits; the elimination works on minors of them
-    let mbits = mi.iter().flatten().map(|c| c.bits()).max().unwrap_or(0);
-    let vbits = v0.iter().map(|c| c.bits()).max().unwrap_or(0);
+    // n·bits(M) + bits(V) bits (M = L·m integral); the elimination works on
+    // minors of them.  Estimated before anything is built.
+    let mbits = m
+        .iter()
+        .flatten()
+        .map(|c| c.numer().bits())
+        .max()
+        .unwrap_or(0)
+        + l.bits();
+    let vbits = v
+        .iter()
+        .map(|c| c.numer().bits() + c.denom().bits())
+        .max()
+        .unwrap_or(0);
     crate::budget::check_size(
         "the Krylov matrix of a minimal polynomial",
         n.saturating_mul(n + 1 + rhs.len()),
         (n as u64).saturating_mul(mbits + crate::poly::upoly::log2_ceil(n)) + vbits,
     );
+    let mi: Vec<Vec<BigInt>> = m
+        .iter()
+        .map(|col| col.iter().map(|c| c.numer() * (&l / c.denom())).collect())
+        .collect();
+    let (v0, lv) = to_integers(v);
     // Krylov vectors w_0 … w_n (integral)
     let mut ws: Vec<Vec<BigInt>> = Vec::with_capacity(n + 1);
     ws.push(v0);

@@ -184,7 +184,19 @@ impl Parser<'_> {
     }
 
     fn check_size(&self, p: &QMPoly, at: usize) -> Result<(), ParseError> {
-        if p.len() > self.limits.max_terms {
+        let bits = p
+            .terms()
+            .iter()
+            .map(|(_, c)| c.numer().bits().max(c.denom().bits()))
+            .max()
+            .unwrap_or(0);
+        self.check_counts(p.len(), bits, at)
+    }
+
+    /// The size limits on a polynomial of `terms` terms whose largest
+    /// numerator or denominator has `bits` bits.
+    fn check_counts(&self, terms: usize, bits: u64, at: usize) -> Result<(), ParseError> {
+        if terms > self.limits.max_terms {
             return Err(self.err_at(
                 &format!(
                     "expression too large: more than {} terms",
@@ -193,12 +205,6 @@ impl Parser<'_> {
                 at,
             ));
         }
-        let bits = p
-            .terms()
-            .iter()
-            .map(|(_, c)| c.numer().bits().max(c.denom().bits()))
-            .max()
-            .unwrap_or(0);
         if bits > self.limits.max_coeff_bits {
             return Err(self.err_at(
                 &format!(
@@ -241,46 +247,37 @@ impl Parser<'_> {
     }
 
     fn expr(&mut self) -> Result<QMPoly, ParseError> {
-        let first = self.term()?;
-        let negate = match self.peek() {
-            Some(b'+') => false,
-            Some(b'-') => true,
-            _ => return Ok(first),
-        };
-        // a sum of many terms is accumulated by monomial, so that its cost
-        // is linear in the input (repeated merges would be quadratic)
-        let mut sum = Sum::default();
-        sum.add(&first, false);
-        let mut negate = negate;
+        let mut acc = self.term()?;
+        // a long sum is accumulated by monomial, so that its cost is linear
+        // in the input (repeated merges would be quadratic); a short one
+        // by merging, which is cheaper for a few terms
+        let mut long: Option<Sum> = None;
         loop {
-            self.pos += 1;
-            let t = self.term()?;
-            crate::budget::check_for(sum.bits);
-            sum.add(&t, negate);
-            if sum.terms.len() > self.limits.max_terms {
-                return Err(self.err_at(
-                    &format!(
-                        "expression too large: more than {} terms",
-                        self.limits.max_terms
-                    ),
-                    self.pos,
-                ));
-            }
-            if sum.bits > self.limits.max_coeff_bits {
-                return Err(self.err_at(
-                    &format!(
-                        "a coefficient has more than {} bits (size limit)",
-                        self.limits.max_coeff_bits
-                    ),
-                    self.pos,
-                ));
-            }
-            negate = match self.peek() {
+            let negate = match self.peek() {
                 Some(b'+') => false,
                 Some(b'-') => true,
-                _ => return Ok(MPoly::from_terms(sum.terms)),
+                _ => break,
             };
+            self.pos += 1;
+            let t = self.term()?;
+            let Some(sum) = long.as_mut() else {
+                acc = if negate { &acc - &t } else { &acc + &t };
+                self.check_size(&acc, self.pos)?;
+                if acc.len() > SHORT_SUM {
+                    let mut sum = Sum::default();
+                    sum.add(&std::mem::replace(&mut acc, MPoly::zero()), false);
+                    long = Some(sum);
+                }
+                continue;
+            };
+            crate::budget::check_for(sum.bits);
+            sum.add(&t, negate);
+            self.check_counts(sum.terms.len(), sum.bits, self.pos)?;
         }
+        Ok(match long {
+            Some(sum) => MPoly::from_terms(sum.terms),
+            None => acc,
+        })
     }
 
     fn term(&mut self) -> Result<QMPoly, ParseError> {
@@ -487,7 +484,10 @@ impl Parser<'_> {
     }
 }
 
-/// The running value of a sum in [`Parser::expr`]: its non-zero terms by
+/// Sums of more terms than this are accumulated by monomial ([`Sum`]).
+const SHORT_SUM: usize = 64;
+
+/// The running value of a long sum in [`Parser::expr`]: its non-zero terms by
 /// monomial, and the largest coefficient size (bits of the numerator or
 /// the denominator) among the coefficients changed so far.
 #[derive(Default)]

@@ -114,11 +114,16 @@ impl Ring for BigInt {
     }
 }
 
-/// The budget check before a rational operation (each one computes a gcd,
-/// whose cost grows quadratically with the size of the numbers).
+/// The budget check before a rational operation on large numbers (each
+/// one computes a gcd, whose cost grows quadratically with their size);
+/// operations on small numbers leave the checks to the loops around them.
 #[inline]
 fn check_pair(a: &BigRational, b: &BigRational) {
-    crate::budget::check_for(a.bit_size().max(b.bit_size()));
+    let bits = a.numer().bits().max(a.denom().bits());
+    let bits = bits.max(b.numer().bits()).max(b.denom().bits());
+    if bits > crate::budget::LARGE_BITS {
+        crate::budget::check_now();
+    }
 }
 
 impl Ring for BigRational {

@@ -323,11 +323,15 @@ impl<R: Ring> Mul for &UPoly<R> {
             return UPoly::zero();
         }
         let len = self.c.len() + o.c.len() - 1;
-        crate::budget::check_size(
-            "a product of polynomials",
-            len,
-            self.bit_size() + o.bit_size() + log2_ceil(self.c.len().min(o.c.len())),
-        );
+        // the size of the product from the operands: all coefficients for
+        // long polynomials, the leading ones (O(1)) for short ones
+        let bits = if len > crate::poly::zpoly::SHORT {
+            self.bit_size() + o.bit_size() + log2_ceil(self.c.len().min(o.c.len()))
+        } else {
+            let lead = |p: &UPoly<R>| p.c.last().map_or(0, R::bit_size);
+            lead(self) + lead(o) + log2_ceil(self.c.len().min(o.c.len()))
+        };
+        crate::budget::check_size("a product of polynomials", len, bits);
         let mut c = vec![R::rzero(); len];
         for (i, a) in self.c.iter().enumerate() {
             if a.ris_zero() {
