@@ -350,6 +350,9 @@ fn progress_bar(opts: &BatchOptions) -> Option<indicatif::ProgressBar> {
         indicatif::ProgressStyle::with_template(template)
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
     );
+    // redrawn on a timer: updates between two draws are not lost, and the
+    // display moves while a slow line holds the others back
+    bar.enable_steady_tick(std::time::Duration::from_millis(200));
     Some(bar)
 }
 
@@ -456,8 +459,6 @@ pub fn run_batch_with(
             b.set_message(format!("{written} lines  {rate:.1} lines/s"));
             if opts.input_bytes.is_some() {
                 b.set_position(bytes_done);
-            } else {
-                b.tick();
             }
         }
     }

@@ -93,6 +93,14 @@ mod tests {
     }
 
     #[test]
+    fn the_defaults_are_the_library_defaults() {
+        let t = parse_time(DEFAULT_TIME_LIMIT).unwrap().0;
+        assert_eq!(t, Some(quadsect::budget::DEFAULT_TIME_LIMIT));
+        let m = parse_memory(DEFAULT_MEMORY_LIMIT_MIB).unwrap().0;
+        assert_eq!(m, Some(quadsect::budget::DEFAULT_MEMORY_LIMIT));
+    }
+
+    #[test]
     fn no_memory_limit_lifts_the_size_limits() {
         let args = LimitArgs {
             time_limit: TimeLimit(None),

@@ -66,8 +66,10 @@ pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
                 None => return R::rzero(),
             }
         }
+        // a row costs about n − k products of entries of the pivot's size
+        let row_work = m[k][k].bit_size().saturating_mul((n - k) as u64);
         for i in k + 1..n {
-            crate::budget::check();
+            crate::budget::check_for(row_work);
             for j in k + 1..n {
                 let t = m[i][j].rmul(&m[k][k]).rsub(&m[i][k].rmul(&m[k][j]));
                 m[i][j] = t
