@@ -481,3 +481,113 @@ pub fn run_batch_with(
         output_closed: false,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Cursor;
+
+    fn lines(n: usize) -> String {
+        (0..n)
+            .map(|i| {
+                format!(
+                    "{{\"id\":{i},\"op\":\"roots\",\"poly\":\"x^2-{}\"}}\n",
+                    i + 2
+                )
+            })
+            .collect()
+    }
+
+    fn opts(threads: usize, lookahead: usize) -> BatchOptions {
+        BatchOptions {
+            threads,
+            lookahead,
+            budget: Budget::default(),
+            progress: false,
+            input_bytes: None,
+        }
+    }
+
+    #[test]
+    fn answers_in_input_order_whatever_the_threads_and_look_ahead() {
+        for (threads, lookahead) in [(1, 1), (2, 1), (3, 2), (4, 64)] {
+            let mut out = Vec::new();
+            let input = Cursor::new(lines(50).into_bytes());
+            let s = run_batch_with(input, &mut out, &opts(threads, lookahead)).unwrap();
+            assert_eq!(
+                s,
+                BatchSummary {
+                    lines: 50,
+                    output_closed: false
+                }
+            );
+            let text = String::from_utf8(out).unwrap();
+            for (i, l) in text.lines().enumerate() {
+                let v: Value = serde_json::from_str(l).unwrap();
+                assert_eq!(v["id"], i, "threads {threads}, look-ahead {lookahead}");
+                assert_eq!(v["result"]["distinct_real"], 2);
+            }
+        }
+    }
+
+    /// A writer whose reader goes away after `keep` lines.
+    struct ClosesAfter {
+        keep: usize,
+        lines: usize,
+    }
+
+    impl Write for ClosesAfter {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            if self.lines >= self.keep {
+                return Err(std::io::Error::from(IoErrorKind::BrokenPipe));
+            }
+            self.lines += buf.iter().filter(|&&b| b == b'\n').count();
+            Ok(buf.len())
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_closed_output_ends_the_run_quietly() {
+        let input = Cursor::new(lines(500).into_bytes());
+        let out = ClosesAfter { keep: 3, lines: 0 };
+        let s = run_batch_with(input, out, &opts(2, 8)).unwrap();
+        assert!(s.output_closed);
+        assert!(s.lines >= 3 && s.lines < 500, "{s:?}");
+    }
+
+    /// Input that fails after its first bytes.
+    struct FailsAfter(Cursor<Vec<u8>>);
+
+    impl std::io::Read for FailsAfter {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            match self.0.read(buf)? {
+                0 => Err(std::io::Error::other("disk on fire")),
+                n => Ok(n),
+            }
+        }
+    }
+
+    #[test]
+    fn a_read_error_comes_after_the_answers_to_the_lines_before_it() {
+        let input = std::io::BufReader::new(FailsAfter(Cursor::new(lines(5).into_bytes())));
+        let mut out = Vec::new();
+        let e = run_batch_with(input, &mut out, &opts(2, 4)).unwrap_err();
+        assert!(e.to_string().contains("disk on fire"));
+        assert_eq!(String::from_utf8(out).unwrap().lines().count(), 5);
+    }
+
+    #[test]
+    fn an_exhausted_budget_is_not_an_internal_error() {
+        let none = Budget::unlimited().with_time_limit(Some(std::time::Duration::ZERO));
+        let v = answer_line_within(
+            r#"{"id":1,"op":"natural","a":"cylinder point=0,0,0 axis=1,0,0 radius2=1","b":"cone vertex=0,1,0 axis=0,1,0 tan2=1"}"#,
+            &none,
+        );
+        assert_eq!(v["ok"], true);
+        assert_eq!(v["result"]["class"], "undecided");
+        assert_eq!(v["result"]["reason"]["limit"], "time");
+    }
+}

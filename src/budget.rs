@@ -349,10 +349,11 @@ pub fn check() {
 /// [`check_for`] reads the clock at once instead of amortising.
 pub const LARGE_BITS: u64 = 1 << 14;
 
-/// [`check`] next to an operation on numbers of `bits` bits: amortised for
-/// small numbers, [`check_now`] beyond [`LARGE_BITS`] bits (where the
-/// operation itself costs far more than reading the clock).  The
-/// amortised count alone would let 64 slow operations pass between two
+/// [`check`] next to an operation on numbers of `bits` bits (or a step of
+/// about that much work: bits times the number of operations of a matrix
+/// row): amortised for small work, [`check_now`] beyond [`LARGE_BITS`]
+/// (where the step itself costs far more than reading the clock).  The
+/// amortised count alone would let 64 slow steps pass between two
 /// readings of the clock.
 #[inline]
 pub fn check_for(bits: u64) {
@@ -535,6 +536,70 @@ mod tests {
         let flag = Arc::new(AtomicBool::new(true));
         let b = Budget::unlimited().with_cancel_flag(flag);
         assert_eq!(run(&b, check_now).unwrap_err().limit(), Limit::Cancelled);
+    }
+
+    #[test]
+    fn a_run_checks_at_its_first_check() {
+        // whatever the countdown was left at by earlier work on this thread
+        for _ in 0..10 {
+            check();
+        }
+        let zero = Budget::unlimited().with_time_limit(Some(Duration::ZERO));
+        assert_eq!(run(&zero, check).unwrap_err().limit(), Limit::Time);
+    }
+
+    #[test]
+    fn large_steps_read_the_clock_at_once() {
+        let b = Budget::unlimited().with_time_limit(Some(Duration::from_millis(20)));
+        let r = run(&b, || {
+            check(); // the run's first check reads the clock, in time
+            std::thread::sleep(Duration::from_millis(40));
+            // small work is amortised: no reading of the clock yet
+            for _ in 0..(CHECK_EVERY - 2) {
+                check_for(10);
+            }
+            "amortised"
+        });
+        assert_eq!(r, Ok("amortised"));
+        let r = run(&b, || {
+            check();
+            std::thread::sleep(Duration::from_millis(40));
+            check_for(LARGE_BITS + 1);
+            "not reached"
+        });
+        assert_eq!(r.unwrap_err().limit(), Limit::Time);
+    }
+
+    #[test]
+    fn objects_larger_than_the_memory_limit_are_refused_before_they_exist() {
+        let b = Budget::unlimited().with_memory_limit(Some(1 << 20));
+        // 10⁶ terms of 64 bits: far more than 1 MiB, whatever the probe says
+        let e = run(&b, || check_size("a matrix", 1_000_000, 64)).unwrap_err();
+        assert_eq!(e.limit(), Limit::Size);
+        assert!(e.detail().contains("memory limit is 1 MiB"), "{e}");
+        assert_eq!(run(&b, || check_size("a matrix", 1000, 64)), Ok(()));
+    }
+
+    #[test]
+    fn optional_parts_give_way_to_size_but_not_to_time() {
+        let sized = Budget::unlimited().with_size_limits(Some(10), None);
+        let r = run(&sized, || {
+            let skipped = run_optional(|| check_size("an extra", 11, 0));
+            (skipped, run_optional(|| 5))
+        });
+        assert_eq!(r, Ok((None, Some(5))));
+        let timed = Budget::unlimited().with_time_limit(Some(Duration::ZERO));
+        let r = run(&timed, || run_optional(check_now));
+        assert_eq!(r.unwrap_err().limit(), Limit::Time);
+        // outside a budget the part simply runs
+        assert_eq!(run_optional(|| 3), Some(3));
+    }
+
+    #[test]
+    fn memory_growth_counts_from_the_start_of_the_run() {
+        assert_eq!(memory_growth(100, 150), 50);
+        assert_eq!(memory_growth(150, 100), 0, "freed memory is no growth");
+        assert_eq!(memory_growth(usize::MAX - 9, 10), 20, "the count may wrap");
     }
 
     #[test]
