@@ -131,7 +131,7 @@
 //!
 //! ## Features
 //!
-//! * `cli` (default): the `quadsect` program (clap, indicatif, rayon).
+//! * `cli` (default): the `quadsect` program (clap, indicatif; batch threads are std threads).
 //!   Library users: `default-features = false`.
 //! * `serde`: `Serialize` for the reports (the JSON of `--json`, keys in the
 //!   documented order), the JSON input form of natural quadrics, and

@@ -52,8 +52,25 @@ pub(crate) const OPS: [(&str, &[&str]); 4] = [
 ];
 
 impl Request {
-    /// Runs the request under `budget`.
+    /// Runs the request under `budget` (parsing included).  When the budget
+    /// runs out, tangent and natural answer `undecided` (with the limit),
+    /// roots and resultant give an error of kind `budget`.
     pub(crate) fn execute(&self, budget: &Budget) -> Result<Answer, Error> {
+        match crate::budget::run(budget, || self.execute_unbudgeted(budget)) {
+            Ok(answer) => answer,
+            Err(e) => match self {
+                Request::Tangent { .. } => Ok(Answer::Tangent(
+                    crate::tangent::TangentReport::budget_exhausted(e),
+                )),
+                Request::Natural { a, b, .. } => {
+                    Ok(Answer::Natural(NaturalReport::budget_exhausted(a, b, e)))
+                }
+                _ => Err(e.into()),
+            },
+        }
+    }
+
+    fn execute_unbudgeted(&self, budget: &Budget) -> Result<Answer, Error> {
         Ok(match self {
             Request::Tangent {
                 ellipsoid,
@@ -81,7 +98,7 @@ impl Request {
             }
             Request::Roots { poly } => {
                 let p = crate::poly::parse_poly(poly)?;
-                Answer::Roots(crate::budget::run(budget, || crate::kernel::roots_of(&p))??)
+                Answer::Roots(crate::kernel::roots_of(&p)?)
             }
             Request::Resultant { f, g, var } => {
                 let v = var.parse()?;
@@ -89,11 +106,23 @@ impl Request {
                     .map_err(|e| Error::from(e).context("in the first polynomial"))?;
                 let gp = crate::poly::parse_poly(g)
                     .map_err(|e| Error::from(e).context("in the second polynomial"))?;
-                Answer::Resultant(crate::budget::run(budget, || {
-                    crate::kernel::resultant_of(&fp, &gp, v)
-                })??)
+                Answer::Resultant(crate::kernel::resultant_of(&fp, &gp, v)?)
             }
         })
+    }
+}
+
+impl Answer {
+    /// The budget that ran out, when the answer is `undecided` because of it.
+    pub(crate) fn exhausted(&self) -> Option<&crate::budget::Exhausted> {
+        match self {
+            Answer::Tangent(r) => match r.undecided() {
+                Some(crate::tangent::Undecided::Budget(e)) => Some(e),
+                _ => None,
+            },
+            Answer::Natural(r) => r.exhausted(),
+            _ => None,
+        }
     }
 }
 

@@ -94,6 +94,7 @@ pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalRepor
             counts: Counts::same_surface(),
             components_computed: true,
             route: None,
+            exhausted: None,
         });
     }
     let (components, method): (Vec<Component>, &'static str) = match (a, b) {
@@ -187,6 +188,7 @@ pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalRepor
         counts,
         components_computed: true,
         route: None,
+        exhausted: None,
     })
 }
 

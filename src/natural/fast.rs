@@ -1320,7 +1320,8 @@ pub struct ClassifyOptions {
     /// route (same class and counts).
     pub components: bool,
     /// The compute budget (default: [`Budget::default`]); when it runs out
-    /// the result is an error of kind [`crate::ErrorKind::Budget`].
+    /// the class is [`Class::Undecided`] and [`NaturalReport::exhausted`]
+    /// says which limit.
     pub budget: Budget,
 }
 
@@ -1380,6 +1381,7 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
         counts,
         components_computed: false,
         route: Some(Route::Fast),
+        exhausted: None,
     })
 }
 
@@ -1399,5 +1401,6 @@ pub fn classify_with(
         } else {
             classify_counts(&Prepared::new(a), &Prepared::new(b))
         }
-    })?
+    })
+    .unwrap_or_else(|e| Ok(NaturalReport::budget_exhausted(a, b, e)))
 }

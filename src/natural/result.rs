@@ -135,6 +135,9 @@ pub enum Class {
     Empty,
     /// A space curve that is not made of lines and conics.
     Curve,
+    /// Not decided: the compute budget ran out (see
+    /// [`NaturalReport::exhausted`]).
+    Undecided,
 }
 
 impl std::fmt::Display for Class {
@@ -155,6 +158,7 @@ impl Class {
             Class::Points => "points",
             Class::Empty => "empty",
             Class::Curve => "curve",
+            Class::Undecided => "undecided",
         }
     }
 }
@@ -210,6 +214,8 @@ pub struct NaturalReport {
     pub(crate) components_computed: bool,
     /// For a request without components: which route answered.
     pub(crate) route: Option<Route>,
+    /// The compute budget that ran out (class `Undecided`).
+    pub(crate) exhausted: Option<crate::budget::Exhausted>,
 }
 
 /// Which route answered a request for the class and counts only.
@@ -324,7 +330,7 @@ impl NaturalReport {
         &self.notes
     }
 
-    /// Number of real affine conics.
+    /// Number of real affine conics (0 when the class is `Undecided`).
     pub fn conics(&self) -> usize {
         self.counts.conics
     }
@@ -342,6 +348,37 @@ impl NaturalReport {
     /// True when the fast route answered (no components computed).
     pub(crate) fn answered_fast(&self) -> bool {
         self.route == Some(Route::Fast)
+    }
+
+    /// The compute budget that ran out (then the class is
+    /// [`Class::Undecided`] and nothing else is known).
+    pub fn exhausted(&self) -> Option<&crate::budget::Exhausted> {
+        self.exhausted.as_ref()
+    }
+
+    /// The answer when the compute budget ran out: class `Undecided`, no
+    /// components, and the limit that was hit.
+    pub(crate) fn budget_exhausted(
+        a: &Natural,
+        b: &Natural,
+        e: crate::budget::Exhausted,
+    ) -> NaturalReport {
+        NaturalReport {
+            a: a.clone(),
+            b: b.clone(),
+            class: Class::Undecided,
+            axes: None,
+            thm8: None,
+            components: vec![],
+            deciders: None,
+            section7: None,
+            method: "none (the compute budget ran out)",
+            notes: vec![],
+            counts: Counts::new(Class::Undecided, 0, 0, 0),
+            components_computed: false,
+            route: None,
+            exhausted: Some(e),
+        }
     }
 
     /// False when only the class and counts were asked for

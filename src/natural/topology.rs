@@ -322,6 +322,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
     let g1 = crate::geom::gradient(f1);
     let g2 = crate::geom::gradient(f2);
     for l in GENERIC_FORMS {
+        crate::budget::check_now();
         let lin: QMPoly = &(&MPoly::var(X).scale(&qi(l[0])) + &MPoly::var(Y).scale(&qi(l[1])))
             + &MPoly::var(Z).scale(&qi(l[2]));
         let gl: [QMPoly; 3] = std::array::from_fn(|k| MPoly::constant(qi(l[k])));
@@ -365,6 +366,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
         }
         let mut decided = true;
         for q in &levels {
+            crate::budget::check_now();
             let plane = &lin - &MPoly::constant(q.clone());
             match solve_zero_dim(&[f1.clone(), f2.clone(), plane], &[])? {
                 Some(r) => {

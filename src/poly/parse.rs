@@ -16,9 +16,11 @@
 //! error names the problem and the 1-based column.  Documented size limits
 //! keep hostile inputs from hanging: see [`Limits`].
 
-use super::mpoly::{MPoly, QMPoly};
+use super::mpoly::{MPoly, NVARS, QMPoly};
 use crate::number::{NumberMode, Q, scan_number_with};
 use num_traits::{One, Zero};
+use std::collections::HashMap;
+use std::collections::hash_map::Entry;
 use std::fmt;
 
 /// Size limits of the parser.  Inputs beyond them are rejected with a clear
@@ -183,7 +185,19 @@ impl Parser<'_> {
     }
 
     fn check_size(&self, p: &QMPoly, at: usize) -> Result<(), ParseError> {
-        if p.len() > self.limits.max_terms {
+        let bits = p
+            .terms()
+            .iter()
+            .map(|(_, c)| c.numer().bits().max(c.denom().bits()))
+            .max()
+            .unwrap_or(0);
+        self.check_counts(p.len(), bits, at)
+    }
+
+    /// The size limits on a polynomial of `terms` terms whose largest
+    /// numerator or denominator has `bits` bits.
+    fn check_counts(&self, terms: usize, bits: u64, at: usize) -> Result<(), ParseError> {
+        if terms > self.limits.max_terms {
             return Err(self.err_at(
                 &format!(
                     "expression too large: more than {} terms",
@@ -192,12 +206,6 @@ impl Parser<'_> {
                 at,
             ));
         }
-        let bits = p
-            .terms()
-            .iter()
-            .map(|(_, c)| c.numer().bits().max(c.denom().bits()))
-            .max()
-            .unwrap_or(0);
         if bits > self.limits.max_coeff_bits {
             return Err(self.err_at(
                 &format!(
@@ -241,27 +249,42 @@ impl Parser<'_> {
 
     fn expr(&mut self) -> Result<QMPoly, ParseError> {
         let mut acc = self.term()?;
+        // a long sum is accumulated by monomial, so that its cost is linear
+        // in the input (repeated merges would be quadratic); a short one
+        // by merging, which is cheaper for a few terms
+        let mut long: Option<Sum> = None;
         loop {
-            match self.peek() {
-                Some(b'+') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = &acc + &t;
+            let negate = match self.peek() {
+                Some(b'+') => false,
+                Some(b'-') => true,
+                _ => break,
+            };
+            self.pos += 1;
+            let t = self.term()?;
+            let Some(sum) = long.as_mut() else {
+                acc = if negate { &acc - &t } else { &acc + &t };
+                self.check_size(&acc, self.pos)?;
+                if acc.len() > SHORT_SUM {
+                    let mut sum = Sum::default();
+                    sum.add(&std::mem::replace(&mut acc, MPoly::zero()), false);
+                    long = Some(sum);
                 }
-                Some(b'-') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = &acc - &t;
-                }
-                _ => return Ok(acc),
-            }
-            self.check_size(&acc, self.pos)?;
+                continue;
+            };
+            crate::budget::check_for(sum.bits);
+            sum.add(&t, negate);
+            self.check_counts(sum.terms.len(), sum.bits, self.pos)?;
         }
+        Ok(match long {
+            Some(sum) => MPoly::from_terms(sum.terms),
+            None => acc,
+        })
     }
 
     fn term(&mut self) -> Result<QMPoly, ParseError> {
         let mut acc = self.unary()?;
         loop {
+            crate::budget::check();
             match self.peek() {
                 Some(b'*') => {
                     let at = self.pos;
@@ -460,6 +483,38 @@ impl Parser<'_> {
         }
         let ch = self.current_char();
         Err(self.err_at(&format!("unexpected '{ch}'"), self.pos))
+    }
+}
+
+/// Sums of more terms than this are accumulated by monomial ([`Sum`]).
+const SHORT_SUM: usize = 64;
+
+/// The running value of a long sum in [`Parser::expr`]: its non-zero terms by
+/// monomial, and the largest coefficient size (bits of the numerator or
+/// the denominator) among the coefficients changed so far.
+#[derive(Default)]
+struct Sum {
+    terms: HashMap<[u32; NVARS], Q>,
+    bits: u64,
+}
+
+impl Sum {
+    fn add(&mut self, p: &QMPoly, negate: bool) {
+        for (e, c) in p.terms() {
+            let c = if negate { -c } else { c.clone() };
+            let v = match self.terms.entry(*e) {
+                Entry::Occupied(mut o) => {
+                    *o.get_mut() += c;
+                    if o.get().is_zero() {
+                        o.remove();
+                        continue;
+                    }
+                    o.into_mut()
+                }
+                Entry::Vacant(v) => v.insert(c),
+            };
+            self.bits = self.bits.max(v.numer().bits().max(v.denom().bits()));
+        }
     }
 }
 

@@ -229,6 +229,8 @@ pub(crate) enum Analysis {
     LevelSets(critical::LevelSetAnalysis),
     /// S is a non-zero constant.
     Constant,
+    /// No computation finished.
+    Undecided,
 }
 
 /// The certificate of a verdict: everything needed to re-check it.
@@ -276,6 +278,7 @@ impl Certificate {
             Analysis::CriticalIdeal(_) => Method::CriticalIdeal,
             Analysis::LevelSets(_) => Method::LevelSets,
             Analysis::Constant => Method::Constant,
+            Analysis::Undecided => Method::None,
         }
     }
 
@@ -429,7 +432,11 @@ pub fn decide_with(
 ) -> Result<TangentReport, Error> {
     match crate::budget::run(&options.budget, || decide_validated(e, s.inner())) {
         Ok(r) => r,
-        Err(exhausted) => Ok(undecided_report(e, s.inner(), Undecided::Budget(exhausted))),
+        Err(exhausted) => Ok(undecided_report(
+            e.poly.clone(),
+            s.inner().clone(),
+            Undecided::Budget(exhausted),
+        )),
     }
 }
 
@@ -563,13 +570,17 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Er
 
 /// The answer when no certificate could be produced (never a guess).
 fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
-    undecided_report(e, surface, Undecided::NoCertificate(why))
+    undecided_report(
+        e.poly.clone(),
+        surface.clone(),
+        Undecided::NoCertificate(why),
+    )
 }
 
-fn undecided_report(e: &Ellipsoid, surface: &QMPoly, why: Undecided) -> TangentReport {
+fn undecided_report(ellipsoid: QMPoly, surface: QMPoly, why: Undecided) -> TangentReport {
     TangentReport {
-        ellipsoid: e.poly.clone(),
-        surface: surface.clone(),
+        ellipsoid,
+        surface,
         verdict: Verdict::Undecided,
         intersect: None,
         touching: None,
@@ -583,10 +594,18 @@ fn undecided_report(e: &Ellipsoid, surface: &QMPoly, why: Undecided) -> TangentR
             nonreal_point_values: vec![],
             negative_witness: None,
             positive_witness: None,
-            method: Analysis::Constant,
+            method: Analysis::Undecided,
             notes: vec![],
         },
         reason: Some(why),
+    }
+}
+
+impl TangentReport {
+    /// The answer when the budget ran out before E and S were even read
+    /// (their polynomials are then zero).
+    pub(crate) fn budget_exhausted(e: Exhausted) -> TangentReport {
+        undecided_report(QMPoly::zero(), QMPoly::zero(), Undecided::Budget(e))
     }
 }
 

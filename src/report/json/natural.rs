@@ -120,6 +120,22 @@ fn section7_json(s: &Section7) -> Value {
 /// (`fast`); when the complete route had to answer, its whole report
 /// follows with `route: "complete"` and the `fallback` reason.
 pub fn natural_json(r: &NaturalReport) -> Value {
+    if let Some(e) = &r.exhausted {
+        return json!({
+            "class": r.class.as_str(),
+            "conics": null,
+            "lines": null,
+            "points": null,
+            "axes": null,
+            "thm8": null,
+            "components": [],
+            "method": r.method,
+            "a": natural_input_json(&r.a),
+            "b": natural_input_json(&r.b),
+            "notes": r.notes,
+            "reason": {"kind": "budget", "limit": e.limit().as_str(), "message": e.to_string()},
+        });
+    }
     match r.route {
         Some(Route::Fast) => {
             return json!({

@@ -65,6 +65,7 @@ fn side_str(s: Option<i32>) -> Value {
 fn method_json(m: &Analysis) -> Value {
     match m {
         Analysis::Constant => json!({"method": "constant"}),
+        Analysis::Undecided => json!({"method": "none"}),
         Analysis::Pencil(an) => json!({
             "method": "pencil-discriminant",
             "scale": an.scale.to_string(),
@@ -193,11 +194,8 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         m.insert("witness_negative".into(), witness_json(&c.negative_witness));
         m.insert("witness_positive".into(), witness_json(&c.positive_witness));
         m.insert("notes".into(), json!(c.notes));
-        if let Some(reason) = &r.reason {
-            m.insert("reason".into(), undecided_json(reason));
-        }
     }
-    json!({
+    let mut out = json!({
         "intersect": r.intersect,
         "touching": r.touching,
         "side": side_str(r.side),
@@ -207,5 +205,11 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         "judging_poly": upoly_string(&r.judging_poly, U),
         "certificate": cert,
         "verdict": r.verdict.as_str(),
-    })
+    });
+    // why an undecided answer is undecided: the budget that ran out, or
+    // the step that could not produce a certificate
+    if let (Some(reason), Value::Object(m)) = (&r.reason, &mut out) {
+        m.insert("reason".into(), undecided_json(reason));
+    }
+    out
 }

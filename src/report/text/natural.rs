@@ -84,6 +84,9 @@ fn plural(n: usize, one: &str, many: &str) -> String {
 
 /// `quadsect natural` for people.
 pub fn natural_human(r: &NaturalReport) -> String {
+    if let Some(e) = &r.exhausted {
+        return format!("class     {}\nreason    {e}\n", r.class.as_str());
+    }
     let counts = if r.class == Class::SameSurface {
         "the two equations are proportional: every point of one is on the other".to_string()
     } else {
