@@ -300,8 +300,13 @@ class _Result:
         """The CLI's ``--json`` object (exact numbers as strings), a fresh copy."""
         return json.loads(json.dumps(self._json))
 
-    def __str__(self) -> str:
+    @property
+    def summary(self) -> str:
         """The human summary, as the CLI prints it without ``--json``."""
+        return self._text
+
+    def __str__(self) -> str:
+        """The human summary (:attr:`summary`)."""
         return self._text
 
     def __eq__(self, other: object) -> bool:
@@ -539,6 +544,10 @@ class ResultantResult(_Result):
         """Its total degree (``None`` for the zero polynomial)."""
         d = self._json["degree"]
         return d if d is not None and d >= 0 else None
+
+    def __str__(self) -> str:
+        """The resultant (the human summary is :attr:`summary`)."""
+        return self.resultant
 
     def __repr__(self) -> str:
         return f"ResultantResult({self.resultant!r})"

@@ -13,6 +13,11 @@ fn json_text<T: serde::Serialize>(report: &T) -> Result<String, Error> {
     serde_json::to_string(report).map_err(|e| Error::internal(format!("JSON output: {e}")))
 }
 
+/// Parses an input, naming it in the error (`in the ellipsoid: …`).
+fn parse<T: std::str::FromStr<Err = Error>>(text: &str, what: &str) -> Result<T, Error> {
+    text.parse().map_err(|e: Error| e.context(what))
+}
+
 fn algebraic(values: &[RealAlg]) -> Vec<RealAlgebraic> {
     values.iter().cloned().map(RealAlgebraic::new).collect()
 }
@@ -43,12 +48,8 @@ pub(crate) fn tangent(
 ) -> PyResult<TangentParts> {
     let options = TangentOptions::with_budget(guard::budget(py, time_limit)?);
     guard::run(py, || {
-        let e: Ellipsoid = ellipsoid
-            .parse()
-            .map_err(|x: Error| x.context("in the ellipsoid"))?;
-        let s: Polynomial = surface
-            .parse()
-            .map_err(|x: Error| x.context("in the surface"))?;
+        let e: Ellipsoid = parse(ellipsoid, "in the ellipsoid")?;
+        let s: Polynomial = parse(surface, "in the surface")?;
         let r = quadsect::tangent::decide_with(&e, &s, &options)?;
         let c = r.certificate();
         let undecided = r.undecided().map(|u| {
@@ -95,27 +96,22 @@ pub(crate) fn natural(
 ) -> PyResult<(String, String)> {
     let options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
     guard::run(py, || {
-        let qa: Natural = a
-            .parse()
-            .map_err(|e: Error| e.context("in the first quadric"))?;
-        let qb: Natural = b
-            .parse()
-            .map_err(|e: Error| e.context("in the second quadric"))?;
+        let qa: Natural = parse(a, "in the first quadric")?;
+        let qb: Natural = parse(b, "in the second quadric")?;
         let r = quadsect::natural::classify_with(&qa, &qb, &options)?;
         Ok((json_text(&r)?, r.to_string()))
     })
 }
+
+/// What `roots` hands to the Python half: JSON, text, (root, multiplicity).
+type RootsParts = (String, String, Vec<(RealAlgebraic, u32)>);
 
 /// roots(poly, time_limit) -> (json, text, roots)
 ///
 /// `roots` are the distinct real roots, increasing, with multiplicities.
 #[pyfunction]
 #[pyo3(signature = (poly, time_limit = None))]
-pub(crate) fn roots(
-    py: Python<'_>,
-    poly: &str,
-    time_limit: Option<f64>,
-) -> PyResult<(String, String, Vec<(RealAlgebraic, u32)>)> {
+pub(crate) fn roots(py: Python<'_>, poly: &str, time_limit: Option<f64>) -> PyResult<RootsParts> {
     let budget = guard::budget(py, time_limit)?;
     guard::run(py, || {
         let p: Polynomial = poly.parse()?;
@@ -141,12 +137,8 @@ pub(crate) fn resultant(
     let budget = guard::budget(py, time_limit)?;
     guard::run(py, || {
         let v: Var = var.parse()?;
-        let fp: Polynomial = f
-            .parse()
-            .map_err(|e: Error| e.context("in the first polynomial"))?;
-        let gp: Polynomial = g
-            .parse()
-            .map_err(|e: Error| e.context("in the second polynomial"))?;
+        let fp: Polynomial = parse(f, "in the first polynomial")?;
+        let gp: Polynomial = parse(g, "in the second polynomial")?;
         let r = quadsect::resultant_with(&fp, &gp, v, &budget)?;
         Ok((json_text(&r)?, r.to_string()))
     })
