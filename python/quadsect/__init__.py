@@ -29,7 +29,9 @@ True
 The engine computes with the GIL released, so Python threads run in
 parallel with it; it never panics into Python: bad input raises
 :class:`InputError` (a ``ValueError``) with ``.kind``, an exhausted budget
-:class:`BudgetError`, a failure inside quadsect :class:`InternalError`.
+:class:`BudgetError` from :func:`roots` and :func:`resultant` (:func:`tangent`
+and :func:`natural` answer ``"undecided"`` instead), a failure inside
+quadsect :class:`InternalError`.
 """
 
 from __future__ import annotations
@@ -398,27 +400,45 @@ def _rebuild_tangent(*args: Any) -> TangentResult:
 class NaturalResult(_Result):
     """The answer of :func:`natural`: the class of the intersection, the
     counts of real affine conics, lines and isolated points, and each
-    component with exact data."""
+    component with exact data.
+
+    Running out of budget is an answer, not an error: ``classification ==
+    "undecided"``, the counts are ``None``, :attr:`undecided_kind` is
+    ``"budget"`` and :attr:`reason` says which limit ran out."""
 
     @property
     def classification(self) -> str:
         """``"same-surface"``, ``"conics"``, ``"conic-and-line"``, ``"lines"``,
-        ``"points"``, ``"empty"`` or ``"curve"``."""
+        ``"points"``, ``"empty"``, ``"curve"``, or ``"undecided"`` (the
+        budget ran out)."""
         return self._json["class"]
 
     @property
-    def conics(self) -> int:
-        """Real affine conics (a double conic counts once)."""
+    def undecided_kind(self) -> Optional[str]:
+        """For an undecided answer, why: ``"budget"``; else ``None``."""
+        r = self._json.get("reason")
+        return r["kind"] if r is not None else None
+
+    @property
+    def reason(self) -> Optional[str]:
+        """For an undecided answer, the reason in words (which limit ran
+        out); else ``None``."""
+        r = self._json.get("reason")
+        return r["message"] if r is not None else None
+
+    @property
+    def conics(self) -> Optional[int]:
+        """Real affine conics (a double conic counts once); ``None`` when undecided."""
         return self._json["conics"]
 
     @property
-    def lines(self) -> int:
-        """Real affine lines (a double line counts once)."""
+    def lines(self) -> Optional[int]:
+        """Real affine lines (a double line counts once); ``None`` when undecided."""
         return self._json["lines"]
 
     @property
-    def points(self) -> int:
-        """Isolated real points on no other component."""
+    def points(self) -> Optional[int]:
+        """Isolated real points on no other component; ``None`` when undecided."""
         return self._json["points"]
 
     @property
@@ -436,8 +456,16 @@ class NaturalResult(_Result):
     def components(self) -> List[Dict[str, Any]]:
         """The components (conics, lines, points, curves) as dicts, exact
         rationals as ``Fraction``; a number a + b√d is ``{"a", "b", "d",
-        "approx"}``."""
-        return _decode(self._json["components"])
+        "approx"}``.  Empty when undecided or asked for without
+        components (``natural(a, b, components=False)``)."""
+        return _decode(self._json.get("components", []))
+
+    @property
+    def route(self) -> Optional[str]:
+        """``"fast"`` or ``"complete"`` for an answer without components
+        (the complete route answers where the fast one cannot decide),
+        else ``None``."""
+        return self._json.get("route")
 
     @property
     def method(self) -> str:
@@ -447,7 +475,7 @@ class NaturalResult(_Result):
     @property
     def notes(self) -> List[str]:
         """Remarks."""
-        return list(self._json["notes"])
+        return list(self._json.get("notes", []))
 
     def __repr__(self) -> str:
         return (
@@ -577,14 +605,23 @@ def tangent(ellipsoid: str, surface: str, *, time_limit: Optional[float] = None)
     return TangentResult(*_quadsect.tangent(ellipsoid, surface, time_limit))
 
 
-def natural(a: NaturalLike, b: NaturalLike, *, time_limit: Optional[float] = None) -> NaturalResult:
+def natural(
+    a: NaturalLike,
+    b: NaturalLike,
+    *,
+    time_limit: Optional[float] = None,
+    components: bool = True,
+) -> NaturalResult:
     """How two natural quadrics meet, exactly.
 
     ``a`` and ``b`` are each the short syntax (``"cone vertex=0,0,0
     axis=1,0,0 tan2=1/3"``), JSON text, a dict of the JSON object form
     (numbers may be int/Fraction/float/str), or a :class:`Sphere`,
-    :class:`Cylinder` or :class:`Cone`.  An exhausted budget raises
-    :class:`BudgetError`.
+    :class:`Cylinder` or :class:`Cone`.  ``components=False`` asks for the
+    class and counts only (the fast route: same class and counts, much
+    quicker).  ``time_limit`` is in seconds as for :func:`tangent`; running
+    out is an answer: ``classification == "undecided"`` with the
+    :attr:`~NaturalResult.reason`.
 
     >>> r = quadsect.natural(Cylinder((0, 0, 0), (1, 0, 0), 1),
     ...                      "cylinder point=0,0,0 axis=0,1,0 radius2=1")
@@ -593,7 +630,9 @@ def natural(a: NaturalLike, b: NaturalLike, *, time_limit: Optional[float] = Non
     >>> r.components[0]["semi_axes2"]
     [Fraction(2, 1), Fraction(1, 1)]
     """
-    return NaturalResult(*_quadsect.natural(_natural_text(a, "a"), _natural_text(b, "b"), time_limit))
+    return NaturalResult(
+        *_quadsect.natural(_natural_text(a, "a"), _natural_text(b, "b"), time_limit, components)
+    )
 
 
 def roots(poly: str, *, time_limit: Optional[float] = None) -> RootsResult:
@@ -621,17 +660,24 @@ def resultant(f: str, g: str, var: str, *, time_limit: Optional[float] = None) -
     return ResultantResult(*_quadsect.resultant(f, g, var, time_limit))
 
 
-def batch(lines: Iterable[Union[str, bytes]], threads: Optional[int] = None) -> Iterator[str]:
+def batch(
+    lines: Iterable[Union[str, bytes]],
+    threads: Optional[int] = None,
+    *,
+    time_limit: Optional[float] = None,
+) -> Iterator[str]:
     """The answers to batch lines (the protocol of ``quadsect batch``), one
     per line, in order, streamed: each answer is :func:`answer_line` of its
     line.  The lines are answered on ``threads`` Rust worker threads
     (default: the number of CPUs) with the GIL released, reading at most
     ``32 * threads`` lines ahead of the answer returned, so an endless or
     huge input streams in bounded memory.  ``lines`` may be a file object.
+    Each line runs under its own budget: ``time_limit`` seconds (``None``:
+    :data:`DEFAULT_TIME_LIMIT`), as ``quadsect batch --time-limit``.
 
     >>> lines = ['{"id": 1, "op": "roots", "poly": "x^2 - 2"}',
     ...          '{"id": 2, "op": "resultant", "f": "x^2+y^2-1", "g": "x-y", "var": "x"}']
     >>> [json.loads(a)["id"] for a in quadsect.batch(lines, threads=2)]
     [1, 2]
     """
-    return _quadsect.Batch(lines, threads)
+    return _quadsect.Batch(lines, threads, time_limit)

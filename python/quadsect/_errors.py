@@ -45,8 +45,8 @@ class InputError(QuadsectError, ValueError):
 
 class BudgetError(QuadsectError, RuntimeError):
     """A compute budget ran out (``.kind == "budget"``; the message says which
-    limit).  Raised by ``roots``, ``resultant`` and ``natural``; ``tangent``
-    answers ``verdict == "undecided"`` instead."""
+    limit).  Raised by ``roots`` and ``resultant``; ``tangent`` and
+    ``natural`` answer ``"undecided"`` instead (with the reason)."""
 
 
 class InternalError(QuadsectError, RuntimeError):

@@ -16,7 +16,7 @@ _Number = Union[int, Fraction, float, str, object]
 def exact(x: _Number) -> Fraction:
     """The exact value quadsect takes for the number ``x``."""
 
-def answer_line(line: str) -> str:
+def answer_line(line: str, *, time_limit: Optional[float] = None) -> str:
     """One batch line's answer, exactly as ``quadsect batch`` prints it."""
 
 class RealAlgebraic:
@@ -50,7 +50,12 @@ class RealAlgebraic:
 class Batch(Iterator[str]):
     """Streaming answers of batch lines, in order, on Rust worker threads."""
 
-    def __init__(self, lines: Iterable[Union[str, bytes]], threads: Optional[int] = None) -> None: ...
+    def __init__(
+        self,
+        lines: Iterable[Union[str, bytes]],
+        threads: Optional[int] = None,
+        time_limit: Optional[float] = None,
+    ) -> None: ...
     def __iter__(self) -> "Batch": ...
     def __next__(self) -> str: ...
 
@@ -66,7 +71,9 @@ def tangent(
     Optional[Tuple[str, str]],
 ]: ...
 def natural_input(text: str) -> Tuple[str, str]: ...
-def natural(a: str, b: str, time_limit: Optional[float] = None) -> Tuple[str, str]: ...
+def natural(
+    a: str, b: str, time_limit: Optional[float] = None, components: bool = True
+) -> Tuple[str, str]: ...
 def roots(
     poly: str, time_limit: Optional[float] = None
 ) -> Tuple[str, str, List[Tuple[RealAlgebraic, int]]]: ...

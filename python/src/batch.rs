@@ -26,26 +26,25 @@ use std::sync::{Arc, Mutex};
 /// this): enough to keep every worker busy behind one slow line.
 const WINDOW_PER_THREAD: usize = 32;
 
-/// One answer, as `quadsect batch` prints it (never panics: an internal
-/// failure is an error line).
-fn answer(line: &str) -> String {
-    quadsect::batch::answer_line(line).to_string()
-}
-
-/// answer_line(line: str) -> str
+/// answer_line(line: str, *, time_limit: float | None = None) -> str
 ///
 /// The answer of one batch line, exactly as ``quadsect batch`` prints it
 /// (one JSON object, no newline): ``{"id":…,"ok":true,"result":{…}}`` or
 /// ``{"id":…,"ok":false,"error":{"kind":…,"message":…}}``.  Never raises
 /// for bad input: a bad line gets an error answer.  A trailing newline is
-/// ignored.
+/// ignored.  ``time_limit`` is the line's time limit in seconds, as
+/// ``quadsect batch --time-limit`` (``None``: the default, 10 s).
 ///
 /// >>> quadsect.answer_line('{"id":1,"op":"roots","poly":"x^2-2"}')[:30]
 /// '{"id":1,"ok":true,"result":{"d'
 #[pyfunction]
-pub(crate) fn answer_line(py: Python<'_>, line: &str) -> PyResult<String> {
+#[pyo3(signature = (line, *, time_limit = None))]
+pub(crate) fn answer_line(py: Python<'_>, line: &str, time_limit: Option<f64>) -> PyResult<String> {
     let line = strip_newline(line);
-    guard::run(py, || Ok(answer(line)))
+    let budget = guard::budget(py, time_limit)?;
+    guard::run(py, || {
+        Ok(quadsect::batch::answer_line_within(line, &budget).to_string())
+    })
 }
 
 /// The line without its line ending (as the CLI reads lines).
@@ -69,12 +68,14 @@ struct State {
     window: usize,
 }
 
-/// Batch(lines: Iterable[str], threads: int | None = None)
+/// Batch(lines: Iterable[str], threads: int | None = None, time_limit: float | None = None)
 ///
 /// An iterator of the answers to ``lines`` (``str`` or ``bytes``, with or
 /// without the trailing newline), in order, computed on ``threads`` Rust
 /// worker threads (default: the number of CPUs) with the GIL released;
-/// at most ``32 * threads`` lines are read ahead.
+/// at most ``32 * threads`` lines are read ahead.  Each line runs under
+/// its own budget (``time_limit`` seconds, ``None``: the default 10 s), as
+/// in ``quadsect batch``.
 #[pyclass(frozen, module = "quadsect._quadsect")]
 pub(crate) struct Batch {
     state: Mutex<State>,
@@ -84,8 +85,14 @@ pub(crate) struct Batch {
 #[pymethods]
 impl Batch {
     #[new]
-    #[pyo3(signature = (lines, threads = None))]
-    fn py_new(py: Python<'_>, lines: &Bound<'_, PyAny>, threads: Option<usize>) -> PyResult<Self> {
+    #[pyo3(signature = (lines, threads = None, time_limit = None))]
+    fn py_new(
+        py: Python<'_>,
+        lines: &Bound<'_, PyAny>,
+        threads: Option<usize>,
+        time_limit: Option<f64>,
+    ) -> PyResult<Self> {
+        let per_line = guard::budget(py, time_limit)?;
         let threads = match threads {
             Some(0) => {
                 return Err(input_error(
@@ -105,7 +112,7 @@ impl Batch {
         for i in 0..threads {
             let jobs = Arc::clone(&job_rx);
             let out = answer_tx.clone();
-            let budget = Budget::unlimited().with_cancel_flag(Arc::clone(&cancel));
+            let budget = per_line.clone().with_cancel_flag(Arc::clone(&cancel));
             std::thread::Builder::new()
                 .name(format!("quadsect-batch-{i}"))
                 .spawn(move || worker(&jobs, &out, &budget))
@@ -202,8 +209,8 @@ fn line_text(obj: &Bound<'_, PyAny>) -> PyResult<String> {
 }
 
 /// A worker: answers numbered lines until the job channel closes or the
-/// consumer is gone.  The budget carries the batch's cancellation flag
-/// (the per-line default budget of the protocol applies inside it).
+/// consumer is gone, each line under `budget` (the batch's per-line budget,
+/// carrying its cancellation flag), exactly as `quadsect batch` does.
 fn worker(jobs: &Mutex<Receiver<(u64, String)>>, out: &Sender<(u64, String)>, budget: &Budget) {
     loop {
         let job = match jobs.lock() {
@@ -211,11 +218,7 @@ fn worker(jobs: &Mutex<Receiver<(u64, String)>>, out: &Sender<(u64, String)>, bu
             Err(_) => return,
         };
         let Ok((i, line)) = job else { return };
-        let a = quadsect::budget::run(budget, || answer(&line)).unwrap_or_else(|e| {
-            serde_json::json!({"id": null, "ok": false,
-                "error": {"kind": "budget", "message": e.to_string()}})
-            .to_string()
-        });
+        let a = quadsect::batch::answer_line_within(&line, budget).to_string();
         if out.send((i, a)).is_err() {
             return;
         }

@@ -83,18 +83,23 @@ pub(crate) fn natural_input(py: Python<'_>, text: &str) -> PyResult<(String, Str
     })
 }
 
-/// natural(a, b, time_limit) -> (json, text)
+/// natural(a, b, time_limit, components) -> (json, text)
 ///
-/// `a`, `b` in the short syntax or the JSON object form.
+/// `a`, `b` in the short syntax or the JSON object form; `components =
+/// false` asks for the class and counts only (the fast route).
 #[pyfunction]
-#[pyo3(signature = (a, b, time_limit = None))]
+#[pyo3(signature = (a, b, time_limit = None, components = true))]
 pub(crate) fn natural(
     py: Python<'_>,
     a: &str,
     b: &str,
     time_limit: Option<f64>,
+    components: bool,
 ) -> PyResult<(String, String)> {
-    let options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
+    let mut options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
+    if !components {
+        options = options.without_components();
+    }
     guard::run(py, || {
         let qa: Natural = parse(a, "in the first quadric")?;
         let qb: Natural = parse(b, "in the second quadric")?;

@@ -128,3 +128,20 @@ def test_batch_propagates_errors_of_the_input_iterable():
     it = quadsect.batch(broken(), threads=1)
     with pytest.raises(OSError):
         list(it)
+
+
+def test_time_limit_is_per_line_as_in_the_cli(tmp_path):
+    """`time_limit` of answer_line / batch is `quadsect batch --time-limit`:
+    a limit of 1 ns stops every line that computes at its first budget
+    check, identically in both."""
+    lines = corpus()
+    src = tmp_path / "in.jsonl"
+    src.write_text("\n".join(lines) + "\n")
+    out = subprocess.run([quadsect_binary(), "batch", "--time-limit", "1e-9", str(src)],
+                         check=True, capture_output=True)
+    expected = out.stdout.decode().split("\n")[:-1]
+    assert [quadsect.answer_line(line, time_limit=1e-9) for line in lines] == expected
+    assert list(quadsect.batch(lines, threads=2, time_limit=1e-9)) == expected
+    budget = [json.loads(a) for a in expected]
+    assert any(a["ok"] and a["result"].get("verdict") == "undecided" for a in budget)
+    assert any(not a["ok"] and a["error"]["kind"] == "budget" for a in budget)

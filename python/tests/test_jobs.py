@@ -79,31 +79,32 @@ def test_time_limit_validation():
     assert quadsect.tangent(E1, S1, time_limit=30).verdict == "separated"
 
 
-def _engine_checks_budgets() -> bool:
-    """True when the engine's loops check the budget (issue 16): a zero time
-    limit then stops a degree-3 computation."""
-    r = quadsect.tangent("x^2 + 2y^2 + 3z^2 - 6", "x^3 - y*z + x*y^2 - 1/3", time_limit=0)
-    return r.verdict == "undecided"
-
-
-budget_checks = pytest.mark.skipif(
-    not _engine_checks_budgets(),
-    reason="the engine's loops do not check budgets yet (issue 16): nothing can run out",
-)
-
-
-@budget_checks
 def test_exhausted_time_limit_is_an_undecided_answer_for_tangent():
     r = quadsect.tangent("x^2 + 2y^2 + 3z^2 - 6", "x^3 - y*z + x*y^2 - 1/3", time_limit=0)
-    assert r.verdict == "undecided" and r.intersect is None
+    assert r.verdict == "undecided" and r.intersect is None and r.touching is None
     assert r.undecided_kind == "budget" and "time" in r.reason
+    assert r.to_json()["reason"]["limit"] == "time"
 
 
-@budget_checks
+@pytest.mark.parametrize("components", [True, False])
+def test_exhausted_time_limit_is_an_undecided_answer_for_natural(components):
+    a = Cone((0, 0, 0), (0, 0, 1), tan2=1)
+    b = Cylinder((1, 0, 0), (1, 1, 0), "1/3")
+    r = quadsect.natural(a, b, time_limit=0, components=components)
+    assert r.classification == "undecided"
+    assert (r.conics, r.lines, r.points, r.components) == (None, None, None, [])
+    assert r.undecided_kind == "budget" and "time" in r.reason
+    assert r.to_json()["reason"]["limit"] == "time"
+    # with time, the same pair is decided
+    decided = quadsect.natural(a, b, components=components)
+    assert decided.classification != "undecided" and decided.reason is None
+
+
 def test_exhausted_time_limit_raises_budget_error_for_the_kernel():
     with pytest.raises(BudgetError) as e:
         quadsect.resultant("(x+y+z)^6+x^3*y-7", "(x-2y+3z)^5+y^5*z-1", "x", time_limit=0)
     assert e.value.kind == "budget" and isinstance(e.value, RuntimeError)
+    assert "time" in str(e.value)
     with pytest.raises(BudgetError):
         quadsect.roots("x^300 - 3x^77 + 5x - 1", time_limit=0)
 
@@ -154,6 +155,28 @@ def test_natural_accepts_every_input_form():
         assert c["conic"] == raw["conic"] == "ellipse"
         assert c["semi_axes2"] == [Fraction(x) for x in raw["semi_axes2"]]
         assert c["center"] == [0, 0, 0]
+
+
+NATURAL_PAIRS = [
+    ("cylinder point=0,0,0 axis=1,0,0 radius2=1", "cylinder point=0,0,0 axis=0,1,0 radius2=1"),
+    ("cone vertex=0,0,0 axis=0,0,1 tan2=1", "sphere center=0,0,2 radius2=2"),
+    ("sphere center=0,0,0 radius2=1", "sphere center=3,0,0 radius2=1"),
+    ("cylinder point=0,0,0 axis=0,0,1 radius2=1", "cylinder point=1,0,0 axis=0,0,1 radius2=1"),
+    ("cone vertex=0,0,0 axis=0,0,1 tan2=1", "cylinder point=1,0,0 axis=1,1,0 radius2=1/3"),
+]
+
+
+@pytest.mark.parametrize("a,b", NATURAL_PAIRS)
+def test_natural_without_components_gives_the_same_class_and_counts(a, b):
+    full = quadsect.natural(a, b)
+    fast = quadsect.natural(a, b, components=False)
+    assert (fast.classification, fast.conics, fast.lines, fast.points, fast.thm8) == (
+        full.classification, full.conics, full.lines, full.points, full.thm8)
+    assert full.route is None and fast.route in ("fast", "complete")
+    if fast.route == "fast":
+        assert fast.components == [] and "components" not in fast.to_json()
+    line = json.dumps({"id": 0, "op": "natural", "a": a, "b": b, "components": False})
+    assert json.loads(quadsect.answer_line(line))["result"] == fast.to_json()
 
 
 def test_typed_quadrics_validate_and_normalise():
