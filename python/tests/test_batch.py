@@ -40,7 +40,8 @@ def quadsect_binary():
     """The CLI built from this repository (scripts/test_python.sh builds it)."""
     path = os.environ.get("QUADSECT_BIN") or str(REPO / "target" / "release" / "quadsect")
     if not os.path.exists(path):
-        pytest.skip("the quadsect CLI is not built (scripts/test_python.sh builds it)")
+        pytest.fail(f"the quadsect CLI is not built at {path} (scripts/test_python.sh builds it; "
+                    "or set QUADSECT_BIN)")
     return path
 
 

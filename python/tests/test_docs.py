@@ -14,6 +14,7 @@ import quadsect._errors
 import quadsect.dask
 
 README = pathlib.Path(__file__).resolve().parents[1] / "README.md"
+ROOT_README = pathlib.Path(__file__).resolve().parents[2] / "README.md"
 GLOBS = {"quadsect": quadsect, "Fraction": Fraction, "json": json,
          "RealAlgebraic": quadsect.RealAlgebraic, "Sphere": quadsect.Sphere,
          "Cylinder": quadsect.Cylinder, "Cone": quadsect.Cone}
@@ -51,9 +52,18 @@ def test_every_public_item_has_a_docstring():
             assert (obj.__doc__ or "").strip(), name
 
 
-def test_readme_python_examples_run():
-    blocks = re.findall(r"```python\n(.*?)```", README.read_text(), flags=re.S)
-    assert len(blocks) >= 5
-    namespace: dict = {}
+def python_blocks(path):
+    return re.findall(r"```python\n(.*?)```", path.read_text(), flags=re.S)
+
+
+@pytest.mark.parametrize("readme,least", [(README, 5), (ROOT_README, 1)], ids=["python/README.md", "README.md"])
+def test_readme_python_examples_run(readme, least, tmp_path, monkeypatch):
+    """Every ```python block of the README runs as written, in order, in one
+    namespace (as a reader pasting them into one session), in a fresh
+    directory."""
+    blocks = python_blocks(readme)
+    assert len(blocks) >= least
+    monkeypatch.chdir(tmp_path)
+    namespace: dict = {"__name__": "__main__"}
     for block in blocks:
-        exec(compile(block, str(README), "exec"), namespace)
+        exec(compile(block, str(readme), "exec"), namespace)
