@@ -1,0 +1,683 @@
+"""quadsect — exact decisions on how two surfaces meet.
+
+Every number is exact: inputs are ``int``, ``fractions.Fraction``, ``str``
+in the engine's syntax (``"7/9"``, ``"1.5"``, ``"1e-12"``) or ``float`` /
+``Decimal`` taken at their exact binary/decimal value; rationals come back
+as ``Fraction`` and irrational values as :class:`RealAlgebraic` (a
+square-free integer polynomial and an isolating interval).  Polynomials are
+strings in the input syntax (``"x^2 + y^2 + z^2 - 25"``, ``"2x^2 - 3(y-1)"``).
+
+The four jobs:
+
+* :func:`tangent` — an ellipsoid against an algebraic surface (the tangent
+  point method): intersecting, touching, separated, with the exact min and
+  max of S on E and a certificate;
+* :func:`natural` — two natural quadrics (spheres, circular cylinders, right
+  cones): the class of their intersection and every conic, line and point;
+* :func:`roots`, :func:`resultant` — the algebra kernel;
+
+and the batch protocol of ``quadsect batch``: :func:`answer_line`,
+:func:`batch` (streaming, in order, on Rust threads), and
+:mod:`quadsect.dask` for bags of lines on a Dask cluster.
+
+>>> r = quadsect.tangent("x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1")
+>>> r.verdict, r.min, r.max
+('separated', RealAlgebraic('9*u - 7', ('7/9', '7/9')), RealAlgebraic('9*u - 187', ('187/9', '187/9')))
+>>> r.min == Fraction(7, 9)
+True
+
+The engine computes with the GIL released, so Python threads run in
+parallel with it; it never panics into Python: bad input raises
+:class:`InputError` (a ``ValueError``) with ``.kind``, an exhausted budget
+:class:`BudgetError` from :func:`roots` and :func:`resultant` (:func:`tangent`
+and :func:`natural` answer ``"undecided"`` instead), a failure inside
+quadsect :class:`InternalError`.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import (
+    Any,
+    Dict,
+    Iterable,
+    Iterator,
+    List,
+    Mapping,
+    Optional,
+    Sequence,
+    Tuple,
+    Union,
+    overload,
+)
+
+from . import _quadsect
+from ._errors import BudgetError, InputError, InternalError, QuadsectError
+from ._quadsect import RealAlgebraic, answer_line, exact
+
+__version__: str = _quadsect.__version__
+
+#: The time limit (seconds) of one call when ``time_limit`` is ``None``.
+DEFAULT_TIME_LIMIT: float = _quadsect.DEFAULT_TIME_LIMIT
+
+__all__ = [
+    "tangent",
+    "natural",
+    "roots",
+    "resultant",
+    "answer_line",
+    "batch",
+    "exact",
+    "RealAlgebraic",
+    "Sphere",
+    "Cylinder",
+    "Cone",
+    "TangentResult",
+    "NaturalResult",
+    "RootsResult",
+    "ResultantResult",
+    "QuadsectError",
+    "InputError",
+    "BudgetError",
+    "InternalError",
+    "DEFAULT_TIME_LIMIT",
+]
+
+Number = Union[int, Fraction, float, str, Any]
+"""A number input: int, Fraction, str (engine syntax), float or Decimal (exact value)."""
+
+Vector = Tuple[Fraction, Fraction, Fraction]
+
+# ---------------------------------------------------------------- helpers
+
+_RATIONAL = re.compile(r"-?[0-9]+(?:/[0-9]+)?\Z")
+
+
+def _decode(value: Any, key: Optional[str] = None) -> Any:
+    """The JSON of a report with its exact rational strings as ``Fraction``.
+
+    Approximations (``approx``) and polynomials (``poly``, ``*_poly``) stay
+    strings; everything else that reads as an exact rational becomes one.
+    """
+    if isinstance(value, str):
+        if key is not None and (key == "approx" or key.endswith("poly")):
+            return value
+        return Fraction(value) if _RATIONAL.match(value) else value
+    if isinstance(value, list):
+        return [_decode(v, key) for v in value]
+    if isinstance(value, dict):
+        return {k: _decode(v, k) for k, v in value.items()}
+    return value
+
+
+def _text(q: Fraction) -> str:
+    """The engine's spelling of an exact rational."""
+    return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+
+
+def _vector(v: Sequence[Number], name: str) -> Vector:
+    if isinstance(v, (str, bytes)) or len(v) != 3:
+        raise InputError(f"{name} must be three numbers, got {v!r}", "bad-quadric")
+    x, y, z = (exact(c) for c in v)
+    return (x, y, z)
+
+
+def _json_numbers(value: Any) -> Any:
+    """A natural quadric's dict with every number as an exact string."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, (list, tuple)):
+        return [_json_numbers(v) for v in value]
+    if isinstance(value, Mapping):
+        return {k: (v if k == "kind" else _json_numbers(v)) for k, v in value.items()}
+    return _text(exact(value))
+
+
+# ------------------------------------------------------ natural quadrics
+
+
+class _NaturalBase:
+    """Shared behaviour of the typed natural quadrics."""
+
+    kind: str = ""
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The JSON object form (numbers as exact strings), as the batch
+        protocol and the CLI read it."""
+        raise NotImplementedError
+
+    def to_json(self) -> str:
+        """The JSON object form as text."""
+        return json.dumps(self.to_dict(), separators=(",", ":"))
+
+    def __str__(self) -> str:
+        """The short syntax (``sphere center=0,0,0 radius2=1``)."""
+        return _quadsect.natural_input(self.to_json())[0]
+
+    def _check(self) -> Dict[str, Any]:
+        """Validates with the engine; returns its canonical JSON form."""
+        return json.loads(_quadsect.natural_input(self.to_json())[1])
+
+
+@dataclass(frozen=True)
+class Sphere(_NaturalBase):
+    """A sphere ``|P - center|² = radius2`` (``radius2 > 0``).
+
+    >>> Sphere((0, 0, 0), Fraction(9, 4))
+    Sphere(center=(Fraction(0, 1), Fraction(0, 1), Fraction(0, 1)), radius2=Fraction(9, 4))
+    >>> str(Sphere((1, 2, 3), "1/4"))
+    'sphere center=1,2,3 radius2=1/4'
+    """
+
+    center: Vector
+    radius2: Fraction
+    kind = "sphere"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "center", _vector(self.center, "center"))
+        object.__setattr__(self, "radius2", exact(self.radius2))
+        self._check()
+
+    def to_dict(self) -> Dict[str, Any]:
+        return {
+            "kind": "sphere",
+            "center": [_text(c) for c in self.center],
+            "radius2": _text(self.radius2),
+        }
+
+
+@dataclass(frozen=True)
+class Cylinder(_NaturalBase):
+    """A circular cylinder of squared radius ``radius2`` around the line
+    through ``point`` with direction ``axis`` (non-zero, any length).
+
+    >>> str(Cylinder((0, 0, 0), (1, 0, 0), 1))
+    'cylinder point=0,0,0 axis=1,0,0 radius2=1'
+    """
+
+    point: Vector
+    axis: Vector
+    radius2: Fraction
+    kind = "cylinder"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "point", _vector(self.point, "point"))
+        object.__setattr__(self, "axis", _vector(self.axis, "axis"))
+        object.__setattr__(self, "radius2", exact(self.radius2))
+        self._check()
+
+    def to_dict(self) -> Dict[str, Any]:
+        return {
+            "kind": "cylinder",
+            "point": [_text(c) for c in self.point],
+            "axis": [_text(c) for c in self.axis],
+            "radius2": _text(self.radius2),
+        }
+
+
+@dataclass(frozen=True, init=False)
+class Cone(_NaturalBase):
+    """A right circular double cone with vertex ``vertex``, axis direction
+    ``axis`` and half-angle α given by exactly one of ``tan2 = tan²α``,
+    ``tan``, ``cos2 = cos²α`` or ``sin2 = sin²α`` (stored as ``tan2``).
+
+    >>> Cone((0, 0, 0), (0, 0, 1), cos2=Fraction(3, 4)).tan2
+    Fraction(1, 3)
+    >>> str(Cone((0, 0, 0), (1, 0, 0), tan2="1/3"))
+    'cone vertex=0,0,0 axis=1,0,0 tan2=1/3'
+    """
+
+    vertex: Vector
+    axis: Vector
+    tan2: Fraction
+    kind = "cone"
+
+    def __init__(
+        self,
+        vertex: Sequence[Number],
+        axis: Sequence[Number],
+        tan2: Optional[Number] = None,
+        *,
+        tan: Optional[Number] = None,
+        cos2: Optional[Number] = None,
+        sin2: Optional[Number] = None,
+    ) -> None:
+        given = {k: v for k, v in (("tan2", tan2), ("tan", tan), ("cos2", cos2), ("sin2", sin2)) if v is not None}
+        if len(given) != 1:
+            raise InputError(
+                "a cone needs exactly one of tan2, tan, cos2, sin2", "bad-quadric"
+            )
+        ((name, value),) = given.items()
+        object.__setattr__(self, "vertex", _vector(vertex, "vertex"))
+        object.__setattr__(self, "axis", _vector(axis, "axis"))
+        spec = {
+            "kind": "cone",
+            "vertex": [_text(c) for c in self.vertex],
+            "axis": [_text(c) for c in self.axis],
+            name: _text(exact(value)),
+        }
+        canonical = json.loads(_quadsect.natural_input(json.dumps(spec))[1])
+        object.__setattr__(self, "tan2", Fraction(canonical["tan2"]))
+
+    def to_dict(self) -> Dict[str, Any]:
+        return {
+            "kind": "cone",
+            "vertex": [_text(c) for c in self.vertex],
+            "axis": [_text(c) for c in self.axis],
+            "tan2": _text(self.tan2),
+        }
+
+
+NaturalLike = Union[str, Mapping[str, Any], Sphere, Cylinder, Cone]
+"""A natural quadric: short syntax, JSON text, a dict, or Sphere/Cylinder/Cone."""
+
+
+def _natural_text(q: NaturalLike, which: str) -> str:
+    if isinstance(q, _NaturalBase):
+        return q.to_json()
+    if isinstance(q, str):
+        return q
+    if isinstance(q, Mapping):
+        return json.dumps(_json_numbers(q))
+    raise TypeError(
+        f"{which} must be a str (short syntax or JSON), a dict, or a "
+        f"Sphere/Cylinder/Cone, got {type(q).__name__}"
+    )
+
+
+# ------------------------------------------------------------ results
+
+
+class _Result:
+    """Shared behaviour: the CLI's JSON and human text."""
+
+    def __init__(self, json_text: str, text: str) -> None:
+        self._json: Dict[str, Any] = json.loads(json_text)
+        self._text = text
+
+    def to_json(self) -> Dict[str, Any]:
+        """The CLI's ``--json`` object (exact numbers as strings), a fresh copy."""
+        return json.loads(json.dumps(self._json))
+
+    @property
+    def summary(self) -> str:
+        """The human summary, as the CLI prints it without ``--json``."""
+        return self._text
+
+    def __str__(self) -> str:
+        """The human summary (:attr:`summary`)."""
+        return self._text
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and other._json == self._json  # type: ignore[attr-defined]
+
+    __hash__ = None  # type: ignore[assignment]
+
+
+class TangentResult(_Result):
+    """The answer of :func:`tangent`.
+
+    ``verdict`` is ``"intersecting"``, ``"touching"``, ``"separated"`` or
+    ``"undecided"``; ``min`` and ``max`` are the exact minimum ν and maximum
+    μ of S on E (E and S intersect iff ν ≤ 0 ≤ μ, touch iff ν = 0 or μ = 0).
+    """
+
+    def __init__(
+        self,
+        json_text: str,
+        text: str,
+        min: Optional[RealAlgebraic],
+        max: Optional[RealAlgebraic],
+        critical_values: List[RealAlgebraic],
+        nonreal_point_values: List[RealAlgebraic],
+        undecided: Optional[Tuple[str, str]],
+    ) -> None:
+        super().__init__(json_text, text)
+        self.min = min
+        self.max = max
+        #: The real critical values of S on E (increasing), exactly.
+        self.critical_values = critical_values
+        #: Real values of S at non-real critical points (roots of D(u) that are no critical value).
+        self.nonreal_point_values = nonreal_point_values
+        #: For an undecided verdict, why: ``"budget"`` or ``"no-certificate"``.
+        self.undecided_kind: Optional[str] = undecided[0] if undecided else None
+        #: For an undecided verdict, the reason in words.
+        self.reason: Optional[str] = undecided[1] if undecided else None
+
+    @property
+    def verdict(self) -> str:
+        """``"intersecting"``, ``"touching"``, ``"separated"`` or ``"undecided"``."""
+        return self._json["verdict"]
+
+    @property
+    def intersect(self) -> Optional[bool]:
+        """E and S meet (ν ≤ 0 ≤ μ); ``None`` when undecided."""
+        return self._json["intersect"]
+
+    @property
+    def touching(self) -> Optional[bool]:
+        """They meet without crossing (ν = 0 or μ = 0); ``None`` when undecided."""
+        return self._json["touching"]
+
+    @property
+    def side(self) -> Optional[str]:
+        """``"+"`` or ``"-"``: the sign of S on E when it does not change."""
+        return self._json["side"]
+
+    @property
+    def containment(self) -> Optional[str]:
+        """``"E-inside-S"``, ``"S-inside-E"`` or ``"apart"`` when S is an
+        ellipsoid and they do not intersect, else ``None``."""
+        return self._json["containment"]
+
+    @property
+    def judging_poly(self) -> str:
+        """The judging polynomial D(u) (square-free, integer coefficients)."""
+        return self._json["judging_poly"]
+
+    @property
+    def certificate(self) -> Dict[str, Any]:
+        """The certificate (the JSON ``certificate`` object with exact
+        rationals as ``Fraction``; approximations and polynomials as str)."""
+        return _decode(self._json["certificate"])
+
+    def __repr__(self) -> str:
+        return f"TangentResult(verdict={self.verdict!r}, min={self.min!r}, max={self.max!r})"
+
+    def __reduce__(self):
+        return (_rebuild_tangent, (json.dumps(self._json), self._text, self.min, self.max,
+                                   self.critical_values, self.nonreal_point_values,
+                                   (self.undecided_kind, self.reason) if self.reason else None))
+
+
+def _rebuild_tangent(*args: Any) -> TangentResult:
+    return TangentResult(*args)
+
+
+class NaturalResult(_Result):
+    """The answer of :func:`natural`: the class of the intersection, the
+    counts of real affine conics, lines and isolated points, and each
+    component with exact data.
+
+    Running out of budget is an answer, not an error: ``classification ==
+    "undecided"``, the counts are ``None``, :attr:`undecided_kind` is
+    ``"budget"`` and :attr:`reason` says which limit ran out."""
+
+    @property
+    def classification(self) -> str:
+        """``"same-surface"``, ``"conics"``, ``"conic-and-line"``, ``"lines"``,
+        ``"points"``, ``"empty"``, ``"curve"``, or ``"undecided"`` (the
+        budget ran out)."""
+        return self._json["class"]
+
+    @property
+    def undecided_kind(self) -> Optional[str]:
+        """For an undecided answer, why: ``"budget"``; else ``None``."""
+        r = self._json.get("reason")
+        return r["kind"] if r is not None else None
+
+    @property
+    def reason(self) -> Optional[str]:
+        """For an undecided answer, the reason in words (which limit ran
+        out); else ``None``."""
+        r = self._json.get("reason")
+        return r["message"] if r is not None else None
+
+    @property
+    def conics(self) -> Optional[int]:
+        """Real affine conics (a double conic counts once); ``None`` when undecided."""
+        return self._json["conics"]
+
+    @property
+    def lines(self) -> Optional[int]:
+        """Real affine lines (a double line counts once); ``None`` when undecided."""
+        return self._json["lines"]
+
+    @property
+    def points(self) -> Optional[int]:
+        """Isolated real points on no other component; ``None`` when undecided."""
+        return self._json["points"]
+
+    @property
+    def axes(self) -> Optional[str]:
+        """``"coplanar-intersecting"``, ``"parallel"``, ``"coincident"``,
+        ``"skew"``, or ``None`` when a sphere is involved."""
+        return self._json["axes"]
+
+    @property
+    def thm8(self) -> Optional[bool]:
+        """The closed-form test of Theorems 8.1/8.2 where it applies."""
+        return self._json["thm8"]
+
+    @property
+    def components(self) -> List[Dict[str, Any]]:
+        """The components (conics, lines, points, curves) as dicts, exact
+        rationals as ``Fraction``; a number a + b√d is ``{"a", "b", "d",
+        "approx"}``.  Empty when undecided or asked for without
+        components (``natural(a, b, components=False)``)."""
+        return _decode(self._json.get("components", []))
+
+    @property
+    def route(self) -> Optional[str]:
+        """``"fast"`` or ``"complete"`` for an answer without components
+        (the complete route answers where the fast one cannot decide),
+        else ``None``."""
+        return self._json.get("route")
+
+    @property
+    def method(self) -> str:
+        """How the class was decided, in words."""
+        return self._json["method"]
+
+    @property
+    def notes(self) -> List[str]:
+        """Remarks."""
+        return list(self._json.get("notes", []))
+
+    def __repr__(self) -> str:
+        return (
+            f"NaturalResult(classification={self.classification!r}, conics={self.conics}, "
+            f"lines={self.lines}, points={self.points})"
+        )
+
+    def __reduce__(self):
+        return (NaturalResult, (json.dumps(self._json), self._text))
+
+
+class RootsResult(_Result, Sequence[RealAlgebraic]):
+    """The answer of :func:`roots`: a sequence of the distinct real roots
+    (increasing, as :class:`RealAlgebraic`), with counts and multiplicities."""
+
+    def __init__(self, json_text: str, text: str, roots: List[Tuple[RealAlgebraic, int]]) -> None:
+        super().__init__(json_text, text)
+        self._roots = [r for r, _ in roots]
+        #: The multiplicity of each root, in order.
+        self.multiplicities: List[int] = [m for _, m in roots]
+
+    @overload
+    def __getitem__(self, i: int) -> RealAlgebraic: ...
+    @overload
+    def __getitem__(self, i: slice) -> List[RealAlgebraic]: ...
+    def __getitem__(self, i):  # type: ignore[no-untyped-def]
+        return self._roots[i]
+
+    def __len__(self) -> int:
+        return len(self._roots)
+
+    def __iter__(self) -> Iterator[RealAlgebraic]:
+        return iter(self._roots)
+
+    @property
+    def roots(self) -> List[RealAlgebraic]:
+        """The distinct real roots, increasing."""
+        return list(self._roots)
+
+    @property
+    def distinct_real(self) -> int:
+        """Number of distinct real roots."""
+        return self._json["distinct_real"]
+
+    @property
+    def positive(self) -> int:
+        """Distinct positive roots."""
+        return self._json["positive"]
+
+    @property
+    def negative(self) -> int:
+        """Distinct negative roots."""
+        return self._json["negative"]
+
+    @property
+    def zero_multiplicity(self) -> int:
+        """Multiplicity of the root 0 (0 when 0 is no root)."""
+        return self._json["zero_multiplicity"]
+
+    @property
+    def real_with_multiplicity(self) -> int:
+        """Real roots counted with multiplicity."""
+        return self._json["real_with_multiplicity"]
+
+    @property
+    def descartes_bounds(self) -> Tuple[int, int]:
+        """Descartes' bounds on the positive and negative roots."""
+        return (self._json["descartes_positive_bound"], self._json["descartes_negative_bound"])
+
+    @property
+    def intervals(self) -> List[Tuple[Fraction, Fraction]]:
+        """One isolating interval per distinct real root (``lo == hi`` for
+        an exact rational root)."""
+        return [(Fraction(lo), Fraction(hi)) for lo, hi in self._json["intervals"]]
+
+    def __repr__(self) -> str:
+        return f"RootsResult({self._roots!r})"
+
+    def __reduce__(self):
+        return (RootsResult, (json.dumps(self._json), self._text,
+                              list(zip(self._roots, self.multiplicities))))
+
+
+class ResultantResult(_Result):
+    """The answer of :func:`resultant`; ``str()`` is the resultant."""
+
+    @property
+    def resultant(self) -> str:
+        """``Res_var(f, g)`` in canonical form."""
+        return self._json["resultant"]
+
+    @property
+    def degree(self) -> Optional[int]:
+        """Its total degree (``None`` for the zero polynomial)."""
+        d = self._json["degree"]
+        return d if d is not None and d >= 0 else None
+
+    def __str__(self) -> str:
+        """The resultant (the human summary is :attr:`summary`)."""
+        return self.resultant
+
+    def __repr__(self) -> str:
+        return f"ResultantResult({self.resultant!r})"
+
+    def __reduce__(self):
+        return (ResultantResult, (json.dumps(self._json), self._text))
+
+
+# --------------------------------------------------------------- jobs
+
+
+def tangent(ellipsoid: str, surface: str, *, time_limit: Optional[float] = None) -> TangentResult:
+    """How the ellipsoid ``E = 0`` and the surface ``S = 0`` meet (the tangent
+    point method), exactly.
+
+    ``time_limit`` is in seconds (``None``: :data:`DEFAULT_TIME_LIMIT`;
+    ``math.inf``: none).  Running out of time is an answer, not an error:
+    ``verdict == "undecided"`` with ``undecided_kind == "budget"`` and the
+    ``reason``.  Bad input raises :class:`InputError`.
+
+    >>> r = quadsect.tangent("x^2+y^2+z^2-25", "(x-6)^2/9+y^2/4+z^2/16-1")
+    >>> r.verdict, r.intersect, r.side
+    ('intersecting', True, None)
+    >>> r.min < 0 < r.max
+    True
+    """
+    return TangentResult(*_quadsect.tangent(ellipsoid, surface, time_limit))
+
+
+def natural(
+    a: NaturalLike,
+    b: NaturalLike,
+    *,
+    time_limit: Optional[float] = None,
+    components: bool = True,
+) -> NaturalResult:
+    """How two natural quadrics meet, exactly.
+
+    ``a`` and ``b`` are each the short syntax (``"cone vertex=0,0,0
+    axis=1,0,0 tan2=1/3"``), JSON text, a dict of the JSON object form
+    (numbers may be int/Fraction/float/str), or a :class:`Sphere`,
+    :class:`Cylinder` or :class:`Cone`.  ``components=False`` asks for the
+    class and counts only (the fast route: same class and counts, much
+    quicker).  ``time_limit`` is in seconds as for :func:`tangent`; running
+    out is an answer: ``classification == "undecided"`` with the
+    :attr:`~NaturalResult.reason`.
+
+    >>> r = quadsect.natural(Cylinder((0, 0, 0), (1, 0, 0), 1),
+    ...                      "cylinder point=0,0,0 axis=0,1,0 radius2=1")
+    >>> r.classification, r.conics, r.components[0]["conic"]
+    ('conics', 2, 'ellipse')
+    >>> r.components[0]["semi_axes2"]
+    [Fraction(2, 1), Fraction(1, 1)]
+    """
+    return NaturalResult(
+        *_quadsect.natural(_natural_text(a, "a"), _natural_text(b, "b"), time_limit, components)
+    )
+
+
+def roots(poly: str, *, time_limit: Optional[float] = None) -> RootsResult:
+    """The real roots of a univariate polynomial, exactly: a sequence of
+    :class:`RealAlgebraic` (distinct, increasing) with counts.  An exhausted
+    budget raises :class:`BudgetError`.
+
+    >>> r = quadsect.roots("x^3 - 2x")
+    >>> len(r), r.positive, [float(x) for x in r]
+    (3, 1, [-1.4142135623730951, 0.0, 1.4142135623730951])
+    >>> r[1] == 0, r.intervals[1]
+    (True, (Fraction(0, 1), Fraction(0, 1)))
+    """
+    return RootsResult(*_quadsect.roots(poly, time_limit))
+
+
+def resultant(f: str, g: str, var: str, *, time_limit: Optional[float] = None) -> ResultantResult:
+    """The resultant ``Res_var(f, g)``, exactly (``var`` is ``"x"``, ``"y"``,
+    ``"z"`` or ``"u"``).  An exhausted budget raises :class:`BudgetError`.
+
+    >>> r = quadsect.resultant("x^2 + y^2 - 1", "x - y", "x")
+    >>> str(r), r.degree
+    ('2*y^2 - 1', 2)
+    """
+    return ResultantResult(*_quadsect.resultant(f, g, var, time_limit))
+
+
+def batch(
+    lines: Iterable[Union[str, bytes]],
+    threads: Optional[int] = None,
+    *,
+    time_limit: Optional[float] = None,
+) -> Iterator[str]:
+    """The answers to batch lines (the protocol of ``quadsect batch``), one
+    per line, in order, streamed: each answer is :func:`answer_line` of its
+    line.  The lines are answered on ``threads`` Rust worker threads
+    (default: the number of CPUs) with the GIL released, reading at most
+    ``32 * threads`` lines ahead of the answer returned, so an endless or
+    huge input streams in bounded memory.  ``lines`` may be a file object.
+    Each line runs under its own budget: ``time_limit`` seconds (``None``:
+    :data:`DEFAULT_TIME_LIMIT`), as ``quadsect batch --time-limit``.
+
+    >>> lines = ['{"id": 1, "op": "roots", "poly": "x^2 - 2"}',
+    ...          '{"id": 2, "op": "resultant", "f": "x^2+y^2-1", "g": "x-y", "var": "x"}']
+    >>> [json.loads(a)["id"] for a in quadsect.batch(lines, threads=2)]
+    [1, 2]
+    """
+    return _quadsect.Batch(lines, threads, time_limit)

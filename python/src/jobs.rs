@@ -1,0 +1,150 @@
+//! The four jobs.  Each runs the engine with the GIL released and returns
+//! the CLI's `--json` text (the Python half decodes it into a result
+//! class), the human text, and the exact numbers as `RealAlgebraic`.
+
+use crate::guard;
+use crate::numbers::RealAlgebraic;
+use pyo3::prelude::*;
+use quadsect::natural::ClassifyOptions;
+use quadsect::tangent::{TangentOptions, Undecided};
+use quadsect::{Ellipsoid, Error, Natural, Polynomial, RealAlg, Var};
+
+fn json_text<T: serde::Serialize>(report: &T) -> Result<String, Error> {
+    serde_json::to_string(report).map_err(|e| Error::internal(format!("JSON output: {e}")))
+}
+
+/// Parses an input, naming it in the error (`in the ellipsoid: …`).
+fn parse<T: std::str::FromStr<Err = Error>>(text: &str, what: &str) -> Result<T, Error> {
+    text.parse().map_err(|e: Error| e.context(what))
+}
+
+fn algebraic(values: &[RealAlg]) -> Vec<RealAlgebraic> {
+    values.iter().cloned().map(RealAlgebraic::new).collect()
+}
+
+/// What `tangent` hands to the Python half.
+type TangentParts = (
+    String,
+    String,
+    Option<RealAlgebraic>,
+    Option<RealAlgebraic>,
+    Vec<RealAlgebraic>,
+    Vec<RealAlgebraic>,
+    Option<(String, String)>,
+);
+
+/// tangent(ellipsoid, surface, time_limit) -> (json, text, min, max,
+/// critical_values, nonreal_point_values, undecided)
+///
+/// `undecided` is `None` or `(kind, reason)` with kind `budget` or
+/// `no-certificate`.
+#[pyfunction]
+#[pyo3(signature = (ellipsoid, surface, time_limit = None))]
+pub(crate) fn tangent(
+    py: Python<'_>,
+    ellipsoid: &str,
+    surface: &str,
+    time_limit: Option<f64>,
+) -> PyResult<TangentParts> {
+    let options = TangentOptions::with_budget(guard::budget(py, time_limit)?);
+    guard::run(py, || {
+        let e: Ellipsoid = parse(ellipsoid, "in the ellipsoid")?;
+        let s: Polynomial = parse(surface, "in the surface")?;
+        let r = quadsect::tangent::decide_with(&e, &s, &options)?;
+        let c = r.certificate();
+        let undecided = r.undecided().map(|u| {
+            let kind = match u {
+                Undecided::Budget(_) => "budget",
+                _ => "no-certificate",
+            };
+            (kind.to_string(), u.to_string())
+        });
+        Ok((
+            json_text(&r)?,
+            r.to_string(),
+            r.min().cloned().map(RealAlgebraic::new),
+            r.max().cloned().map(RealAlgebraic::new),
+            algebraic(c.critical_values()),
+            algebraic(c.nonreal_point_values()),
+            undecided,
+        ))
+    })
+}
+
+/// natural_input(text) -> (short, json)
+///
+/// A natural quadric in the short syntax or the JSON object form, checked,
+/// in its two canonical forms.
+#[pyfunction]
+pub(crate) fn natural_input(py: Python<'_>, text: &str) -> PyResult<(String, String)> {
+    guard::run(py, || {
+        let q: Natural = text.parse()?;
+        Ok((q.to_string(), json_text(&q)?))
+    })
+}
+
+/// natural(a, b, time_limit, components) -> (json, text)
+///
+/// `a`, `b` in the short syntax or the JSON object form; `components =
+/// false` asks for the class and counts only (the fast route).
+#[pyfunction]
+#[pyo3(signature = (a, b, time_limit = None, components = true))]
+pub(crate) fn natural(
+    py: Python<'_>,
+    a: &str,
+    b: &str,
+    time_limit: Option<f64>,
+    components: bool,
+) -> PyResult<(String, String)> {
+    let mut options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
+    if !components {
+        options = options.without_components();
+    }
+    guard::run(py, || {
+        let qa: Natural = parse(a, "in the first quadric")?;
+        let qb: Natural = parse(b, "in the second quadric")?;
+        let r = quadsect::natural::classify_with(&qa, &qb, &options)?;
+        Ok((json_text(&r)?, r.to_string()))
+    })
+}
+
+/// What `roots` hands to the Python half: JSON, text, (root, multiplicity).
+type RootsParts = (String, String, Vec<(RealAlgebraic, u32)>);
+
+/// roots(poly, time_limit) -> (json, text, roots)
+///
+/// `roots` are the distinct real roots, increasing, with multiplicities.
+#[pyfunction]
+#[pyo3(signature = (poly, time_limit = None))]
+pub(crate) fn roots(py: Python<'_>, poly: &str, time_limit: Option<f64>) -> PyResult<RootsParts> {
+    let budget = guard::budget(py, time_limit)?;
+    guard::run(py, || {
+        let p: Polynomial = poly.parse()?;
+        let r = quadsect::roots_with(&p, &budget)?;
+        let values = r
+            .roots()
+            .map(|x| (RealAlgebraic::new(x.value()), x.multiplicity()))
+            .collect();
+        Ok((json_text(&r)?, r.to_string(), values))
+    })
+}
+
+/// resultant(f, g, var, time_limit) -> (json, text)
+#[pyfunction]
+#[pyo3(signature = (f, g, var, time_limit = None))]
+pub(crate) fn resultant(
+    py: Python<'_>,
+    f: &str,
+    g: &str,
+    var: &str,
+    time_limit: Option<f64>,
+) -> PyResult<(String, String)> {
+    let budget = guard::budget(py, time_limit)?;
+    guard::run(py, || {
+        let v: Var = var.parse()?;
+        let fp: Polynomial = parse(f, "in the first polynomial")?;
+        let gp: Polynomial = parse(g, "in the second polynomial")?;
+        let r = quadsect::resultant_with(&fp, &gp, v, &budget)?;
+        Ok((json_text(&r)?, r.to_string()))
+    })
+}
