@@ -1,0 +1,62 @@
+//! # quadsect's C and C++ interface
+//!
+//! `libquadsect.so` / `libquadsect.a` and `include/quadsect.h` (made by
+//! cbindgen from this crate; `check_header.sh` checks it is fresh).  Two
+//! levels, both exact and both never aborting the host:
+//!
+//! * text/JSON ([`json`]): expressions in the input syntax in, the JSON of
+//!   the CLI's `--json` out, and one line of the batch protocol;
+//! * typed doubles ([`typed`]): natural quadrics, ellipsoids and quadrics
+//!   given as doubles, each taken as its exact binary value; answers in
+//!   small structs, extremes as doubles rounded outward ([`float`]).
+//!
+//! Every entry point runs inside [`boundary::guard`]: a panic becomes an
+//! internal error (code 1), bad input code 2, an exhausted budget code 3,
+//! with the kind and message in a `qs_error`.  No global state: calls on
+//! different threads share nothing (the engine's budget is thread-local).
+//! See `README.md` for the ownership rules.
+
+// The C names (qs_error, qs_natural_f64, …) are the interface.
+#![allow(non_camel_case_types)]
+
+pub mod boundary;
+mod float;
+pub mod json;
+pub mod options;
+pub mod typed;
+
+use std::ffi::c_char;
+
+/// The major version of the library (`QS_VERSION_MAJOR`).
+pub const QS_VERSION_MAJOR: u32 = 0;
+/// The minor version.
+pub const QS_VERSION_MINOR: u32 = 1;
+/// The patch version.
+pub const QS_VERSION_PATCH: u32 = 0;
+/// `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if QS_VERSION_NUMBER >= …`.
+pub const QS_VERSION_NUMBER: u32 =
+    QS_VERSION_MAJOR * 10000 + QS_VERSION_MINOR * 100 + QS_VERSION_PATCH;
+/// The version of the library that is linked, `"MAJOR.MINOR.PATCH"`
+/// (compare it with the header's `QS_VERSION`, made from
+/// `QS_VERSION_MAJOR`, `QS_VERSION_MINOR` and `QS_VERSION_PATCH`).  A static string: never free it.
+#[unsafe(no_mangle)]
+pub extern "C" fn qs_version() -> *const c_char {
+    concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_version_macros_match_the_package_version() {
+        assert_eq!(QS_VERSION, env!("CARGO_PKG_VERSION"));
+        let parts: Vec<u32> = QS_VERSION.split('.').map(|p| p.parse().unwrap()).collect();
+        assert_eq!(
+            parts,
+            [QS_VERSION_MAJOR, QS_VERSION_MINOR, QS_VERSION_PATCH]
+        );
+        let v = unsafe { std::ffi::CStr::from_ptr(qs_version()) };
+        assert_eq!(v.to_str().unwrap(), QS_VERSION);
+    }
+}
