@@ -1,6 +1,6 @@
 //! The kernel jobs: real roots of a univariate polynomial and resultants,
 //! as library functions (exact results, no formatting; see
-//! [`crate::report`] for the JSON and text).
+//! the report layer for the JSON and the text).
 
 use crate::budget::Budget;
 use crate::elim::resultant_mpoly;
@@ -101,13 +101,6 @@ impl RootsReport {
     }
 }
 
-impl std::fmt::Display for RootsReport {
-    /// The human summary (as `quadsect roots` prints it).
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::report::roots_human(self))
-    }
-}
-
 /// Analyses the real roots of a univariate polynomial exactly (square-free
 /// factorisation for the multiplicities, Descartes/VCA isolation; for degree
 /// n and τ-bit coefficients O(n⁴τ²) bit operations in the worst case, far
@@ -138,6 +131,7 @@ pub fn roots_str(expr: &str) -> Result<RootsReport, Error> {
 }
 
 pub(crate) fn roots_of(p: &QMPoly) -> Result<RootsReport, Error> {
+    crate::budget::check_now();
     let vars = p.vars();
     if vars.len() > 1 {
         let names: Vec<&str> = vars.iter().map(|&v| VAR_NAMES[v]).collect();
@@ -188,13 +182,6 @@ impl ResultantReport {
     }
 }
 
-impl std::fmt::Display for ResultantReport {
-    /// The human form (as `quadsect resultant` prints it).
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::report::resultant_human(self))
-    }
-}
-
 /// `Res_var(f, g)`, exactly (subresultants over Z[other variables] or a
 /// multi-modular determinant; cost polynomial in the degrees and bit sizes),
 /// under the default budget.
@@ -231,6 +218,7 @@ pub fn resultant_str(f: &str, g: &str, var: &str) -> Result<ResultantReport, Err
 }
 
 pub(crate) fn resultant_of(f: &QMPoly, g: &QMPoly, var: Var) -> Result<ResultantReport, Error> {
+    crate::budget::check_now();
     let r = resultant_mpoly(f, g, var.index());
     let degree = r.total_degree().map(|d| d as i64).unwrap_or(-1);
     Ok(ResultantReport {

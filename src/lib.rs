@@ -68,6 +68,59 @@
 //! | [`batch`] | the JSON-lines protocol of `quadsect batch` (feature `serde`) |
 //! | `cli` | the command-line program (feature `cli`) |
 //!
+//! ## What the types forbid
+//!
+//! Invalid values cannot be built: every input type has private fields and
+//! checked constructors, so a zero axis, a negative radius², an "isolating"
+//! interval without a root or a non-square-free defining polynomial is an
+//! error at construction, never a panic or a wrong answer later.
+//!
+//! ```compile_fail
+//! // a cylinder's fields are private: only Cylinder::new (which checks) builds one
+//! use quadsect::{Cylinder, Natural, Rational};
+//! let z = Rational::from_integer(0.into());
+//! let c = Natural::Cylinder(Cylinder { point: [z.clone(), z.clone(), z.clone()],
+//!     axis: [z.clone(), z.clone(), z.clone()], r2: -Rational::from_integer(1.into()) });
+//! ```
+//!
+//! ```compile_fail
+//! // a real algebraic number has no public representation: RealAlg::new checks it
+//! use quadsect::RealAlg;
+//! let r = RealAlg::Root { poly: "u^2-2".parse().unwrap(), lo: 0.into(), hi: 1.into() };
+//! ```
+//!
+//! ```compile_fail
+//! // QSqrt's parts are read through accessors only (d ≥ 0 is an invariant)
+//! let mut x = quadsect::QSqrt::rational(1.into());
+//! x.d = (-1).into();
+//! ```
+//!
+//! ```compile_fail
+//! // result enums are #[non_exhaustive]: matches need a wildcard arm
+//! fn name(v: quadsect::Verdict) -> &'static str {
+//!     match v {
+//!         quadsect::Verdict::Intersecting => "i",
+//!         quadsect::Verdict::Touching => "t",
+//!         quadsect::Verdict::Separated => "s",
+//!         quadsect::Verdict::Undecided => "u",
+//!     }
+//! }
+//! ```
+//!
+//! The checked errors, for comparison:
+//!
+//! ```
+//! use quadsect::{Cylinder, ErrorKind, IntPoly, RealAlg, Rational};
+//! let r = |n: i64| Rational::from_integer(n.into());
+//! let e = Cylinder::new([r(0), r(0), r(0)], [r(0), r(0), r(0)], r(-1)).unwrap_err();
+//! assert_eq!(e.kind(), ErrorKind::BadQuadric);
+//! let p: IntPoly = "u^2 - 2".parse().unwrap();
+//! assert!(RealAlg::new(&p, &r(0), &r(1)).is_err()); // no root in [0, 1]
+//! let sq: IntPoly = "(u^2 - 2)^2".parse().unwrap();
+//! let s = RealAlg::new(&sq, &r(1), &r(2)).unwrap(); // √2, not a wrong value
+//! assert_eq!(s.approx(6), "1.41421");
+//! ```
+//!
 //! ## Budgets
 //!
 //! Every operation runs under a [`Budget`] (time, memory, sizes,
@@ -78,7 +131,7 @@
 //!
 //! ## Features
 //!
-//! * `cli` (default): the `quadsect` program (clap, indicatif, rayon).
+//! * `cli` (default): the `quadsect` program (clap, indicatif; batch threads are std threads).
 //!   Library users: `default-features = false`.
 //! * `serde`: `Serialize` for the reports (the JSON of `--json`, keys in the
 //!   documented order), the JSON input form of natural quadrics, and
@@ -129,7 +182,7 @@ pub use kernel::{
 pub use natural::{
     Class, ClassifyOptions, Cone, Cylinder, Natural, NaturalReport, Sphere, classify, classify_with,
 };
-pub use number::{QSqrt, Sign};
+pub use number::{NumberMode, QSqrt, Sign};
 pub use poly::{IntPoly, Polynomial, Var};
 pub use roots::RealAlg;
 pub use tangent::{Ellipsoid, TangentOptions, TangentReport, Verdict, decide, decide_with};
@@ -147,7 +200,27 @@ pub fn parse_rational(s: &str) -> Result<Rational, Error> {
     number::parse_rational(s).map_err(Error::from)
 }
 
+/// [`parse_rational`] in a [`NumberMode`]: with [`NumberMode::Float`] a
+/// decimal literal becomes its nearest double (round to nearest, ties to
+/// even) — the number a program reading the text would hold.  Hexadecimal
+/// floats (`0x1.8p-1`) are exact in both modes.
+///
+/// ```
+/// use quadsect::{NumberMode, Rational};
+/// let x = quadsect::parse_rational_in("0.1", NumberMode::Float).unwrap();
+/// assert_eq!(Some(x), Rational::from_float(0.1_f64));
+/// assert_eq!(quadsect::parse_rational("0x1.8p-1").unwrap(), Rational::new(3.into(), 4.into()));
+/// ```
+pub fn parse_rational_in(s: &str, mode: NumberMode) -> Result<Rational, Error> {
+    number::parse_rational_with(s, mode).map_err(Error::from)
+}
+
 /// Arbitrary-precision integers (re-exported from `num-bigint`).
 pub use num_bigint::BigInt;
 /// Exact rationals (re-exported from `num-rational`): every input number.
 pub use num_rational::BigRational as Rational;
+
+/// The README's Rust examples, compiled and run as doctests so they stay true.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

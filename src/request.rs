@@ -7,16 +7,27 @@ use crate::budget::Budget;
 use crate::error::Error;
 use crate::kernel::{ResultantReport, RootsReport};
 use crate::natural::{ClassifyOptions, Natural, NaturalReport};
+use crate::number::NumberMode;
 use crate::tangent::{Ellipsoid, TangentOptions, TangentReport};
 use std::fmt;
 
 /// An operation and its inputs.
 #[derive(Clone, Debug)]
 pub(crate) enum Request {
-    /// Ellipsoid vs surface (both in the input syntax).
-    Tangent { ellipsoid: String, surface: String },
-    /// Two natural quadrics.
-    Natural { a: Natural, b: Natural },
+    /// Ellipsoid vs surface (both in the input syntax, numbers read in
+    /// `mode`).
+    Tangent {
+        ellipsoid: String,
+        surface: String,
+        mode: NumberMode,
+    },
+    /// Two natural quadrics; `components: false` asks for the class and
+    /// counts only (the fast route).
+    Natural {
+        a: Natural,
+        b: Natural,
+        components: bool,
+    },
     /// Real roots of a univariate polynomial.
     Roots { poly: String },
     /// A resultant.
@@ -34,22 +45,45 @@ pub(crate) enum Answer {
 
 /// The operations by name, with the fields of their batch lines.
 pub(crate) const OPS: [(&str, &[&str]); 4] = [
-    ("tangent", &["ellipsoid", "surface"]),
-    ("natural", &["a", "b"]),
+    ("tangent", &["ellipsoid", "surface", "float"]),
+    ("natural", &["a", "b", "components", "float"]),
     ("roots", &["poly"]),
     ("resultant", &["f", "g", "var"]),
 ];
 
 impl Request {
-    /// Runs the request under `budget`.
+    /// Runs the request under `budget` (parsing included).  When the budget
+    /// runs out, tangent and natural answer `undecided` (with the limit),
+    /// roots and resultant give an error of kind `budget`.
     pub(crate) fn execute(&self, budget: &Budget) -> Result<Answer, Error> {
+        match crate::budget::run(budget, || self.execute_unbudgeted(budget)) {
+            Ok(answer) => answer,
+            Err(e) => match self {
+                Request::Tangent { .. } => Ok(Answer::Tangent(
+                    crate::tangent::TangentReport::budget_exhausted(e),
+                )),
+                Request::Natural { a, b, .. } => {
+                    Ok(Answer::Natural(NaturalReport::budget_exhausted(a, b, e)))
+                }
+                _ => Err(e.into()),
+            },
+        }
+    }
+
+    fn execute_unbudgeted(&self, budget: &Budget) -> Result<Answer, Error> {
         Ok(match self {
-            Request::Tangent { ellipsoid, surface } => {
-                let e: Ellipsoid = ellipsoid
-                    .parse()
-                    .map_err(|x: Error| x.context("in the ellipsoid"))?;
-                let s = crate::poly::parse_poly(surface)
-                    .map_err(|x| Error::from(x).context("in the surface"))?;
+            Request::Tangent {
+                ellipsoid,
+                surface,
+                mode,
+            } => {
+                let parse = |t: &str, what: &str| {
+                    crate::poly::parse_poly_in(t, &crate::poly::Limits::default(), *mode)
+                        .map_err(|x| Error::from(x).context(what))
+                };
+                let e = Ellipsoid::from_poly(&parse(ellipsoid, "in the ellipsoid")?)
+                    .map_err(|x| x.context("in the ellipsoid"))?;
+                let s = parse(surface, "in the surface")?;
                 let options = TangentOptions::with_budget(budget.clone());
                 Answer::Tangent(crate::tangent::decide_with(
                     &e,
@@ -57,14 +91,14 @@ impl Request {
                     &options,
                 )?)
             }
-            Request::Natural { a, b } => Answer::Natural(crate::natural::classify_with(
-                a,
-                b,
-                &ClassifyOptions::with_budget(budget.clone()),
-            )?),
+            Request::Natural { a, b, components } => {
+                let mut options = ClassifyOptions::with_budget(budget.clone());
+                options.components = *components;
+                Answer::Natural(crate::natural::classify_with(a, b, &options)?)
+            }
             Request::Roots { poly } => {
                 let p = crate::poly::parse_poly(poly)?;
-                Answer::Roots(crate::budget::run(budget, || crate::kernel::roots_of(&p))??)
+                Answer::Roots(crate::kernel::roots_of(&p)?)
             }
             Request::Resultant { f, g, var } => {
                 let v = var.parse()?;
@@ -72,11 +106,23 @@ impl Request {
                     .map_err(|e| Error::from(e).context("in the first polynomial"))?;
                 let gp = crate::poly::parse_poly(g)
                     .map_err(|e| Error::from(e).context("in the second polynomial"))?;
-                Answer::Resultant(crate::budget::run(budget, || {
-                    crate::kernel::resultant_of(&fp, &gp, v)
-                })??)
+                Answer::Resultant(crate::kernel::resultant_of(&fp, &gp, v)?)
             }
         })
+    }
+}
+
+impl Answer {
+    /// The budget that ran out, when the answer is `undecided` because of it.
+    pub(crate) fn exhausted(&self) -> Option<&crate::budget::Exhausted> {
+        match self {
+            Answer::Tangent(r) => match r.undecided() {
+                Some(crate::tangent::Undecided::Budget(e)) => Some(e),
+                _ => None,
+            },
+            Answer::Natural(r) => r.exhausted(),
+            _ => None,
+        }
     }
 }
 
@@ -94,7 +140,7 @@ impl fmt::Display for Answer {
 
 #[cfg(feature = "serde")]
 mod json {
-    use super::{Answer, OPS, Request};
+    use super::{Answer, NumberMode, OPS, Request};
     use crate::error::{Error, ErrorKind};
     use serde_json::{Map, Value};
 
@@ -115,10 +161,35 @@ mod json {
             })
     }
 
-    fn natural(obj: &Map<String, Value>, name: &str) -> Result<crate::natural::Natural, Error> {
+    /// An optional boolean field.
+    fn flag(obj: &Map<String, Value>, name: &str, default: bool) -> Result<bool, Error> {
+        match obj.get(name) {
+            None => Ok(default),
+            Some(Value::Bool(b)) => Ok(*b),
+            Some(_) => Err(Error::new(
+                ErrorKind::BadField,
+                format!("field \"{name}\" must be true or false"),
+            )),
+        }
+    }
+
+    /// The number mode of a line: `"float": true` reads literals as doubles.
+    fn mode(obj: &Map<String, Value>) -> Result<NumberMode, Error> {
+        Ok(if flag(obj, "float", false)? {
+            NumberMode::Float
+        } else {
+            NumberMode::Exact
+        })
+    }
+
+    fn natural(
+        obj: &Map<String, Value>,
+        name: &str,
+        mode: NumberMode,
+    ) -> Result<crate::natural::Natural, Error> {
         match field(obj, name)? {
-            Value::String(s) => crate::natural::parse_natural(s),
-            other => crate::natural::types::from_json(other),
+            Value::String(s) => crate::natural::types::parse_natural_in(s, mode),
+            other => crate::natural::types::from_json_in(other, mode),
         }
         .map_err(|e| e.context(&format!("in \"{name}\"")))
     }
@@ -131,10 +202,12 @@ mod json {
                 "tangent" => Request::Tangent {
                     ellipsoid: text(obj, "ellipsoid")?,
                     surface: text(obj, "surface")?,
+                    mode: mode(obj)?,
                 },
                 "natural" => Request::Natural {
-                    a: natural(obj, "a")?,
-                    b: natural(obj, "b")?,
+                    a: natural(obj, "a", mode(obj)?)?,
+                    b: natural(obj, "b", mode(obj)?)?,
+                    components: flag(obj, "components", true)?,
                 },
                 "roots" => Request::Roots {
                     poly: text(obj, "poly")?,

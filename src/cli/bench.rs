@@ -24,22 +24,36 @@ pub struct Row {
     pub median: f64,
     /// Number of samples.
     pub samples: usize,
+    /// Extra JSON fields of the row (`group`, `max_s`, `agrees`, … of the
+    /// natural-pair rows).
+    pub extra: serde_json::Map<String, Value>,
 }
 
 /// Median seconds per call of `f`: calls are repeated inside a sample until
 /// it lasts about 25 ms, and at least 5 samples (11 for fast calls) are
 /// taken (the same protocol as `bench_anchors.py`).
-pub fn measure(mut f: impl FnMut()) -> (f64, usize) {
+pub fn measure(f: impl FnMut()) -> (f64, usize) {
+    sample(f, 0.025, None, 30.0)
+}
+
+/// [`measure`] with a chosen sample length (seconds) and number of samples.
+pub fn measure_with(f: impl FnMut(), target: f64, want: usize) -> (f64, usize) {
+    sample(f, target, Some(want), 10.0)
+}
+
+/// The sampling loop: `want` samples (default 5 for slow calls, 11 for
+/// fast ones) of about `target` seconds each, stopping after `limit`
+/// seconds once three are taken.
+fn sample(mut f: impl FnMut(), target: f64, want: Option<usize>, limit: f64) -> (f64, usize) {
     let t0 = Instant::now();
     f();
     let first = t0.elapsed().as_secs_f64();
-    let target = 0.025;
     let inner = if first >= target {
         1
     } else {
         ((target / first.max(1e-8)) as usize).max(1)
     };
-    let want = if first >= 0.2 { 5 } else { 11 };
+    let want = want.unwrap_or(if first >= 0.2 { 5 } else { 11 });
     let mut samples = Vec::with_capacity(want);
     if first >= 1.0 {
         samples.push(first);
@@ -51,7 +65,7 @@ pub fn measure(mut f: impl FnMut()) -> (f64, usize) {
             f();
         }
         samples.push(t.elapsed().as_secs_f64() / inner as f64);
-        if start.elapsed().as_secs_f64() > 30.0 && samples.len() >= 3 {
+        if start.elapsed().as_secs_f64() > limit && samples.len() >= 3 {
             break;
         }
     }
@@ -92,6 +106,7 @@ pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
             desc: "resultant (multi-modular)".into(),
             median: m,
             samples: n,
+            extra: Default::default(),
         });
     }
     for case in inputs["roots"].as_array().ok_or_else(bad)? {
@@ -105,6 +120,7 @@ pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
             desc: "exact real-root isolation (VCA)".into(),
             median: m,
             samples: n,
+            extra: Default::default(),
         });
         let (m, n) = measure(|| {
             black_box(crate::roots::SturmSequence::new(&p).count_all());
@@ -115,6 +131,7 @@ pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
             desc: "Sturm count of real roots".into(),
             median: m,
             samples: n,
+            extra: Default::default(),
         });
     }
     for case in inputs["bivariate"].as_array().ok_or_else(bad)? {
@@ -148,6 +165,7 @@ pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
             desc: "bivariate resultant (evaluation/interpolation mod p)".into(),
             median: m,
             samples: n,
+            extra: Default::default(),
         });
     }
     Ok(())
@@ -216,6 +234,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         desc: "full verdict, quadric S (16 random rotated ellipsoid pairs, cycled)".into(),
         median: m,
         samples: n,
+        extra: Default::default(),
     });
     // each pair on its own: the median over the pairs of their medians is
     // the typical verdict; the slowest pair is reported beside it
@@ -237,6 +256,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         desc: "full verdict, quadric S: median over the 16 pairs of each pair's median".into(),
         median: per_pair[per_pair.len() / 2].0,
         samples: per_pair.len(),
+        extra: Default::default(),
     });
     rows.push(Row {
         suite: "tangent",
@@ -244,6 +264,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         desc: format!("full verdict, quadric S: the slowest of the 16 pairs (pair {which})"),
         median: slow,
         samples: per_pair.len(),
+        extra: Default::default(),
     });
     for (id, e, s) in [
         ("paper_ex1", "x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1"),
@@ -263,6 +284,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
             desc: "full verdict (D(u), exact min/max, certificate)".into(),
             median: m,
             samples: n,
+            extra: Default::default(),
         });
     }
     // Examples 1 and 4 moved by the exact rigid motion of
@@ -282,6 +304,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
             desc: "full verdict after a rational rigid motion (not separable)".into(),
             median: m,
             samples: n,
+            extra: Default::default(),
         });
     }
     Ok(())
@@ -301,7 +324,7 @@ pub const EX4ROT_S: &str = "279841*x^4/25431849 - 389344*x^3*y/8477283 - 389344*
 /// classification per family.
 pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
     use crate::natural::deciders::{conic_intersection_thm8, relation, thm8};
-    use crate::natural::{classify, parse_natural};
+    use crate::natural::{Prepared, classify, parse_natural};
     let mut rng = Rng(0x2545f4914f6cdd1d);
     let mut pairs = Vec::new();
     for _ in 0..64 {
@@ -321,18 +344,43 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         let b = parse_natural(&cone(&mut rng))?;
         pairs.push((a, b));
     }
-    let mut k = 0;
-    let (m, n) = measure(|| {
-        let (a, b) = &pairs[k % pairs.len()];
-        k += 1;
-        black_box(conic_intersection_thm8(a, b));
+    let prepared: Vec<(Prepared, Prepared)> = pairs
+        .iter()
+        .map(|(a, b)| (Prepared::new(a), Prepared::new(b)))
+        .collect();
+    let (m, n) = measure_cycled(&prepared, |(a, b)| {
+        black_box(black_box(a).conic_intersection_thm8(black_box(b)));
     });
     rows.push(Row {
         suite: "natural",
         id: "thm8_decider".into(),
-        desc: "Theorem 8.1/8.2 decider, exact (i128 fast path, rational fallback), 64 random cone pairs".into(),
+        desc: "Theorem 8.1/8.2 decider, filtered: f64 with a static error bound, exact fallback (prepared quadrics), 64 random cone pairs".into(),
         median: m,
         samples: n,
+        extra: Default::default(),
+    });
+    let (m, n) = measure_cycled(&prepared, |(a, b)| {
+        black_box(black_box(a).conic_intersection_thm8_exact(black_box(b)));
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "thm8_exact_fallback".into(),
+        desc: "the filter's exact fallback alone (checked i128, big integers on overflow; prepared quadrics)".into(),
+        median: m,
+        samples: n,
+        extra: Default::default(),
+    });
+    let (m, n) = measure_cycled(&pairs, |(a, b)| {
+        black_box(conic_intersection_thm8(a, b));
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "thm8_decider_unprepared".into(),
+        desc: "conic_intersection_thm8 on unprepared quadrics (i128 fast path, rational fallback)"
+            .into(),
+        median: m,
+        samples: n,
+        extra: Default::default(),
     });
     let mut k = 0;
     let (m, n) = measure(|| {
@@ -348,6 +396,7 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         desc: "the same decider in BigRational only (axes relation + inscribed radii)".into(),
         median: m,
         samples: n,
+        extra: Default::default(),
     });
     // the same predicate as a plain f64 formula (reference; may be wrong)
     let fpairs: Vec<[f64; 12]> = pairs
@@ -385,6 +434,41 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         desc: "the same test as a plain f64 formula (reference only: not exact)".into(),
         median: mf,
         samples: nf,
+        extra: Default::default(),
+    });
+    // the same predicate in 3D (cross products, coplanarity test): the
+    // formula the exact decider generalises
+    let f3: Vec<[[f64; 7]; 2]> = pairs
+        .iter()
+        .map(|(a, b)| {
+            let f = |x: &crate::number::Q| num_traits::ToPrimitive::to_f64(x).unwrap_or(0.0);
+            let g = |n: &crate::natural::Natural| -> [f64; 7] {
+                match n {
+                    crate::natural::Natural::Cone(c) => [
+                        f(&c.vertex[0]),
+                        f(&c.vertex[1]),
+                        f(&c.vertex[2]),
+                        f(&c.axis[0]),
+                        f(&c.axis[1]),
+                        f(&c.axis[2]),
+                        f(&c.t2),
+                    ],
+                    _ => [0.0; 7],
+                }
+            };
+            [g(a), g(b)]
+        })
+        .collect();
+    let (m, n) = measure_cycled(&f3, |p| {
+        black_box(f64_thm8_3d(black_box(p)));
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "thm8_f64_reference_3d".into(),
+        desc: "the same test as a plain f64 formula in 3D (cross products, coplanarity; reference only: not exact)".into(),
+        median: m,
+        samples: n,
+        extra: Default::default(),
     });
     let families: [(&str, &str, &str); 8] = [
         (
@@ -428,8 +512,20 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
             "sphere center=3,0,0 radius2=4",
         ),
     ];
+    let no_components = crate::natural::ClassifyOptions::default().without_components();
     for (id, a, b) in families {
         let (a, b) = (parse_natural(a)?, parse_natural(b)?);
+        let (m, n) = measure(|| {
+            black_box(crate::natural::classify_with(&a, &b, &no_components).ok());
+        });
+        rows.push(Row {
+            suite: "natural",
+            id: format!("classify_fast_{id}"),
+            desc: "fast route: class and counts, no components".into(),
+            median: m,
+            samples: n,
+            extra: Default::default(),
+        });
         let (m, n) = measure(|| {
             black_box(classify(&a, &b).ok());
         });
@@ -439,6 +535,7 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
             desc: "full classification with exact components".into(),
             median: m,
             samples: n,
+            extra: Default::default(),
         });
     }
     // generic random pairs (skew axes, cones)
@@ -472,12 +569,24 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
     let (m, n) = measure_cycled(&generic, |(a, b)| {
         black_box(classify(a, b).ok());
     });
+    let (mf, nf) = measure_cycled(&generic, |(a, b)| {
+        black_box(crate::natural::classify_with(a, b, &no_components).ok());
+    });
+    rows.push(Row {
+        suite: "natural",
+        id: "classify_fast_generic_random".into(),
+        desc: "fast route, the same 16 random cone–cylinder pairs (cycled)".into(),
+        median: mf,
+        samples: nf,
+        extra: Default::default(),
+    });
     rows.push(Row {
         suite: "natural",
         id: "classify_generic_random".into(),
         desc: "full classification, 16 random cone–cylinder pairs (skew axes, cycled)".into(),
         median: m,
         samples: n,
+        extra: Default::default(),
     });
     Ok(())
 }
@@ -498,17 +607,234 @@ fn f64_thm8(p: &[f64; 12]) -> bool {
     d1 * t1 / (1.0 + t1) == d2 * t2 / (1.0 + t2)
 }
 
-/// Runs the requested suites (`kernel`, `tangent`, `natural`, `all`).
-pub fn run(suite: &str, inputs_path: &str) -> Result<Vec<Row>, Error> {
+/// The Theorem 8.1 test in f64 for two cones in space (vertex, axis, tan²).
+fn f64_thm8_3d(p: &[[f64; 7]; 2]) -> bool {
+    let [x, y] = p;
+    let cr = |u: [f64; 3], v: [f64; 3]| {
+        [
+            u[1] * v[2] - u[2] * v[1],
+            u[2] * v[0] - u[0] * v[2],
+            u[0] * v[1] - u[1] * v[0],
+        ]
+    };
+    let dt = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    let (v1, a1, v2, a2) = (
+        [x[0], x[1], x[2]],
+        [x[3], x[4], x[5]],
+        [y[0], y[1], y[2]],
+        [y[3], y[4], y[5]],
+    );
+    let n = cr(a1, a2);
+    let nn = dt(n, n);
+    if nn == 0.0 {
+        return x[6] == y[6];
+    }
+    let d = [v2[0] - v1[0], v2[1] - v1[1], v2[2] - v1[2]];
+    if dt(d, n) != 0.0 {
+        return false;
+    }
+    let s = dt(cr(d, a2), n) / nn;
+    let o = [v1[0] + s * a1[0], v1[1] + s * a1[1], v1[2] + s * a1[2]];
+    let w1 = [o[0] - v1[0], o[1] - v1[1], o[2] - v1[2]];
+    let w2 = [o[0] - v2[0], o[1] - v2[1], o[2] - v2[2]];
+    dt(w1, w1) * x[6] / (1.0 + x[6]) == dt(w2, w2) * y[6] / (1.0 + y[6])
+}
+
+/// One pair of a pair file (format of `benches/data/natural_pairs.json`).
+#[derive(Clone, Debug)]
+pub struct BenchPair {
+    /// Its name.
+    pub name: String,
+    /// Its group.
+    pub group: String,
+    /// First quadric.
+    pub a: crate::natural::Natural,
+    /// Second quadric.
+    pub b: crate::natural::Natural,
+    /// The expected class and counts (`{"class", "conics", "lines", "points"}`).
+    pub expect: Value,
+}
+
+/// The natural-quadric pairs of a pair file.
+pub fn read_pairs(path: Option<&str>) -> Result<Vec<BenchPair>, Error> {
+    let text = match path {
+        None => NATURAL_PAIRS.to_string(),
+        Some(p) => std::fs::read_to_string(p)
+            .map_err(|e| Error::new(ErrorKind::Io, format!("cannot read {p}: {e}")))?,
+    };
+    let path = path.unwrap_or("benches/data/natural_pairs.json (built in)");
+    let v: Value = serde_json::from_str(&text)
+        .map_err(|e| Error::new(ErrorKind::Json, format!("{path}: {e}")))?;
+    let bad = |what: &str| Error::new(ErrorKind::Input, format!("{path}: {what}"));
+    let mut out = Vec::new();
+    for p in v["pairs"]
+        .as_array()
+        .ok_or_else(|| bad("no \"pairs\" array"))?
+    {
+        let name = p["name"]
+            .as_str()
+            .ok_or_else(|| bad("a pair without a name"))?;
+        let q = |k: &str| {
+            crate::natural::types::from_json(&p[k])
+                .map_err(|e| e.context(&format!("{path}: {name}.{k}")))
+        };
+        out.push(BenchPair {
+            name: name.to_string(),
+            group: p["group"].as_str().unwrap_or("").to_string(),
+            a: q("a")?,
+            b: q("b")?,
+            expect: p["expect"].clone(),
+        });
+    }
+    Ok(out)
+}
+
+/// The per-group tally of [`pairs_suite`].
+struct GroupTally {
+    name: String,
+    times: Vec<(f64, String)>,
+    agree: usize,
+    fast: usize,
+}
+
+/// The pair suite: the fast classification (no components) timed per
+/// pair, its answer checked against the pair's `expect`, one row per pair
+/// (`natural-pair`) and one per group (`natural-group`: median over the
+/// group's pairs of each pair's median, and the slowest pair).
+pub fn pairs_suite(path: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Error> {
+    use crate::natural::{ClassifyOptions, classify_with};
+    let opts = ClassifyOptions::default().without_components();
+    let pairs = read_pairs(path)?;
+    let mut groups: Vec<GroupTally> = Vec::new();
+    for BenchPair {
+        name,
+        group,
+        a,
+        b,
+        expect,
+    } in &pairs
+    {
+        let r = classify_with(a, b, &opts)?;
+        let c = &r.counts;
+        let agrees = expect["class"].as_str() == Some(c.class.as_str())
+            && expect["conics"].as_u64() == Some(c.conics as u64)
+            && expect["lines"].as_u64() == Some(c.lines as u64)
+            && expect["points"].as_u64() == Some(c.points as u64);
+        let (m, n) = measure_with(
+            || {
+                black_box(classify_with(a, b, &opts).ok());
+            },
+            0.005,
+            7,
+        );
+        let mut extra = serde_json::Map::new();
+        extra.insert("group".into(), json!(group));
+        extra.insert("agrees".into(), json!(agrees));
+        extra.insert("fast".into(), json!(r.answered_fast()));
+        extra.insert("method".into(), json!(r.method));
+        extra.insert(
+            "answer".into(),
+            json!({"class": c.class.as_str(), "conics": c.conics, "lines": c.lines, "points": c.points}),
+        );
+        rows.push(Row {
+            suite: "natural-pair",
+            id: name.clone(),
+            desc: format!(
+                "fast classification, no components ({}{})",
+                c.class.as_str(),
+                if agrees {
+                    ""
+                } else {
+                    ", DISAGREES with expect"
+                }
+            ),
+            median: m,
+            samples: n,
+            extra,
+        });
+        let g = match groups.iter().position(|g| &g.name == group) {
+            Some(k) => &mut groups[k],
+            None => {
+                groups.push(GroupTally {
+                    name: group.clone(),
+                    times: Vec::new(),
+                    agree: 0,
+                    fast: 0,
+                });
+                groups.last_mut().expect("just pushed")
+            }
+        };
+        g.times.push((m, name.clone()));
+        g.agree += usize::from(agrees);
+        g.fast += usize::from(r.answered_fast());
+    }
+    for GroupTally {
+        name: group,
+        mut times,
+        agree,
+        fast,
+    } in groups
+    {
+        times.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let (max, slowest) = times[times.len() - 1].clone();
+        let mut extra = serde_json::Map::new();
+        extra.insert("max_s".into(), json!(max));
+        extra.insert("slowest".into(), json!(slowest));
+        extra.insert("pairs".into(), json!(times.len()));
+        extra.insert("agree".into(), json!(agree));
+        extra.insert("fast_route".into(), json!(fast));
+        rows.push(Row {
+            suite: "natural-group",
+            id: group,
+            desc: format!(
+                "fast classification: median over {} pairs (slowest {slowest} {}); {agree} agree with expect, {fast} by the fast route",
+                times.len(),
+                fmt_time(max)
+            ),
+            median: times[times.len() / 2].0,
+            samples: times.len(),
+            extra,
+        });
+    }
+    Ok(())
+}
+
+/// The kernel benchmark inputs shipped with the crate (a copy of the team's
+/// shared inputs, `benches/data/kernel_inputs.json`), used when no
+/// `--inputs` path is given.
+pub const KERNEL_INPUTS: &str = include_str!("../../benches/data/kernel_inputs.json");
+
+/// The natural-quadric pair set shipped with the crate
+/// (`benches/data/natural_pairs.json`), used when no `--pairs` path is given.
+pub const NATURAL_PAIRS: &str = include_str!("../../benches/data/natural_pairs.json");
+
+/// Runs the suites (`kernel`, `tangent`, `natural` or `all`); the kernel
+/// suite reads `inputs_path` and the natural suite's pair rows `pairs_path`,
+/// or the shipped files when they are `None`.
+pub fn run(
+    suite: &str,
+    inputs_path: Option<&str>,
+    pairs_path: Option<&str>,
+) -> Result<Vec<Row>, Error> {
     let mut rows = Vec::new();
     let all = suite == "all";
+    if !["all", "kernel", "tangent", "natural"].contains(&suite) {
+        return Err(Error::new(
+            ErrorKind::Input,
+            format!("unknown benchmark suite \"{suite}\" (kernel, tangent, natural or all)"),
+        ));
+    }
     if all || suite == "kernel" {
-        let text = std::fs::read_to_string(inputs_path).map_err(|e| {
-            Error::new(
-                ErrorKind::Io,
-                format!("cannot read {inputs_path}: {e} (use --inputs PATH)"),
-            )
-        })?;
+        let inputs_path = inputs_path.unwrap_or("benches/data/kernel_inputs.json (built in)");
+        let text = match inputs_path {
+            p if p.ends_with("(built in)") => KERNEL_INPUTS.to_string(),
+            p => std::fs::read_to_string(p).map_err(|e| {
+                Error::new(
+                    ErrorKind::Io,
+                    format!("cannot read {p}: {e} (use --inputs PATH)"),
+                )
+            })?,
+        };
         let v: Value = serde_json::from_str(&text)
             .map_err(|e| Error::new(ErrorKind::Json, format!("{inputs_path}: {e}")))?;
         kernel_suite(&v, &mut rows)?;
@@ -518,12 +844,7 @@ pub fn run(suite: &str, inputs_path: &str) -> Result<Vec<Row>, Error> {
     }
     if all || suite == "natural" {
         natural_suite(&mut rows)?;
-    }
-    if !all && !["kernel", "tangent", "natural"].contains(&suite) {
-        return Err(Error::new(
-            ErrorKind::Input,
-            format!("unknown suite \"{suite}\" (kernel, tangent, natural or all)"),
-        ));
+        pairs_suite(pairs_path, &mut rows)?;
     }
     Ok(rows)
 }
@@ -545,7 +866,13 @@ pub fn fmt_time(s: f64) -> String {
 pub fn to_json(rows: &[Row]) -> Value {
     Value::Array(
         rows.iter()
-            .map(|r| json!({"suite": r.suite, "id": r.id, "desc": r.desc, "median_s": r.median, "samples": r.samples}))
+            .map(|r| {
+                let mut o = json!({"suite": r.suite, "id": r.id, "desc": r.desc, "median_s": r.median, "samples": r.samples});
+                if let Value::Object(m) = &mut o {
+                    m.extend(r.extra.clone());
+                }
+                o
+            })
             .collect(),
     )
 }

@@ -226,6 +226,11 @@ pub fn reduce_full(f: &GPoly, basis: &[&GPoly], ord: MonoOrder) -> (GPoly, Q) {
     let mut scale = Q::one();
     let mut steps = 0usize;
     while !p.is_empty() {
+        crate::budget::check_size(
+            "a polynomial in a Gröbner reduction",
+            p.len() + r.len(),
+            p[0].1.bits(),
+        );
         let (lm, lc) = (p[0].0, p[0].1.clone());
         match basis.iter().find(|g| divides(g.lm(), &lm)) {
             Some(g) => {
@@ -312,7 +317,9 @@ pub fn groebner(input: Vec<GPoly>, nvars: usize, ord: MonoOrder) -> GroebnerBasi
         }
         update(&mut polys, &mut active, &mut pairs, h);
     }
+    let mut basis_terms = 0usize;
     while !pairs.is_empty() {
+        crate::budget::check_now();
         // normal strategy: the pair with the smallest lcm
         let mut best = 0;
         for k in 1..pairs.len() {
@@ -351,6 +358,8 @@ pub fn groebner(input: Vec<GPoly>, nvars: usize, ord: MonoOrder) -> GroebnerBasi
                 polys: vec![red],
             };
         }
+        basis_terms += red.terms.len();
+        crate::budget::check_size("a Gröbner basis", basis_terms, red.lc().bits());
         update(&mut polys, &mut active, &mut pairs, red);
     }
     // minimal basis
@@ -365,6 +374,7 @@ pub fn groebner(input: Vec<GPoly>, nvars: usize, ord: MonoOrder) -> GroebnerBasi
     // reduced basis: tail-reduce each element by the others
     let mut reduced = Vec::with_capacity(min.len());
     for i in 0..min.len() {
+        crate::budget::check();
         let others: Vec<&GPoly> = (0..min.len())
             .filter(|&j| j != i)
             .map(|j| &min[j])
@@ -397,6 +407,7 @@ fn update(polys: &mut Vec<GPoly>, active: &mut Vec<usize>, pairs: &mut Vec<Pair>
     // chain criterion among the new pairs
     let mut d: Vec<Pair> = Vec::new();
     while let Some(p) = c.pop() {
+        crate::budget::check();
         let pm = polys[p.i].lm();
         if coprime(pm, &hm)
             || (!c.iter().any(|q| divides(&q.lcm, &p.lcm))
@@ -451,6 +462,7 @@ impl GroebnerBasis {
         let mut out: Vec<Mono> = vec![[0; GV]];
         let mut frontier = vec![[0u16; GV]];
         while let Some(m) = frontier.pop() {
+            crate::budget::check_size("the monomial basis of a quotient algebra", out.len(), 0);
             for v in 0..self.nvars {
                 let mut n = m;
                 n[v] += 1;

@@ -60,7 +60,10 @@ pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
                 None => return R::rzero(),
             }
         }
+        // a row costs about n − k products of entries of the pivot's size
+        let row_work = m[k][k].bit_size().saturating_mul((n - k) as u64);
         for i in k + 1..n {
+            crate::budget::check_for(row_work);
             for j in k + 1..n {
                 let t = m[i][j].rmul(&m[k][k]).rsub(&m[i][k].rmul(&m[k][j]));
                 m[i][j] = t
@@ -107,6 +110,7 @@ pub fn resultant_subresultant<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
     let mut gg = R::rone();
     let mut h = R::rone();
     loop {
+        crate::budget::check_now();
         let da = a.degree().unwrap_or(0);
         let db = b.degree().unwrap_or(0);
         let delta = da - db;
@@ -161,11 +165,13 @@ pub fn resultant_modular(f: &ZPoly, g: &ZPoly) -> BigInt {
         return num_traits::pow(g.lc(), m);
     }
     let bound = (n as u64) * log2_norm2_ceil(f.coeffs()) + (m as u64) * log2_norm2_ceil(g.coeffs());
+    crate::budget::check_size("a resultant", 1, bound);
     let fd: Vec<Digits> = f.coeffs().iter().map(Digits::new).collect();
     let gd: Vec<Digits> = g.coeffs().iter().map(Digits::new).collect();
     let mut crt = Crt::new();
     let mut i = 0;
     while crt.modulus_bits() <= bound + 1 {
+        crate::budget::check();
         let md = Modulus::new(nth_prime(i));
         i += 1;
         let a: Vec<u64> = fd.iter().map(|d| d.reduce(&md)).collect();
@@ -248,11 +254,38 @@ pub fn resultant_zmpoly(f: &ZMPoly, g: &ZMPoly, v: usize) -> ZMPoly {
         }
         1 => resultant_bivariate_modular(f, g, v, others[0]),
         _ => {
+            let (terms, bits) = resultant_size(f, g, v, &others);
+            crate::budget::check_size("a resultant", terms, bits);
             let fu = f.to_upoly(v);
             let gu = g.to_upoly(v);
             resultant_subresultant(&fu, &gu)
         }
     }
+}
+
+/// Upper bounds on the size of `Res_v(f, g)` from the Sylvester matrix
+/// (`m = deg_v f`, `n = deg_v g`): its degree in each other variable `w` is
+/// at most `n·deg_w f + m·deg_w g` (so at most the product of those plus
+/// one terms), its total degree at most `deg f · deg g`, and its coefficients have at most
+/// `n·bits(‖f‖₁) + m·bits(‖g‖₁)` bits (Hadamard's bound with row sums).
+fn resultant_size(f: &ZMPoly, g: &ZMPoly, v: usize, others: &[usize]) -> (usize, u64) {
+    let m = f.degree_in(v).unwrap_or(0) as usize;
+    let n = g.degree_in(v).unwrap_or(0) as usize;
+    let dense = others.iter().fold(1usize, |acc, &w| {
+        let dw =
+            n * f.degree_in(w).unwrap_or(0) as usize + m * g.degree_in(w).unwrap_or(0) as usize;
+        acc.saturating_mul(dw + 1)
+    });
+    // total degree at most deg f · deg g: at most C(D + k, k) monomials
+    let d = (f.total_degree().unwrap_or(0) as usize)
+        .saturating_mul(g.total_degree().unwrap_or(0) as usize);
+    let by_degree = (1..=others.len()).fold(1usize, |acc, i| acc.saturating_mul(d + i) / i);
+    let terms = dense.min(by_degree);
+    let l1 = |p: &ZMPoly| -> u64 {
+        let top = p.terms().iter().map(|(_, c)| c.bits()).max().unwrap_or(0);
+        top + crate::poly::upoly::log2_ceil(p.len())
+    };
+    (terms, (n as u64) * l1(f) + (m as u64) * l1(g))
 }
 
 /// `Res_v(f, g)` for `f, g ∈ Z[v, w]` by evaluation at `w = 0, 1, 2, …`
@@ -271,6 +304,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         s.bits()
     };
     let bound = (n as u64) * l1(f) + (m as u64) * l1(g);
+    crate::budget::check_size("a resultant", dw + 1, bound);
     // coefficient grids: fc[i][j] = coefficient of v^i w^j
     let grid = |p: &ZMPoly, dv: usize| -> Vec<Vec<(usize, Digits)>> {
         let mut rows: Vec<Vec<(usize, Digits)>> = vec![Vec::new(); dv + 1];
@@ -287,6 +321,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         if crts[0].modulus_bits() > bound + 1 {
             break;
         }
+        crate::budget::check_now();
         let md = Modulus::new(nth_prime(pi));
         pi += 1;
         let red = |rows: &Vec<Vec<(usize, Digits)>>| -> Vec<Vec<u64>> {
@@ -317,6 +352,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         let mut ys = Vec::with_capacity(dw + 1);
         let mut k = 0u64;
         while xs.len() <= dw {
+            crate::budget::check();
             let x = md.to_mont(k);
             let kk = k;
             k += 1;
@@ -338,6 +374,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         }
         let coeffs = interpolate_mod(&xs, &ks, &ys, &md);
         for (i, c) in coeffs.iter().enumerate() {
+            crate::budget::check();
             crts[i].push(&md, *c);
         }
     }
@@ -371,6 +408,7 @@ fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> 
     // divided differences
     let mut dd = ys.to_vec();
     for j in 1..n {
+        crate::budget::check();
         for i in (j..n).rev() {
             let num = m.sub(dd[i], dd[i - 1]);
             let diff = (ks[i] - ks[i - j]) as usize;
@@ -380,6 +418,7 @@ fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> 
     // expand Newton form from the top
     let mut c = vec![0u64; n];
     for i in (0..n).rev() {
+        crate::budget::check();
         // c := c·(x - xs[i]) + dd[i]
         for k in (1..n).rev() {
             c[k] = m.sub(c[k - 1], m.mul(c[k], xs[i]));

@@ -32,6 +32,7 @@ pub fn eval_qsqrt(p: &QMPoly, pt: &[QSqrt; 3]) -> QSqrt {
     let mut coef = vec![Q::zero(); deg + 1];
     let mut powers: [Vec<Q>; 3] = Default::default();
     for (e, c) in p.terms() {
+        crate::budget::check();
         let mut t = c.clone();
         for v in (0..3).filter(|&v| v != k) {
             let ev = e[v] as usize;

@@ -1,4 +1,4 @@
-//! The complete classification of two natural quadrics (SPEC §4): class,
+//! The complete classification of two natural quadrics (contract §4): class,
 //! counts and exact components, with the part-1 deciders where they apply.
 //!
 //! Order of decisions:
@@ -16,11 +16,10 @@
 use super::coaxial::{center_on_axis, same_axis, sphere_on_axis, sphere_sphere};
 use super::deciders::{AxesRelation, AxialPlane, pencil_has_planar_member, relation, thm8};
 use super::planar::{parallelogram_heights, planar_components, skeletal_lines};
-use super::result::{Class, Component, NaturalReport, PlanarDeciders, class_of};
+use super::result::{Class, Component, Counts, NaturalReport, PlanarDeciders, class_of};
 use super::tangency::{Section7, section7};
 use super::topology::classify_nonplanar;
 use super::types::{Natural, parse_natural};
-use crate::budget::Budget;
 use crate::error::Error;
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, NVARS};
@@ -50,22 +49,6 @@ fn conic_string(f: &super::deciders::Conic2) -> String {
     p.to_string_canonical().replace('x', "s").replace('y', "t")
 }
 
-/// Options of [`classify_with`].
-#[derive(Clone, Debug, Default)]
-#[non_exhaustive]
-pub struct ClassifyOptions {
-    /// The compute budget (default: [`Budget::default`]).  When it runs out
-    /// the result is an error of kind [`crate::ErrorKind::Budget`].
-    pub budget: Budget,
-}
-
-impl ClassifyOptions {
-    /// Options with the given budget.
-    pub fn with_budget(budget: Budget) -> ClassifyOptions {
-        ClassifyOptions { budget }
-    }
-}
-
 /// Classifies two natural quadrics under the default budget.
 ///
 /// Cost: planar cases (coplanar axes, spheres, a common axis) take exact
@@ -84,19 +67,13 @@ impl ClassifyOptions {
 /// assert_eq!(r.thm8(), Some(true)); // a common vertex
 /// ```
 pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
-    classify_with(a, b, &ClassifyOptions::default())
+    super::fast::classify_with(a, b, &super::fast::ClassifyOptions::default())
 }
 
-/// [`classify`] with options (the budget).
-pub fn classify_with(
-    a: &Natural,
-    b: &Natural,
-    options: &ClassifyOptions,
-) -> Result<NaturalReport, Error> {
-    crate::budget::run(&options.budget, || classify_unbudgeted(a, b))?
-}
-
-fn classify_unbudgeted(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
+/// The complete route: class, counts and exact components (no budget of
+/// its own; [`super::fast::classify_with`] runs it under one).
+pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
+    crate::budget::check_now();
     let axes = relation(a, b);
     let t8 = axes.as_ref().and_then(|r| thm8(a, b, r));
     let mut notes = Vec::new();
@@ -114,6 +91,10 @@ fn classify_unbudgeted(a: &Natural, b: &Natural) -> Result<NaturalReport, Error>
             section7: None,
             method: "proportional equations",
             notes,
+            counts: Counts::same_surface(),
+            components_computed: true,
+            route: None,
+            exhausted: None,
         });
     }
     let (components, method): (Vec<Component>, &'static str) = match (a, b) {
@@ -192,6 +173,7 @@ fn classify_unbudgeted(a: &Natural, b: &Natural) -> Result<NaturalReport, Error>
         }
     };
     let class = class_of(&components);
+    let counts = Counts::of_components(&components);
     Ok(NaturalReport {
         a: a.clone(),
         b: b.clone(),
@@ -203,6 +185,10 @@ fn classify_unbudgeted(a: &Natural, b: &Natural) -> Result<NaturalReport, Error>
         section7: sec7,
         method,
         notes,
+        counts,
+        components_computed: true,
+        route: None,
+        exhausted: None,
     })
 }
 

@@ -34,7 +34,7 @@ pub enum AxesRelation {
 }
 
 impl AxesRelation {
-    /// SPEC spelling (`coplanar-intersecting`, `parallel`, `coincident`,
+    /// The output spelling (`coplanar-intersecting`, `parallel`, `coincident`,
     /// `skew`).
     pub fn as_str(&self) -> &'static str {
         match self {
@@ -243,7 +243,7 @@ pub struct AxialPlane {
 }
 
 /// Squared height of an axial quadric over the point `O + s e1 + t e2` of
-/// the axial plane (SPEC §4): cylinder `r2 − |(U − Q) × a|²/|a|²`, cone
+/// the axial plane (contract §4): cylinder `r2 − |(U − Q) × a|²/|a|²`, cone
 /// `(1 + t2)((U − V)·a)²/|a|² − |U − V|²`.
 pub fn squared_height(q: &Natural, o: &V3, e1: &V3, e2: &V3) -> Conic2 {
     let (p0, a, cyl_r2, coef) = match q {

@@ -291,6 +291,7 @@ fn lll(mut b: Vec<Vec<BigInt>>) -> Vec<Vec<BigInt>> {
     let mut k = 1;
     let mut guard = 0;
     while k < n && guard < 100_000 {
+        crate::budget::check();
         guard += 1;
         let (mut mu, bn) = gs(&b);
         for j in (0..k).rev() {

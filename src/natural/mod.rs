@@ -15,18 +15,21 @@ pub(crate) mod classify;
 pub(crate) mod coaxial;
 pub(crate) mod deciders;
 pub(crate) mod exact;
+pub(crate) mod fast;
 pub(crate) mod planar;
+pub(crate) mod prepared;
 pub(crate) mod result;
 pub(crate) mod tangency;
 pub(crate) mod topology;
 pub(crate) mod types;
 
 pub use crate::geom::cayley_rotation;
-pub use classify::{ClassifyOptions, classify, classify_str, classify_with};
+pub use classify::{classify, classify_str};
 pub use deciders::{AxesRelation, conic_intersection_thm8 as thm8};
 pub use exact::{EPoint, Exact};
+pub use fast::{ClassifyOptions, classify_counts, classify_with};
+pub use prepared::Prepared;
 pub use result::{Class, Component, ConicKind, NaturalReport, PlanarDeciders, Plane, PointKind};
 pub use tangency::Section7;
-#[cfg(feature = "serde")]
 pub(crate) use types::parse_natural;
 pub use types::{Cone, Cylinder, Natural, Sphere};

@@ -13,7 +13,7 @@
 //! factors of F through V, and the sign of the squared height along them
 //! decides 2, 1 or 0 real lines), parallel axes (Theorem 8.2: one line of F
 //! at infinity), and complex-conjugate factors, whose real common point
-//! carries isolated tangency points (SPEC §6).  Lines of F may need one
+//! carries isolated tangency points (docs/errata.md).  Lines of F may need one
 //! square root: everything is computed in Q(√d).
 
 use super::deciders::{AxialPlane, Conic2};

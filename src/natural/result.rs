@@ -1,5 +1,5 @@
 //! The answer of the natural-quadric classification: class, counts and
-//! exact components (SPEC §4 output).
+//! exact components (contract §4 output).
 
 use super::deciders::AxesRelation;
 use super::exact::{EPoint, Exact};
@@ -21,7 +21,7 @@ pub enum ConicKind {
 }
 
 impl ConicKind {
-    /// SPEC spelling.
+    /// The output spelling.
     pub fn as_str(&self) -> &'static str {
         match self {
             ConicKind::Circle => "circle",
@@ -135,18 +135,14 @@ pub enum Class {
     Empty,
     /// A space curve that is not made of lines and conics.
     Curve,
+    /// Not decided: the compute budget ran out (see
+    /// [`NaturalReport::exhausted`]).
+    Undecided,
 }
 
 impl std::fmt::Display for Class {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.as_str())
-    }
-}
-
-impl std::fmt::Display for NaturalReport {
-    /// The human summary (as `quadsect natural` prints it).
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::report::natural_human(self))
     }
 }
 
@@ -162,6 +158,7 @@ impl Class {
             Class::Points => "points",
             Class::Empty => "empty",
             Class::Curve => "curve",
+            Class::Undecided => "undecided",
         }
     }
 }
@@ -211,6 +208,73 @@ pub struct NaturalReport {
     pub(crate) section7: Option<super::tangency::Section7>,
     pub(crate) method: &'static str,
     pub(crate) notes: Vec<String>,
+    /// Class and counts (the same whichever route answered).
+    pub(crate) counts: Counts,
+    /// False when only the class and counts were asked for (fast route).
+    pub(crate) components_computed: bool,
+    /// For a request without components: which route answered.
+    pub(crate) route: Option<Route>,
+    /// The compute budget that ran out (class `Undecided`).
+    pub(crate) exhausted: Option<crate::budget::Exhausted>,
+}
+
+/// Which route answered a request for the class and counts only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Route {
+    /// The fast exact route (no components computed).
+    Fast,
+    /// The complete route, because the fast one could not decide (the
+    /// reason).
+    Complete(&'static str),
+}
+
+/// Class and counts of an intersection (contract §4 conventions: real
+/// affine components, a double line once, acnodes of a curve in `points`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Counts {
+    /// The class.
+    pub class: Class,
+    /// Real affine conics.
+    pub conics: usize,
+    /// Real affine lines.
+    pub lines: usize,
+    /// Isolated real points (acnodes of a curve included).
+    pub points: usize,
+}
+
+impl Counts {
+    pub(crate) fn new(class: Class, conics: usize, lines: usize, points: usize) -> Counts {
+        Counts {
+            class,
+            conics,
+            lines,
+            points,
+        }
+    }
+
+    pub(crate) fn same_surface() -> Counts {
+        Counts::new(Class::SameSurface, 0, 0, 0)
+    }
+
+    /// The counts of a list of components.
+    pub(crate) fn of_components(components: &[Component]) -> Counts {
+        let count = |f: fn(&Component) -> bool| components.iter().filter(|c| f(c)).count();
+        let acnodes: usize = components
+            .iter()
+            .map(|c| match c {
+                Component::Curve { singular, .. } => {
+                    singular.iter().filter(|(_, iso)| *iso).count()
+                }
+                _ => 0,
+            })
+            .sum();
+        Counts::new(
+            class_of(components),
+            count(|c| matches!(c, Component::Conic { .. })),
+            count(|c| matches!(c, Component::Line { .. })),
+            count(|c| matches!(c, Component::Point { .. })) + acnodes,
+        )
+    }
 }
 
 impl NaturalReport {
@@ -266,44 +330,66 @@ impl NaturalReport {
         &self.notes
     }
 
-    /// Number of real affine conics.
+    /// Number of real affine conics (0 when the class is `Undecided`).
     pub fn conics(&self) -> usize {
-        self.components
-            .iter()
-            .filter(|c| matches!(c, Component::Conic { .. }))
-            .count()
+        self.counts.conics
     }
 
     /// Number of real affine lines (a double line counts once).
     pub fn lines(&self) -> usize {
-        self.components
-            .iter()
-            .filter(|c| matches!(c, Component::Line { .. }))
-            .count()
+        self.counts.lines
     }
 
     /// Number of isolated real points (acnodes of a curve included).
     pub fn points(&self) -> usize {
-        let own = self
-            .components
-            .iter()
-            .filter(|c| matches!(c, Component::Point { .. }))
-            .count();
-        let acn: usize = self
-            .components
-            .iter()
-            .map(|c| match c {
-                Component::Curve { singular, .. } => {
-                    singular.iter().filter(|(_, iso)| *iso).count()
-                }
-                _ => 0,
-            })
-            .sum();
-        own + acn
+        self.counts.points
+    }
+
+    /// True when the fast route answered (no components computed).
+    pub(crate) fn answered_fast(&self) -> bool {
+        self.route == Some(Route::Fast)
+    }
+
+    /// The compute budget that ran out (then the class is
+    /// [`Class::Undecided`] and nothing else is known).
+    pub fn exhausted(&self) -> Option<&crate::budget::Exhausted> {
+        self.exhausted.as_ref()
+    }
+
+    /// The answer when the compute budget ran out: class `Undecided`, no
+    /// components, and the limit that was hit.
+    pub(crate) fn budget_exhausted(
+        a: &Natural,
+        b: &Natural,
+        e: crate::budget::Exhausted,
+    ) -> NaturalReport {
+        NaturalReport {
+            a: a.clone(),
+            b: b.clone(),
+            class: Class::Undecided,
+            axes: None,
+            thm8: None,
+            components: vec![],
+            deciders: None,
+            section7: None,
+            method: "none (the compute budget ran out)",
+            notes: vec![],
+            counts: Counts::new(Class::Undecided, 0, 0, 0),
+            components_computed: false,
+            route: None,
+            exhausted: Some(e),
+        }
+    }
+
+    /// False when only the class and counts were asked for
+    /// ([`super::ClassifyOptions::without_components`]): then
+    /// [`NaturalReport::components`] and the deciders are empty.
+    pub fn has_components(&self) -> bool {
+        self.components_computed
     }
 }
 
-/// The class implied by a list of components (SPEC §4 order).
+/// The class implied by a list of components (contract §4 order).
 pub(crate) fn class_of(components: &[Component]) -> Class {
     let has = |f: fn(&Component) -> bool| components.iter().any(f);
     if has(|c| matches!(c, Component::Curve { .. })) {

@@ -3,7 +3,7 @@
 //! (cone–cylinder), with the bounding planes computed exactly in Q(√d) and
 //! every distance compared through its square.
 //!
-//! With the errata of SPEC §6: the cones are double cones, so the contact
+//! With the errata of docs/errata.md: the cones are double cones, so the contact
 //! point `t_i ∩ V2S_i` is taken on the whole line `V2S_i`; when `t_i ∥ V2S_i`
 //! the contact is at infinity and the surfaces are disjoint.
 //!

@@ -5,14 +5,14 @@
 //! * **Singular points** of X: the zeros of `Q1 = Q2 = 0, ∇Q1 × ∇Q2 = 0`
 //!   (a cone vertex on the other surface is one of them); every isolated
 //!   real point of X is singular.
-//! * **Common rulings** (skew axes, SPEC §6): a ruling of one surface lying
+//! * **Common rulings** (skew axes, docs/errata.md): a ruling of one surface lying
 //!   on the other, found by exact linear algebra and one square root; X is
 //!   then that line plus a twisted cubic (class `curve`, `lines` 1).
 //! * **One-dimensional real part** (sweep): for a generic linear form ℓ, the
 //!   values of ℓ at the critical points of ℓ on X (zeros of `Q1, Q2,
 //!   det(∇Q1, ∇Q2, ∇ℓ)`) cut the line into gaps; the real part of X has
 //!   dimension one iff a level `ℓ = q` in some gap meets X in a real point.
-//! * **Isolated or crossing** (tangent cone, SPEC §6 on §5.1): at a singular
+//! * **Isolated or crossing** (tangent cone, docs/errata.md on §5.1): at a singular
 //!   point with `∇Q1 = λ∇Q2 ≠ 0`, the quadratic form `Hess Q1 − λ Hess Q2`
 //!   on the common tangent plane is definite (isolated point) or indefinite
 //!   (two real branches cross); at a cone vertex V on the other surface, the
@@ -322,6 +322,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
     let g1 = crate::geom::gradient(f1);
     let g2 = crate::geom::gradient(f2);
     for l in GENERIC_FORMS {
+        crate::budget::check_now();
         let lin: QMPoly = &(&MPoly::var(X).scale(&qi(l[0])) + &MPoly::var(Y).scale(&qi(l[1])))
             + &MPoly::var(Z).scale(&qi(l[2]));
         let gl: [QMPoly; 3] = std::array::from_fn(|k| MPoly::constant(qi(l[k])));
@@ -365,6 +366,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
         }
         let mut decided = true;
         for q in &levels {
+            crate::budget::check_now();
             let plane = &lin - &MPoly::constant(q.clone());
             match solve_zero_dim(&[f1.clone(), f2.clone(), plane], &[])? {
                 Some(r) => {

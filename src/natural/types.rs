@@ -1,13 +1,13 @@
 //! Natural quadrics — spheres, circular cylinders, right circular (double)
 //! cones — with validated constructors, their rational implicit equations
 //! and 4×4 matrices, exact rigid motions, and the input syntaxes (JSON of
-//! SPEC §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
+//! contract §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
 
 use crate::error::{Error, ErrorKind};
 #[cfg(test)]
 use crate::geom::vec3::scale;
 use crate::geom::vec3::{V3, add, cross, dot, norm2, sub};
-use crate::number::{Q, fmt_q, parse_rational};
+use crate::number::{NumberMode, Q, fmt_q, parse_rational_with};
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use num_traits::{One, Signed, Zero};
@@ -231,7 +231,7 @@ impl Natural {
         }
     }
 
-    /// The implicit equation (negative inside), SPEC §2.
+    /// The implicit equation (negative inside), contract §2.
     pub fn equation(&self) -> QMPoly {
         let p: [QMPoly; 3] = [MPoly::var(X), MPoly::var(Y), MPoly::var(Z)];
         let diff = |c: &V3| -> [QMPoly; 3] {
@@ -275,6 +275,12 @@ impl Natural {
         }
         m[3][3] = f.c.clone();
         m
+    }
+
+    /// Parses the short syntax (or, with the feature `serde`, the JSON
+    /// form) with the numbers read in `mode` (see [`crate::NumberMode`]).
+    pub fn parse_in(text: &str, mode: NumberMode) -> Result<Natural, Error> {
+        parse_natural_in(text, mode)
     }
 
     /// Applies the rigid motion `P ↦ R P + t`, checked: `R` must be an exact
@@ -364,7 +370,7 @@ impl Natural {
 
 // ------------------------------------------------------------------ parsing
 
-fn parse_vec(s: &str, what: &str) -> Result<V3, Error> {
+fn parse_vec(s: &str, what: &str, mode: NumberMode) -> Result<V3, Error> {
     let parts: Vec<&str> = s.split(',').collect();
     if parts.len() != 3 {
         return Err(Error::new(
@@ -374,19 +380,19 @@ fn parse_vec(s: &str, what: &str) -> Result<V3, Error> {
     }
     let mut out: V3 = std::array::from_fn(|_| Q::zero());
     for (i, p) in parts.iter().enumerate() {
-        out[i] = parse_rational(p)
+        out[i] = parse_rational_with(p, mode)
             .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("{what}: {e} in \"{p}\"")))?;
     }
     Ok(out)
 }
 
-fn parse_num(s: &str, what: &str) -> Result<Q, Error> {
-    parse_rational(s)
+fn parse_num(s: &str, what: &str, mode: NumberMode) -> Result<Q, Error> {
+    parse_rational_with(s, mode)
         .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("{what}: {e} in \"{s}\"")))
 }
 
 /// Builds a quadric from named fields (shared by both syntaxes).
-fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
+fn build(kind: &str, fields: &[(String, String)], mode: NumberMode) -> Result<Natural, Error> {
     let get = |k: &str| fields.iter().find(|(n, _)| n == k).map(|(_, v)| v.as_str());
     let allowed: &[&str] = match kind {
         "sphere" => &["center", "radius2"],
@@ -421,13 +427,13 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
     };
     match kind {
         "sphere" => Ok(Natural::Sphere(Sphere::new(
-            parse_vec(need("center")?, "center")?,
-            parse_num(need("radius2")?, "radius2")?,
+            parse_vec(need("center")?, "center", mode)?,
+            parse_num(need("radius2")?, "radius2", mode)?,
         )?)),
         "cylinder" => Ok(Natural::Cylinder(Cylinder::new(
-            parse_vec(need("point")?, "point")?,
-            parse_vec(need("axis")?, "axis")?,
-            parse_num(need("radius2")?, "radius2")?,
+            parse_vec(need("point")?, "point", mode)?,
+            parse_vec(need("axis")?, "axis", mode)?,
+            parse_num(need("radius2")?, "radius2", mode)?,
         )?)),
         _ => {
             let angle: Vec<&str> = ["tan2", "tan", "cos2", "sin2"]
@@ -447,21 +453,28 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
                     ),
                 ));
             }
-            let v = parse_num(get(angle[0]).unwrap_or(""), angle[0])?;
+            let v = parse_num(get(angle[0]).unwrap_or(""), angle[0], mode)?;
             let t2 = tan2_from(angle[0], &v)?;
             Ok(Natural::Cone(Cone::new(
-                parse_vec(need("vertex")?, "vertex")?,
-                parse_vec(need("axis")?, "axis")?,
+                parse_vec(need("vertex")?, "vertex", mode)?,
+                parse_vec(need("axis")?, "axis", mode)?,
                 t2,
             )?))
         }
     }
 }
 
-/// Parses the JSON object form of SPEC §2 (numbers as strings; JSON
+/// Parses the JSON object form of contract §2 (numbers as strings; JSON
 /// integers are accepted too, floats are refused as inexact).
 #[cfg(feature = "serde")]
 pub fn from_json(v: &Value) -> Result<Natural, Error> {
+    from_json_in(v, NumberMode::Exact)
+}
+
+/// [`from_json`] with the numbers read in the given mode (float mode: each
+/// literal becomes its nearest double).
+#[cfg(feature = "serde")]
+pub fn from_json_in(v: &Value, mode: NumberMode) -> Result<Natural, Error> {
     let obj = v.as_object().ok_or_else(|| {
         Error::new(
             ErrorKind::BadQuadric,
@@ -502,19 +515,26 @@ pub fn from_json(v: &Value) -> Result<Natural, Error> {
         };
         fields.push((k.clone(), s));
     }
-    build(kind, &fields)
+    build(kind, &fields, mode)
 }
 
 /// Parses the short human syntax, e.g. `cone vertex=0,0,0 axis=1,0,0
 /// tan2=1/3`, or a JSON object (when the text starts with `{`).
 pub fn parse_natural(text: &str) -> Result<Natural, Error> {
+    parse_natural_in(text, NumberMode::Exact)
+}
+
+/// [`parse_natural`] with the numbers read in the given mode: in
+/// [`NumberMode::Float`] each literal is replaced by its nearest double,
+/// so `axis=0.7071067811865476,…` is the double a program would use.
+pub fn parse_natural_in(text: &str, mode: NumberMode) -> Result<Natural, Error> {
     let t = text.trim();
     if t.starts_with('{') {
         #[cfg(feature = "serde")]
         {
             let v: Value = serde_json::from_str(t)
                 .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("invalid JSON: {e}")))?;
-            return from_json(&v);
+            return from_json_in(&v, mode);
         }
         #[cfg(not(feature = "serde"))]
         return Err(Error::new(
@@ -536,7 +556,7 @@ pub fn parse_natural(text: &str) -> Result<Natural, Error> {
         })?;
         fields.push((k.to_string(), v.to_string()));
     }
-    build(kind, &fields)
+    build(kind, &fields, mode)
 }
 
 /// Squared distance from a point to a line (point `p`, direction `a`).
@@ -617,5 +637,21 @@ mod doc_examples {
         let c = parse_natural("cone vertex=0,0,0 axis=1,0,0 cos2=3/4").unwrap();
         assert_eq!(c.to_short(), "cone vertex=0,0,0 axis=1,0,0 tan2=1/3");
         assert!(parse_natural("cylinder point=0,0,0 axis=0,0,0 radius2=1").is_err());
+    }
+}
+
+#[cfg(test)]
+mod doc_examples_more {
+    //! Examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_natural_in() {
+        use crate::natural::types::parse_natural_in;
+        use crate::number::{NumberMode, double_value};
+        let c = parse_natural_in("sphere center=0.1,0,0 radius2=1", NumberMode::Float).unwrap();
+        let crate::natural::Natural::Sphere(s) = c else {
+            unreachable!()
+        };
+        assert_eq!(s.center[0], double_value(0.1).unwrap());
     }
 }

@@ -9,13 +9,16 @@
 //! Floats appear only in printed approximations, and those are computed from
 //! the exact value by integer arithmetic ([`approx_decimal`]).
 
+pub(crate) mod filter;
 pub mod fixed;
+pub(crate) mod float;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
 mod sign;
 
-pub use parse::{NumberError, parse_rational, scan_number};
+pub use float::double_value;
+pub use parse::{NumberError, NumberMode, parse_rational, parse_rational_with, scan_number_with};
 pub use qsqrt::QSqrt;
 pub use sign::Sign;
 
@@ -41,6 +44,8 @@ pub fn qi(n: i64) -> Q {
 
 /// Prints a rational as `a` or `a/b` (lowest terms, sign on the numerator).
 pub fn fmt_q(x: &Q) -> String {
+    // printing is quadratic in the size of the number
+    crate::budget::check_for(x.numer().bits() + x.denom().bits());
     if x.denom().is_one() {
         x.numer().to_string()
     } else {
@@ -101,6 +106,7 @@ pub fn approx_decimal(x: &Q, digits: usize) -> String {
     if x.is_zero() {
         return "0".to_string();
     }
+    crate::budget::check_for(x.numer().bits() + x.denom().bits());
     let neg = x.is_negative();
     let ax = x.abs();
     // e10 = floor(log10 |x|): estimate from log2, then correct exactly.

@@ -18,7 +18,7 @@ pub mod zpoly;
 #[cfg(any(test, feature = "cli"))]
 pub use mpoly::MPoly;
 pub use mpoly::{QMPoly, ZMPoly};
-pub use parse::{ParseError, parse_poly};
+pub use parse::{Limits, ParseError, parse_poly, parse_poly_in};
 pub use public::{IntPoly, Polynomial, Var};
 pub use ring::Ring;
 pub use upoly::UPoly;

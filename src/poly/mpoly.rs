@@ -288,6 +288,7 @@ impl<C: Ring> MPoly<C> {
         let up = self.to_upoly(v);
         let mut acc = MPoly::zero();
         for c in up.coeffs().iter().rev() {
+            crate::budget::check();
             acc = &(&acc * g) + c;
         }
         acc
@@ -299,6 +300,7 @@ impl<C: Ring> MPoly<C> {
         let mut acc = MPoly::zero();
         let mut powers: Vec<HashMap<u32, Self>> = vec![HashMap::new(); NVARS];
         for (e, c) in &self.terms {
+            crate::budget::check();
             let mut t = MPoly::constant(c.clone());
             let mut keep = [0u32; NVARS];
             for v in 0..NVARS {
@@ -397,6 +399,7 @@ impl<C: Ring> MPoly<C> {
         let mut r = self.clone();
         let mut q = Vec::new();
         while let Some((er, cr)) = r.terms.first().cloned() {
+            crate::budget::check();
             if !exps_divides(&eb, &er) {
                 return None;
             }
@@ -554,6 +557,30 @@ impl<C: Ring> Sub for &MPoly<C> {
     }
 }
 
+/// Upper bounds on the number of terms and the coefficient bit size of
+/// `a · b`, from the operands: at most `|a|·|b|` terms, and at most the
+/// dense count `∏ (deg_v a + deg_v b + 1)`; coefficients of at most
+/// `bits(a) + bits(b) + ⌈log₂ min(|a|, |b|)⌉` bits.
+fn product_size<C: Ring>(a: &MPoly<C>, b: &MPoly<C>) -> (usize, u64) {
+    let degs = |p: &MPoly<C>| {
+        let mut d = [0u32; NVARS];
+        for (e, _) in &p.terms {
+            for v in 0..NVARS {
+                d[v] = d[v].max(e[v]);
+            }
+        }
+        d
+    };
+    let (da, db) = (degs(a), degs(b));
+    let dense = (0..NVARS).fold(1usize, |acc, v| {
+        acc.saturating_mul(da[v] as usize + db[v] as usize + 1)
+    });
+    let (ta, tb) = (a.terms.len(), b.terms.len());
+    let terms = ta.saturating_mul(tb).min(dense);
+    let bits = a.bit_size() + b.bit_size() + super::upoly::log2_ceil(ta.min(tb));
+    (terms, bits)
+}
+
 impl<C: Ring> Mul for &MPoly<C> {
     type Output = MPoly<C>;
     fn mul(self, o: &MPoly<C>) -> MPoly<C> {
@@ -566,8 +593,11 @@ impl<C: Ring> Mul for &MPoly<C> {
         if self.terms.len() == 1 {
             return o.mul_monomial(&self.terms[0].0, &self.terms[0].1);
         }
-        let mut map: HashMap<Exps, C> = HashMap::with_capacity(self.terms.len() * o.terms.len());
+        let (terms, bits) = product_size(self, o);
+        crate::budget::check_size("a product of polynomials", terms, bits);
+        let mut map: HashMap<Exps, C> = HashMap::with_capacity(terms);
         for (ea, ca) in &self.terms {
+            crate::budget::check();
             for (eb, cb) in &o.terms {
                 let e = exps_add(ea, eb);
                 let p = ca.rmul(cb);
@@ -654,6 +684,13 @@ impl<C: Ring> Ring for MPoly<C> {
     }
     fn div_exact(&self, o: &Self) -> Option<Self> {
         MPoly::div_exact(self, o)
+    }
+    fn bit_size(&self) -> u64 {
+        self.terms
+            .iter()
+            .map(|(_, c)| c.bit_size())
+            .max()
+            .unwrap_or(0)
     }
 }
 

@@ -112,6 +112,16 @@ impl Polynomial {
         &self.0
     }
 
+    /// Parses the input syntax with the numbers read in `mode` (see
+    /// [`crate::NumberMode`]).
+    pub fn parse_in(text: &str, mode: crate::NumberMode) -> Result<Polynomial, Error> {
+        Ok(Polynomial(super::parse::parse_poly_in(
+            text,
+            &super::parse::Limits::default(),
+            mode,
+        )?))
+    }
+
     /// True for the zero polynomial.
     pub fn is_zero(&self) -> bool {
         self.0.is_zero()

@@ -7,6 +7,7 @@
 //! primitive polynomials; a polynomial over Q is a rational constant times a
 //! primitive integer polynomial, and rationals appear only at the edges.
 
+use super::ring::Ring;
 use super::upoly::UPoly;
 use crate::number::fixed::{AtWidth, Fixed, MAX_LIMBS, at_width, push_limbs};
 use crate::number::modular::{Digits, Modulus, primes};
@@ -86,9 +87,14 @@ impl UPoly<BigInt> {
         if c.is_empty() {
             return (BigInt::zero(), BigInt::one());
         }
+        crate::budget::check();
+        let long = c.len() > SHORT;
         let mut acc = c[c.len() - 1].clone();
         let mut dpow = BigInt::one();
         for ci in c.iter().rev().skip(1) {
+            if long {
+                crate::budget::check();
+            }
             dpow *= d;
             acc *= n;
             if !ci.is_zero() {
@@ -136,6 +142,7 @@ impl UPoly<BigInt> {
         } else if !a.is_zero() {
             let n = c.len();
             for i in 0..n.saturating_sub(1) {
+                crate::budget::check();
                 for j in (i..n - 1).rev() {
                     let (lo, hi) = c.split_at_mut(j + 1);
                     lo[j] += &hi[0] * a;
@@ -153,6 +160,8 @@ impl UPoly<BigInt> {
         if n == 0 {
             return ZPoly::zero();
         }
+        let top = self.bit_size() + k.unsigned_abs() * (n as u64 - 1);
+        crate::budget::check_size("a polynomial with scaled roots", n, top);
         let out = c
             .iter()
             .enumerate()
@@ -350,12 +359,17 @@ impl<'a> DyadicSigner<'a> {
         if c.is_empty() {
             return 0;
         }
+        crate::budget::check();
         if let Some(s) = self.sign_at_fixed(m, k) {
             return s;
         }
+        let long = c.len() > SHORT;
         let mut acc = c[c.len() - 1].clone();
         let mut sh = 0u64;
         for ci in c.iter().rev().skip(1) {
+            if long {
+                crate::budget::check();
+            }
             sh += k;
             acc *= m;
             if !ci.is_zero() {
@@ -429,7 +443,11 @@ pub fn taylor_shift_one<T>(c: &mut [T])
 where
     T: for<'a> AddAssign<&'a T>,
 {
+    let long = c.len() > SHORT;
     for i in 0..c.len().saturating_sub(1) {
+        if long {
+            crate::budget::check();
+        }
         taylor_shift_stage(&mut c[i..]);
     }
 }
@@ -447,6 +465,10 @@ where
         lo[j] += &hi[0];
     }
 }
+
+/// Polynomials up to this length are short: the budget checks sit in the
+/// loops that repeat their (cheap) passes, not in each pass.
+pub(crate) const SHORT: usize = 32;
 
 /// Reduction of an integer polynomial modulo a prime (Montgomery form).
 pub fn reduce_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
@@ -483,7 +505,11 @@ fn trim(a: &mut Vec<u64>) {
 pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Modulus) {
     let db = b.len() - 1;
     let inv = m.inv(b[db]).expect("leading coefficient is non-zero");
+    let long = db > SHORT;
     while a.len() > db {
+        if long {
+            crate::budget::check();
+        }
         let k = a.len() - 1 - db;
         let t = m.mul(a[a.len() - 1], inv);
         if t != 0 {
@@ -545,6 +571,7 @@ fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     let mut last: Option<ZPoly> = None;
     let mut i = 0;
     loop {
+        crate::budget::check();
         let m = Modulus::new(nth_prime(i));
         i += 1;
         let ra = reduce_mod(a, &m);
@@ -596,6 +623,7 @@ impl UPoly<Q> {
         let mut r: Vec<Q> = self.coeffs().to_vec();
         let mut q = vec![Q::zero(); da - db + 1];
         for k in (0..=da - db).rev() {
+            crate::budget::check();
             let t = &r[k + db] * &inv;
             if !t.is_zero() {
                 for (j, bj) in b.coeffs().iter().enumerate() {
@@ -628,6 +656,7 @@ impl UPoly<Q> {
         let (mut s0, mut s1) = (QPoly::constant(Q::one()), QPoly::zero());
         let (mut t0, mut t1) = (QPoly::zero(), QPoly::constant(Q::one()));
         while !r1.is_zero() {
+            crate::budget::check();
             let (q, r) = r0.divrem(&r1);
             r0 = std::mem::replace(&mut r1, r);
             let s2 = &s0 - &(&q * &s1);

@@ -10,4 +10,4 @@ mod text;
 pub use json::{
     alg_json, natural_input_json, natural_json, resultant_json, roots_json, tangent_json,
 };
-pub use text::{natural_human, resultant_human, roots_human, tangent_human, upoly_string};
+pub use text::{natural_human, roots_human, tangent_human, upoly_string};

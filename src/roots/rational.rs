@@ -52,6 +52,7 @@ fn simplest_big(mut a: BigInt, mut b: BigInt, mut c: BigInt, mut d: BigInt) -> Q
     let (mut p0, mut p1) = (BigInt::zero(), BigInt::one());
     let (mut q0, mut q1) = (BigInt::one(), BigInt::zero());
     loop {
+        crate::budget::check();
         // floor of the lower end; the upper end may be ∞ (d = 0)
         let (fa, ra) = num_integer::Integer::div_rem(&a, &b);
         let candidate = &fa + 1u32;

@@ -1,4 +1,4 @@
-//! The validation of the ellipsoid E (SPEC §2): degree 2, definite
+//! The validation of the ellipsoid E (contract §2): degree 2, definite
 //! quadratic part, non-empty and not a single point.
 
 use crate::error::{Error, ErrorKind};

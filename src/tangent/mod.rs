@@ -2,7 +2,7 @@
 //! algebraic surface S, touch it, or stay on one side — decided exactly,
 //! with a certificate.
 //!
-//! Key idea (SPEC §3): with ν = min and μ = max of S on E, E and S
+//! Key idea (contract §3): with ν = min and μ = max of S on E, E and S
 //! intersect iff ν ≤ 0 ≤ μ, touch iff ν = 0 or μ = 0.  ν and μ are real
 //! critical values of S on E, computed exactly as real algebraic numbers:
 //!
@@ -36,7 +36,7 @@ pub(crate) use crate::geom::QuadricForm;
 
 use crate::budget::{Budget, Exhausted};
 use crate::error::{Error, ErrorKind};
-use crate::poly::{IntPoly, Polynomial, QMPoly, ZPoly, parse_poly};
+use crate::poly::{IntPoly, Polynomial, QMPoly, ZPoly};
 use crate::roots::RealAlg;
 use std::cmp::Ordering;
 use std::fmt;
@@ -229,6 +229,8 @@ pub(crate) enum Analysis {
     LevelSets(critical::LevelSetAnalysis),
     /// S is a non-zero constant.
     Constant,
+    /// No computation finished.
+    Undecided,
 }
 
 /// The certificate of a verdict: everything needed to re-check it.
@@ -276,6 +278,7 @@ impl Certificate {
             Analysis::CriticalIdeal(_) => Method::CriticalIdeal,
             Analysis::LevelSets(_) => Method::LevelSets,
             Analysis::Constant => Method::Constant,
+            Analysis::Undecided => Method::None,
         }
     }
 
@@ -370,13 +373,6 @@ impl TangentReport {
     }
 }
 
-impl fmt::Display for TangentReport {
-    /// The human summary (as `quadsect tangent` prints it).
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&crate::report::tangent_human(self))
-    }
-}
-
 /// Decides E against S given in the input syntax (a convenience for
 /// [`Ellipsoid::from_str`](std::str::FromStr) and [`decide`]).
 ///
@@ -388,8 +384,20 @@ impl fmt::Display for TangentReport {
 /// assert_eq!(r.max().unwrap().to_string(), "187/9");
 /// ```
 pub fn decide_str(ellipsoid: &str, surface: &str) -> Result<TangentReport, Error> {
-    let e = parse_poly(ellipsoid).map_err(|x| Error::from(x).context("in the ellipsoid"))?;
-    let s = parse_poly(surface).map_err(|x| Error::from(x).context("in the surface"))?;
+    decide_str_in(ellipsoid, surface, crate::number::NumberMode::Exact)
+}
+
+/// [`decide_str`] with the number literals read in the given mode
+/// ([`NumberMode::Float`](crate::NumberMode::Float): each decimal literal
+/// becomes its nearest double, as a program reading it would see it).
+pub fn decide_str_in(
+    ellipsoid: &str,
+    surface: &str,
+    mode: crate::number::NumberMode,
+) -> Result<TangentReport, Error> {
+    let parse = |t: &str| crate::poly::parse_poly_in(t, &crate::poly::Limits::default(), mode);
+    let e = parse(ellipsoid).map_err(|x| Error::from(x).context("in the ellipsoid"))?;
+    let s = parse(surface).map_err(|x| Error::from(x).context("in the surface"))?;
     decide_poly(&e, &s)
 }
 
@@ -424,7 +432,11 @@ pub fn decide_with(
 ) -> Result<TangentReport, Error> {
     match crate::budget::run(&options.budget, || decide_validated(e, s.inner())) {
         Ok(r) => r,
-        Err(exhausted) => Ok(undecided_report(e, s.inner(), Undecided::Budget(exhausted))),
+        Err(exhausted) => Ok(undecided_report(
+            e.poly.clone(),
+            s.inner().clone(),
+            Undecided::Budget(exhausted),
+        )),
     }
 }
 
@@ -435,6 +447,7 @@ pub(crate) fn decide_poly(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<Tangen
 }
 
 fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Error> {
+    crate::budget::check_now();
     if surface.vars().iter().any(|&v| v > 2) {
         return Err(Error::new(
             ErrorKind::Input,
@@ -557,13 +570,17 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Er
 
 /// The answer when no certificate could be produced (never a guess).
 fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
-    undecided_report(e, surface, Undecided::NoCertificate(why))
+    undecided_report(
+        e.poly.clone(),
+        surface.clone(),
+        Undecided::NoCertificate(why),
+    )
 }
 
-fn undecided_report(e: &Ellipsoid, surface: &QMPoly, why: Undecided) -> TangentReport {
+fn undecided_report(ellipsoid: QMPoly, surface: QMPoly, why: Undecided) -> TangentReport {
     TangentReport {
-        ellipsoid: e.poly.clone(),
-        surface: surface.clone(),
+        ellipsoid,
+        surface,
         verdict: Verdict::Undecided,
         intersect: None,
         touching: None,
@@ -577,10 +594,18 @@ fn undecided_report(e: &Ellipsoid, surface: &QMPoly, why: Undecided) -> TangentR
             nonreal_point_values: vec![],
             negative_witness: None,
             positive_witness: None,
-            method: Analysis::Constant,
+            method: Analysis::Undecided,
             notes: vec![],
         },
         reason: Some(why),
+    }
+}
+
+impl TangentReport {
+    /// The answer when the budget ran out before E and S were even read
+    /// (their polynomials are then zero).
+    pub(crate) fn budget_exhausted(e: Exhausted) -> TangentReport {
+        undecided_report(QMPoly::zero(), QMPoly::zero(), Undecided::Budget(e))
     }
 }
 

@@ -1,4 +1,4 @@
-//! S of degree ≤ 2: the exact and complete λ-parametrisation (SPEC §3).
+//! S of degree ≤ 2: the exact and complete λ-parametrisation (contract §3).
 //!
 //! `∇S = λ∇E` is linear in the point: `(B − λA) p = λb − β`.  Where
 //! `δ(λ) = det(B − λA) ≠ 0` the unique solution is `p(λ) = N(λ)/δ(λ)` with

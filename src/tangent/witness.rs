@@ -110,6 +110,7 @@ pub fn find_witness(
     }
     let mut bits = 8;
     while bits <= 1024 {
+        crate::budget::check_now();
         if let Some(p) = approx(bits + 16)
             && let Some(w) = fast.witness(&round_point(&p, bits), Some(want))
         {
@@ -226,6 +227,7 @@ impl IntegerData {
         let n = self.s_terms.iter().map(|(ex, _)| ex[k]).max().unwrap_or(0) as usize;
         let mut cs = vec![BigInt::zero(); n + 1];
         for (ex, c) in &self.s_terms {
+            crate::budget::check();
             let mut t = c.clone();
             for &j in &others {
                 if ex[j] > 0 {
@@ -243,6 +245,7 @@ impl IntegerData {
         let (mut hr, mut hi) = (cs[n].clone(), BigInt::zero());
         let mut apow = BigInt::one();
         for j in (0..n).rev() {
+            crate::budget::check();
             apow *= &alpha;
             let r = &hr * &nr + &hi * &ni * &disc;
             let i = &hr * &ni + &hi * &nr;

@@ -11,6 +11,7 @@
 //!   properties and against committed sympy reference data;
 //! * `fuzz_props`: proptest versions of the fuzz targets.
 
+mod fast_route;
 mod fuzz_props;
 mod kernel_props;
 mod kernel_reference;

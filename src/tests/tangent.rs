@@ -179,7 +179,7 @@ fn tangencies_built_on_purpose() {
     assert_eq!((r.verdict, rat(&r.max)), (Verdict::Touching, Q::zero()));
 }
 
-/// The singular multipliers of the λ-parametrisation (SPEC §3): concentric
+/// The singular multipliers of the λ-parametrisation (contract §3): concentric
 /// spheres, a cylinder coaxial with a spheroid, coincident E and S, a plane,
 /// and a quadratic form with irrational generalised eigenvalues.
 #[test]

@@ -1,6 +1,6 @@
 //! Natural-quadric examples mirroring the figures of paper 000, near misses
 //! that a floating-point implementation gets wrong, and one example per
-//! class of SPEC §4.
+//! class of contract §4.
 
 use super::ExampleResult;
 use crate::natural::classify_str;
@@ -53,7 +53,7 @@ pub const NATURAL_EXAMPLES: &[NaturalExample] = &[
         title: "Two cones with parallel axes and equal angles (Theorem 8.2)",
         a: "cone vertex=0,0,0 axis=0,0,1 tan2=1",
         b: "cone vertex=3,0,1 axis=0,0,1 tan2=1",
-        expected: "Theorem 8.2: equal angles give conic intersection; one affine conic, the other at infinity (SPEC §6)",
+        expected: "Theorem 8.2: equal angles give conic intersection; one affine conic, the other at infinity (docs/errata.md)",
         class: "conics",
         counts: (1, 0, 0),
         float_note: None,
@@ -137,7 +137,7 @@ pub const NATURAL_EXAMPLES: &[NaturalExample] = &[
         title: "§5.1: a cone vertex on the cylinder, an isolated point on a quartic",
         a: "cylinder point=0,0,0 axis=1,0,0 radius2=1",
         b: "cone vertex=0,1,0 axis=0,1,0 tan2=1",
-        expected: "Lemma 5.1: no conic or line; the skeletal line through V lies outside the solid cone, so V is isolated (SPEC §6)",
+        expected: "Lemma 5.1: no conic or line; the skeletal line through V lies outside the solid cone, so V is isolated (docs/errata.md)",
         class: "curve",
         counts: (0, 0, 1),
         float_note: None,
@@ -147,7 +147,7 @@ pub const NATURAL_EXAMPLES: &[NaturalExample] = &[
         title: "§5.1 with the skeletal line inside the cone: branches cross at the vertex",
         a: "cylinder point=0,0,0 axis=1,0,0 radius2=1",
         b: "cone vertex=0,1,0 axis=1,1,0 tan2=3",
-        expected: "the paper's 'isolated point' claim fails here (SPEC §6): real branches cross at V",
+        expected: "the paper's 'isolated point' claim fails here (docs/errata.md): real branches cross at V",
         class: "curve",
         counts: (0, 0, 0),
         float_note: None,
@@ -189,7 +189,7 @@ pub const NATURAL_EXAMPLES: &[NaturalExample] = &[
         title: "A cone vertex on a cylinder with a common ruling: a line and a twisted cubic",
         a: "cylinder point=0,0,0 axis=0,0,1 radius2=1",
         b: "cone vertex=1,0,0 axis=1,1,1 tan2=2",
-        expected: "missing from Table 1 (SPEC §6): the common ruling plus a twisted cubic",
+        expected: "missing from Table 1 (docs/errata.md): the common ruling plus a twisted cubic",
         class: "curve",
         counts: (0, 1, 0),
         float_note: None,

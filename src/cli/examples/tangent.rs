@@ -1,5 +1,5 @@
 //! Paper 004's Examples 1–4 recomputed exactly, beside what the paper
-//! printed, with each discrepancy stated (SPEC §6, `docs/errata.md`).
+//! printed, with each discrepancy stated (docs/errata.md, `docs/errata.md`).
 
 use super::ExampleResult;
 use crate::poly::mpoly::U;
@@ -21,7 +21,7 @@ pub struct PaperExample {
     /// Polynomials in u the paper printed as factors of D(u) and that are
     /// genuine (they must divide our exact D(u)).
     pub printed_factors: &'static [&'static str],
-    /// Known errors of the paper for this example (SPEC §6).
+    /// Known errors of the paper for this example (docs/errata.md).
     pub known_errors: &'static [&'static str],
 }
 

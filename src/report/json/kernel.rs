@@ -6,7 +6,7 @@ use crate::number::fmt_q;
 use crate::roots::RealAlg;
 use serde_json::{Value, json};
 
-/// A real algebraic number as SPEC's ALG object:
+/// A real algebraic number as the contract's ALG object:
 /// `{"poly", "interval": [lo, hi], "approx"}`.
 pub fn alg_json(a: &RealAlg) -> Value {
     let (poly, interval, approx) = a.describe();

@@ -1,4 +1,4 @@
-//! The JSON of `--json` and of the batch protocol (SPEC field names, keys in
+//! The JSON of `--json` and of the batch protocol (contract field names, keys in
 //! the documented order).
 
 mod kernel;

@@ -1,10 +1,10 @@
-//! JSON of `quadsect natural` (SPEC §4 JSON and the human summary).
+//! JSON of `quadsect natural` (contract §4 JSON and the human summary).
 
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
 use crate::natural::exact::{EPoint, Exact, normalize_direction};
 use crate::natural::result::Plane;
-use crate::natural::result::{Component, NaturalReport, PlanarDeciders};
+use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 use serde_json::{Value, json};
@@ -114,7 +114,55 @@ fn section7_json(s: &Section7) -> Value {
 }
 
 /// `quadsect natural --json`.
+///
+/// For a request without components the fast route's answer has `class`,
+/// `conics`, `lines`, `points`, `axes`, `thm8`, `method` and `route`
+/// (`fast`); when the complete route had to answer, its whole report
+/// follows with `route: "complete"` and the `fallback` reason.
 pub fn natural_json(r: &NaturalReport) -> Value {
+    if let Some(e) = &r.exhausted {
+        return json!({
+            "class": r.class.as_str(),
+            "conics": null,
+            "lines": null,
+            "points": null,
+            "axes": null,
+            "thm8": null,
+            "components": [],
+            "method": r.method,
+            "a": natural_input_json(&r.a),
+            "b": natural_input_json(&r.b),
+            "notes": r.notes,
+            "reason": {"kind": "budget", "limit": e.limit().as_str(), "message": e.to_string()},
+        });
+    }
+    match r.route {
+        Some(Route::Fast) => {
+            return json!({
+                "class": r.class.as_str(),
+                "conics": r.conics(),
+                "lines": r.lines(),
+                "points": r.points(),
+                "axes": r.axes.as_ref().map(|a| a.as_str()),
+                "thm8": r.thm8,
+                "method": r.method,
+                "route": "fast",
+            });
+        }
+        Some(Route::Complete(why)) => {
+            let mut v = complete_json(r);
+            if let Value::Object(m) = &mut v {
+                m.insert("route".into(), json!("complete"));
+                m.insert("fallback".into(), json!(why));
+            }
+            return v;
+        }
+        None => {}
+    }
+    complete_json(r)
+}
+
+fn complete_json(r: &NaturalReport) -> Value {
     json!({
         "class": r.class.as_str(),
         "conics": r.conics(),
@@ -150,7 +198,7 @@ pub fn epoint_json(p: &EPoint) -> Value {
     Value::Array(p.iter().map(exact_json).collect())
 }
 
-/// The JSON form of SPEC §2 (numbers as exact strings).
+/// The JSON form of contract §2 (numbers as exact strings).
 pub fn natural_input_json(q: &Natural) -> Value {
     let v = |p: &V3| -> Value { json!(p.iter().map(fmt_q).collect::<Vec<_>>()) };
     match q {

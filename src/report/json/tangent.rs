@@ -1,4 +1,4 @@
-//! JSON of `quadsect tangent` (SPEC §3 JSON and the human summary).
+//! JSON of `quadsect tangent` (contract §3 JSON and the human summary).
 
 use crate::number::QSqrt;
 use crate::poly::ZPoly;
@@ -9,7 +9,7 @@ use crate::tangent::quadric::Branch;
 use crate::tangent::{Analysis, TangentReport, Undecided, WitnessPoint};
 use serde_json::{Value, json};
 
-/// A real algebraic number as SPEC's ALG object, its polynomial printed in
+/// A real algebraic number as the contract's ALG object, its polynomial printed in
 /// the variable `v`.
 pub fn alg_json_in(a: &RealAlg, v: usize) -> Value {
     let (lo, hi) = a.interval();
@@ -65,6 +65,7 @@ fn side_str(s: Option<i32>) -> Value {
 fn method_json(m: &Analysis) -> Value {
     match m {
         Analysis::Constant => json!({"method": "constant"}),
+        Analysis::Undecided => json!({"method": "none"}),
         Analysis::Pencil(an) => json!({
             "method": "pencil-discriminant",
             "scale": an.scale.to_string(),
@@ -193,11 +194,8 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         m.insert("witness_negative".into(), witness_json(&c.negative_witness));
         m.insert("witness_positive".into(), witness_json(&c.positive_witness));
         m.insert("notes".into(), json!(c.notes));
-        if let Some(reason) = &r.reason {
-            m.insert("reason".into(), undecided_json(reason));
-        }
     }
-    json!({
+    let mut out = json!({
         "intersect": r.intersect,
         "touching": r.touching,
         "side": side_str(r.side),
@@ -207,5 +205,11 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         "judging_poly": upoly_string(&r.judging_poly, U),
         "certificate": cert,
         "verdict": r.verdict.as_str(),
-    })
+    });
+    // why an undecided answer is undecided: the budget that ran out, or
+    // the step that could not produce a certificate
+    if let (Some(reason), Value::Object(m)) = (&r.reason, &mut out) {
+        m.insert("reason".into(), undecided_json(reason));
+    }
+    out
 }

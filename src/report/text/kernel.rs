@@ -93,3 +93,17 @@ pub fn resultant_human(r: &ResultantReport) -> String {
         r.degree
     )
 }
+
+impl std::fmt::Display for RootsReport {
+    /// The human summary (as `quadsect roots` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&roots_human(self))
+    }
+}
+
+impl std::fmt::Display for ResultantReport {
+    /// The human form (as `quadsect resultant` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&resultant_human(self))
+    }
+}

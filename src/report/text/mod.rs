@@ -5,6 +5,6 @@ mod kernel;
 mod natural;
 mod tangent;
 
-pub use kernel::{resultant_human, roots_human};
+pub use kernel::roots_human;
 pub use natural::natural_human;
 pub use tangent::{tangent_human, upoly_string};

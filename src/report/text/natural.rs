@@ -1,7 +1,7 @@
-//! Human-readable text of `quadsect natural` (SPEC §4 JSON and the human summary).
+//! Human-readable text of `quadsect natural` (contract §4 JSON and the human summary).
 
 use crate::natural::exact::{EPoint, epoint_text, normalize_direction};
-use crate::natural::result::{Class, Component, NaturalReport};
+use crate::natural::result::{Class, Component, NaturalReport, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 
@@ -84,6 +84,9 @@ fn plural(n: usize, one: &str, many: &str) -> String {
 
 /// `quadsect natural` for people.
 pub fn natural_human(r: &NaturalReport) -> String {
+    if let Some(e) = &r.exhausted {
+        return format!("class     {}\nreason    {e}\n", r.class.as_str());
+    }
     let counts = if r.class == Class::SameSurface {
         "the two equations are proportional: every point of one is on the other".to_string()
     } else {
@@ -145,7 +148,7 @@ pub fn natural_human(r: &NaturalReport) -> String {
         };
         s.push_str(&format!("§7        {v}\n"));
     }
-    if r.components.is_empty() && r.class != Class::SameSurface {
+    if r.components.is_empty() && r.class != Class::SameSurface && r.components_computed {
         s.push_str("no real intersection\n");
     }
     for (i, c) in r.components.iter().enumerate() {
@@ -154,5 +157,17 @@ pub fn natural_human(r: &NaturalReport) -> String {
     for n in &r.notes {
         s.push_str(&format!("note: {n}\n"));
     }
+    match r.route {
+        Some(Route::Fast) => s.push_str("route     fast (no components computed)\n"),
+        Some(Route::Complete(why)) => s.push_str(&format!("route     complete ({why})\n")),
+        None => {}
+    }
     s
+}
+
+impl std::fmt::Display for NaturalReport {
+    /// The human summary (as `quadsect natural` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&natural_human(self))
+    }
 }

@@ -1,4 +1,4 @@
-//! Human-readable text of `quadsect tangent` (SPEC §3 JSON and the human summary).
+//! Human-readable text of `quadsect tangent` (contract §3 JSON and the human summary).
 
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{L, MPoly, U};
@@ -58,6 +58,9 @@ pub fn tangent_human(r: &TangentReport) -> String {
     if let Some(reason) = &r.reason {
         s.push_str(&format!("reason    {reason}\n"));
     }
+    if r.verdict == crate::tangent::Verdict::Undecided {
+        return s;
+    }
     if let Some(m) = &r.min {
         s.push_str(&format!("min S|E   {}\n", alg_human(m)));
     }
@@ -69,6 +72,7 @@ pub fn tangent_human(r: &TangentReport) -> String {
     s.push_str("certificate\n");
     let method = match &c.method {
         Analysis::Constant => "S is constant".to_string(),
+        Analysis::Undecided => "none".to_string(),
         Analysis::Pencil(an) => format!(
             "pencil: F(λ) = det(Ŝ − λÊ) = {}, δ(λ) = {}, P = F'δ − Fδ' = {} (Ŝ, Ê: {}·S, {}·E); gcd(P, δ) = 1 and D = disc_λ(F − uδ) square-free of degree 6, so every real root of D is a critical value at a real point",
             upoly_string(&an.char_poly, L),
@@ -157,4 +161,11 @@ pub fn tangent_human(r: &TangentReport) -> String {
         s.push_str(&format!("  note: {n}\n"));
     }
     s
+}
+
+impl std::fmt::Display for TangentReport {
+    /// The human summary (as `quadsect tangent` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&tangent_human(self))
+    }
 }
