@@ -1,5 +1,5 @@
 //! The text/JSON level: expressions in, the JSON of the CLI's `--json`
-//! out, through the engine's one dispatch table (`batch::run_op_with`), so
+//! out, through the engine's one dispatch table (`batch::run_op_within`), so
 //! the answers are exactly those of `quadsect batch`.
 
 use crate::boundary::{check_out, guard, host_string, input_error, qs_error, read_str};
@@ -16,7 +16,7 @@ fn run_json(op: &str, fields: &[(&str, &str)], budget: &engine::Budget) -> Resul
     for (name, text) in fields {
         obj.insert((*name).into(), Value::from(*text));
     }
-    Ok(engine::batch::run_op_with(&obj, budget)?.to_string())
+    Ok(engine::batch::run_op_within(&obj, budget)?.to_string())
 }
 
 /// The body shared by the JSON entry points: reads the string arguments,

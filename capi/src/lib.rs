@@ -50,13 +50,20 @@ mod tests {
 
     #[test]
     fn the_version_macros_match_the_package_version() {
-        assert_eq!(QS_VERSION, env!("CARGO_PKG_VERSION"));
-        let parts: Vec<u32> = QS_VERSION.split('.').map(|p| p.parse().unwrap()).collect();
+        // the header's constants are literals (cbindgen exports only
+        // those): they must follow Cargo.toml's version
+        let parts = [QS_VERSION_MAJOR, QS_VERSION_MINOR, QS_VERSION_PATCH];
+        let cargo: Vec<u32> = env!("CARGO_PKG_VERSION")
+            .split('.')
+            .map(|p| p.parse().unwrap())
+            .collect();
+        assert_eq!(cargo, parts);
         assert_eq!(
-            parts,
-            [QS_VERSION_MAJOR, QS_VERSION_MINOR, QS_VERSION_PATCH]
+            QS_VERSION_NUMBER,
+            parts[0] * 10000 + parts[1] * 100 + parts[2]
         );
         let v = unsafe { std::ffi::CStr::from_ptr(qs_version()) };
-        assert_eq!(v.to_str().unwrap(), QS_VERSION);
+        let dotted = format!("{}.{}.{}", parts[0], parts[1], parts[2]);
+        assert_eq!(v.to_str().unwrap(), dotted);
     }
 }
