@@ -4,23 +4,36 @@
 
 use crate::boundary::{check_out, guard, host_string, input_error, qs_error, read_str};
 use crate::options::{budget_of, qs_options};
-use engine::Error;
+use engine::{Error, ErrorKind};
 use serde_json::{Map, Value};
 use std::ffi::{CStr, c_char, c_int};
 use std::ptr;
 
-/// Runs the operation `op` with string fields, returning its JSON text.
-fn run_json(op: &str, fields: &[(&str, &str)], budget: &engine::Budget) -> Result<String, Error> {
+/// Runs the operation `op` with string fields: its JSON, and the budget
+/// error when the answer is `undecided` because a budget ran out (the
+/// answer's `reason` says so, as in the CLI, which then exits with 3).
+fn run_json(
+    op: &str,
+    fields: &[(&str, &str)],
+    budget: &engine::Budget,
+) -> Result<(String, Option<Error>), Error> {
     let mut obj = Map::new();
     obj.insert("op".into(), Value::from(op));
     for (name, text) in fields {
         obj.insert((*name).into(), Value::from(*text));
     }
-    Ok(engine::batch::run_op_within(&obj, budget)?.to_string())
+    let answer = engine::batch::run_op_within(&obj, budget)?;
+    let reason = &answer["reason"];
+    let exhausted = (reason["kind"] == "budget").then(|| {
+        let message = reason["message"].as_str().unwrap_or("budget exhausted");
+        Error::new(ErrorKind::Budget, message)
+    });
+    Ok((answer.to_string(), exhausted))
 }
 
 /// The body shared by the JSON entry points: reads the string arguments,
-/// runs `op`, stores the JSON in `*out_json`.
+/// runs `op`, stores the JSON in `*out_json` (also when a budget ran out:
+/// then the answer is `undecided` and the code 3).
 ///
 /// # Safety
 /// As for the entry points: every `args` pointer is NULL or a
@@ -40,22 +53,26 @@ unsafe fn json_entry(
             *out_json = ptr::null_mut();
             let a = read_str(args[0].1, args[0].0)?;
             let b = read_str(args[1].1, args[1].0)?;
-            let json = run_json(op, &[(args[0].0, a), (args[1].0, b)], &budget_of(opts))?;
+            let (json, exhausted) =
+                run_json(op, &[(args[0].0, a), (args[1].0, b)], &budget_of(opts))?;
             *out_json = host_string(&json);
-            Ok(())
+            exhausted.map_or(Ok(()), Err)
         })
     }
 }
 
 /// Ellipsoid vs surface (the tangent point method), both in the input
 /// syntax (`x^2 + y^2/4 + z^2 - 1`, exact numbers), under the default
-/// budget.  On success (0) `*out_json` is the JSON object of
-/// `quadsect tangent --json` (`verdict`, `intersect`, `touching`, `side`,
-/// `containment`, `min`, `max`, `judging_poly`, `certificate`), to be
-/// freed with `qs_string_free`.  A budget that runs out is an answer
-/// (`"verdict": "undecided"`, code 0).  On failure `*out_json` is NULL and
-/// `*err` (when `err` is not NULL) says why: code 2 for bad input (the
-/// message names the problem and the column), 1 internal.
+/// budget (10 s).  On success (0) `*out_json` is the JSON object of
+/// `quadsect tangent --json` (`intersect`, `touching`, `side`,
+/// `containment`, `min`, `max`, `judging_poly`, `certificate`,
+/// `verdict`), to be freed with `qs_string_free`.  When the budget runs
+/// out the code is 3 (`QS_ERR_BUDGET`, as the CLI's exit status), `*err`
+/// says which limit, and `*out_json` is still set: the `undecided` answer
+/// with its `reason` (free it too).  On bad input (2) or an internal
+/// failure (1) `*out_json` is NULL and `*err` (when `err` is not NULL)
+/// says why (for bad input the message names the argument and the
+/// column).
 ///
 /// # Safety
 /// `ellipsoid` and `surface` are NULL or NUL-terminated strings;
@@ -98,11 +115,12 @@ pub unsafe extern "C" fn qs_tangent_json_opts(
 /// Two natural quadrics, each in the short syntax
 /// (`cone vertex=0,0,0 axis=1,0,0 tan2=1/3`) or as the JSON object text
 /// (`{"kind":"sphere","center":["0","0","0"],"radius2":"1"}`), under the
-/// default budget.  On success (0) `*out_json` is the JSON object of
-/// `quadsect natural --json` (`class`, `conics`, `lines`, `points`,
+/// default budget (10 s).  On success (0) `*out_json` is the JSON object
+/// of `quadsect natural --json` (`class`, `conics`, `lines`, `points`,
 /// `axes`, `thm8`, `components`, …), to be freed with `qs_string_free`.
-/// On failure `*out_json` is NULL and `*err` says why: 2 bad input, 3
-/// budget exhausted, 1 internal.
+/// When the budget runs out the code is 3, `*err` says which limit and
+/// `*out_json` is the `undecided` answer (free it too).  On bad input (2)
+/// or an internal failure (1) `*out_json` is NULL and `*err` says why.
 ///
 /// # Safety
 /// `a` and `b` are NULL or NUL-terminated strings; `out_json` and `err`
@@ -292,5 +310,41 @@ mod tests {
         assert_eq!(unsafe { qs_batch_line(ptr::null(), &mut out) }, 2);
         assert!(out.is_null());
         assert_eq!(unsafe { qs_batch_line(line.as_ptr(), ptr::null_mut()) }, 2);
+    }
+
+    #[test]
+    fn an_exhausted_budget_gives_code_3_an_error_and_the_undecided_answer() {
+        let opts = crate::options::qs_options_new();
+        unsafe { crate::options::qs_options_set_time_limit(opts, 0.0, ptr::null_mut()) };
+        let cases = [
+            (
+                qs_tangent_json_opts as unsafe extern "C" fn(_, _, _, _, _) -> _,
+                "x^2+y^2+z^2-1",
+                "x-3",
+                "verdict",
+            ),
+            (
+                qs_natural_json_opts,
+                "sphere center=0,0,0 radius2=1",
+                "cone vertex=0,0,0 axis=1,0,0 tan2=1/3",
+                "class",
+            ),
+        ];
+        for (f, a, b, key) in cases {
+            let (a, b) = (CString::new(a).unwrap(), CString::new(b).unwrap());
+            let mut out = ptr::null_mut();
+            let mut err = ptr::null_mut();
+            let code = unsafe { f(a.as_ptr(), b.as_ptr(), opts, &mut out, &mut err) };
+            assert_eq!(code, crate::boundary::QS_ERR_BUDGET);
+            let kind = unsafe { CStr::from_ptr(qs_error_kind(err)) };
+            assert_eq!(kind.to_str().unwrap(), "budget");
+            let msg = unsafe { CStr::from_ptr(qs_error_message(err)) };
+            assert!(msg.to_str().unwrap().contains("time"), "{msg:?}");
+            unsafe { qs_error_free(err) };
+            let v: Value = serde_json::from_str(&owned(out)).unwrap();
+            assert_eq!(v[key], "undecided");
+            assert_eq!(v["reason"]["limit"], "time");
+        }
+        unsafe { crate::options::qs_options_free(opts) };
     }
 }

@@ -21,6 +21,8 @@
 
 pub mod boundary;
 mod float;
+#[cfg(test)]
+mod header;
 pub mod json;
 pub mod options;
 pub mod typed;

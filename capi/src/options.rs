@@ -68,9 +68,10 @@ pub unsafe extern "C" fn qs_options_free(opts: *mut qs_options) {
 
 /// Sets the wall-time limit of each call, in seconds: `INFINITY` for none,
 /// `0` for a budget that is exhausted at once.  NaN or a negative value is
-/// bad input (code 2).  When the limit is hit, a natural-quadric call
-/// returns `QS_ERR_BUDGET`; a tangent call answers `QS_VERDICT_UNDECIDED`
-/// with `QS_UNDECIDED_BUDGET` (code 0).
+/// bad input (code 2).  When the limit is hit, the call returns
+/// `QS_ERR_BUDGET` (3) with an undecided answer (`QS_VERDICT_UNDECIDED`
+/// with `QS_UNDECIDED_BUDGET`, `QS_CLASS_UNDECIDED`, or JSON with
+/// `"verdict"`/`"class"` `"undecided"` and its `reason`).
 ///
 /// # Safety
 /// `opts` is NULL or a live `qs_options` that no call is using; `err` is

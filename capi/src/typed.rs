@@ -57,6 +57,9 @@ pub const QS_CLASS_POINTS: qs_class = 4;
 pub const QS_CLASS_EMPTY: qs_class = 5;
 /// A space curve not made of lines and conics.
 pub const QS_CLASS_CURVE: qs_class = 6;
+/// Not decided: the compute budget ran out (the call returns
+/// `QS_ERR_BUDGET`; the counts are 0).
+pub const QS_CLASS_UNDECIDED: qs_class = 7;
 
 /// How the two axes lie (the JSON `axes`).
 pub type qs_axes = i32;
@@ -259,6 +262,7 @@ fn class_code(c: Class) -> Result<qs_class, Error> {
         Class::Points => QS_CLASS_POINTS,
         Class::Empty => QS_CLASS_EMPTY,
         Class::Curve => QS_CLASS_CURVE,
+        Class::Undecided => QS_CLASS_UNDECIDED,
         other => return Err(Error::internal(format!("class {other} has no C code"))),
     })
 }
@@ -283,29 +287,39 @@ fn count(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
 }
 
+/// The classification of `a` and `b` (class and counts only: the fast
+/// route), and the budget error when the budget ran out (the class is then
+/// `QS_CLASS_UNDECIDED`).
 fn classify(
     a: &qs_natural_f64,
     b: &qs_natural_f64,
     budget: engine::Budget,
-) -> Result<qs_natural_result, Error> {
+) -> Result<(qs_natural_result, Option<Error>), Error> {
     let (a, b) = (natural_of(a, "a")?, natural_of(b, "b")?);
-    let r = engine::natural::classify_with(&a, &b, &ClassifyOptions::with_budget(budget))?;
-    Ok(qs_natural_result {
+    let options = ClassifyOptions::with_budget(budget).without_components();
+    let r = engine::natural::classify_with(&a, &b, &options)?;
+    let exhausted = r.exhausted().map(|e| Error::from(e.clone()));
+    let undecided = exhausted.is_some();
+    let counted = |n: usize| if undecided { 0 } else { count(n) };
+    let out = qs_natural_result {
         cls: class_code(r.class())?,
-        conics: count(r.conics()),
-        lines: count(r.lines()),
-        points: count(r.points()),
+        conics: counted(r.conics()),
+        lines: counted(r.lines()),
+        points: counted(r.points()),
         axes: axes_code(r.axes())?,
         thm8: r.thm8().map_or(-1, i32::from),
-    })
+    };
+    Ok((out, exhausted))
 }
 
 /// Classifies the intersection of two natural quadrics given in doubles
 /// (exact values), under the default budget: fills `*out` with the class
-/// and the counts of conics, lines and points.  Returns 0, or 2 for bad
-/// input (NaN, infinity, radius² ≤ 0, a zero axis, an unknown kind), 3 when
-/// the budget ran out, 1 internal; `*out` is then zeroed and `*err` (when
-/// `err` is not NULL) says why.
+/// and the counts of conics, lines and points (by the fast route: no
+/// components are computed).  Returns 0; 3 (`QS_ERR_BUDGET`) when the
+/// budget ran out: `*out` is then `QS_CLASS_UNDECIDED` with zero counts;
+/// 2 for bad input (NaN, infinity, radius² ≤ 0, a zero axis, an unknown
+/// kind) or 1 internal: `*out` is then zeroed.  On every non-zero code
+/// `*err` (when `err` is not NULL) says why.
 ///
 /// # Safety
 /// `a` and `b` are NULL or valid `qs_natural_f64`; `out` is NULL or
@@ -338,9 +352,9 @@ pub unsafe extern "C" fn qs_natural_classify_f64_opts(
         guard(err, || {
             check_out(out, "out")?;
             *out = qs_natural_result::default();
-            let r = classify(read_ref(a, "a")?, read_ref(b, "b")?, budget_of(opts))?;
+            let (r, exhausted) = classify(read_ref(a, "a")?, read_ref(b, "b")?, budget_of(opts))?;
             *out = r;
-            Ok(())
+            exhausted.map_or(Ok(()), Err)
         })
     }
 }
@@ -384,11 +398,13 @@ fn quadric_of(c: &[f64; 10]) -> Result<Polynomial, Error> {
     Ok(s)
 }
 
+/// The tangent point method on `e` and `quadric`, and the budget error
+/// when the budget ran out (the verdict is then undecided).
 fn tangent(
     e: &qs_ellipsoid_f64,
     quadric: &[f64; 10],
     budget: engine::Budget,
-) -> Result<qs_tangent_result, Error> {
+) -> Result<(qs_tangent_result, Option<Error>), Error> {
     let e = ellipsoid_of(e)?;
     let s = quadric_of(quadric)?;
     let r = engine::tangent::decide_with(&e, &s, &TangentOptions::with_budget(budget))?;
@@ -398,12 +414,12 @@ fn tangent(
         Verdict::Separated => QS_VERDICT_SEPARATED,
         _ => QS_VERDICT_UNDECIDED,
     };
-    let reason = match r.undecided() {
-        None => QS_UNDECIDED_NONE,
-        Some(Undecided::Budget(_)) => QS_UNDECIDED_BUDGET,
-        Some(_) => QS_UNDECIDED_NO_CERTIFICATE,
+    let (reason, exhausted) = match r.undecided() {
+        None => (QS_UNDECIDED_NONE, None),
+        Some(Undecided::Budget(e)) => (QS_UNDECIDED_BUDGET, Some(Error::from(e.clone()))),
+        Some(_) => (QS_UNDECIDED_NO_CERTIFICATE, None),
     };
-    Ok(qs_tangent_result {
+    let out = qs_tangent_result {
         verdict,
         side: match r.side() {
             Some(Side::Positive) => QS_SIDE_POSITIVE,
@@ -419,7 +435,8 @@ fn tangent(
         reason,
         minimum: qs_interval::of(r.min()),
         maximum: qs_interval::of(r.max()),
-    })
+    };
+    Ok((out, exhausted))
 }
 
 /// Decides an ellipsoid against a quadric surface given in doubles (exact
@@ -429,11 +446,13 @@ fn tangent(
 /// (S = q[0]x² + q[1]y² + q[2]z² + q[3]xy + q[4]xz + q[5]yz + q[6]x +
 /// q[7]y + q[8]z + q[9]; a plane when the first six are 0).  Fills `*out`
 /// with the verdict, the side, and ν = min and μ = max of S on E rounded
-/// outward to doubles.  A budget that runs out is an answer
-/// (`QS_VERDICT_UNDECIDED`, `reason` `QS_UNDECIDED_BUDGET`, code 0).
-/// Returns 2 for bad input (NaN, infinity, a semi-axis ≤ 0, a singular
-/// matrix, S = 0), 1 internal; `*out` is then cleared (undecided, NaN
-/// bounds) and `*err` (when `err` is not NULL) says why.
+/// outward to doubles.  Returns 0; 3 (`QS_ERR_BUDGET`) when the budget
+/// ran out: `*out` is then `QS_VERDICT_UNDECIDED` with `reason`
+/// `QS_UNDECIDED_BUDGET`; 2 for bad input (NaN, infinity, a semi-axis
+/// ≤ 0, a singular matrix, S = 0) or 1 internal: `*out` is then cleared
+/// (undecided, unknown bounds).  On every non-zero code `*err` (when `err`
+/// is not NULL) says why.  An undecided verdict without a certificate
+/// (`QS_UNDECIDED_NO_CERTIFICATE`) is an answer, code 0.
 ///
 /// # Safety
 /// `e` is NULL or a valid `qs_ellipsoid_f64`; `quadric` is NULL or points
@@ -468,9 +487,9 @@ pub unsafe extern "C" fn qs_tangent_quadric_f64_opts(
             check_out(out, "out")?;
             *out = qs_tangent_result::CLEAR;
             let q = read_ref(quadric.cast::<[f64; 10]>(), "quadric")?;
-            let r = tangent(read_ref(e, "e")?, q, budget_of(opts))?;
+            let (r, exhausted) = tangent(read_ref(e, "e")?, q, budget_of(opts))?;
             *out = r;
-            Ok(())
+            exhausted.map_or(Ok(()), Err)
         })
     }
 }
@@ -731,6 +750,40 @@ mod tests {
         // z ranges over [2, 4]: S = z − 10 over [−8, −6], exactly
         assert_eq!((r.minimum.lo, r.minimum.exact), (-8.0, 1));
         assert_eq!((r.maximum.lo, r.maximum.exact), (-6.0, 1));
+    }
+
+    #[test]
+    fn an_exhausted_budget_gives_code_3_and_an_undecided_answer() {
+        let opts = crate::options::qs_options_new();
+        unsafe { crate::options::qs_options_set_time_limit(opts, 0.0, ptr::null_mut()) };
+        let a = sphere([0.0; 3], 1.0);
+        let b = cyl([0.0; 3], [1.0, 0.0, 0.0], 1.0);
+        let mut n = qs_natural_result::default();
+        let mut err = ptr::null_mut();
+        let code = unsafe { qs_natural_classify_f64_opts(&a, &b, opts, &mut n, &mut err) };
+        assert_eq!(code, crate::boundary::QS_ERR_BUDGET);
+        assert_eq!(
+            (n.cls, n.conics, n.lines, n.points),
+            (QS_CLASS_UNDECIDED, 0, 0, 0)
+        );
+        assert!(!err.is_null());
+        unsafe { qs_error_free(err) };
+        let e = qs_ellipsoid_f64 {
+            center: [0.0; 3],
+            semi_axes: [1.0; 3],
+            rotation: ID,
+        };
+        let q = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, -3.0];
+        let mut t = qs_tangent_result::CLEAR;
+        t.verdict = 99;
+        let code =
+            unsafe { qs_tangent_quadric_f64_opts(&e, q.as_ptr(), opts, &mut t, ptr::null_mut()) };
+        assert_eq!(code, crate::boundary::QS_ERR_BUDGET);
+        assert_eq!(
+            (t.verdict, t.reason, t.minimum.known),
+            (QS_VERDICT_UNDECIDED, QS_UNDECIDED_BUDGET, 0)
+        );
+        unsafe { crate::options::qs_options_free(opts) };
     }
 
     #[test]
