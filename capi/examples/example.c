@@ -142,6 +142,27 @@ int main(void) {
         report("time limit", code, err);
         failures++;
     }
+
+    /* 6. a budget that runs out: code 3, an error saying which limit, and
+     * the undecided answer; both are ours to free */
+    qs_options_set_time_limit(opts, 0.0, NULL);
+    code = qs_tangent_json_opts("x^2 + y^2 + z^2 - 1", "x - 3", opts, &json, &err);
+    if (code == QS_ERR_BUDGET && json != NULL) {
+        printf("zero time limit: code %d, kind %s, undecided %s\n", code, qs_error_kind(err),
+               strstr(json, "\"verdict\":\"undecided\"") ? "yes" : "no");
+        qs_error_free(err);
+    } else {
+        report("zero time limit", code, err);
+        failures++;
+    }
+    qs_string_free(json);
+    code = qs_tangent_quadric_f64_opts(&unit, plane, opts, &tr, &err);
+    if (code == QS_ERR_BUDGET)
+        printf("  typed: %s, reason budget %s\n", verdict_name(tr.verdict),
+               tr.reason == QS_UNDECIDED_BUDGET ? "yes" : "no");
+    else
+        failures++;
+    qs_error_free(err);
     qs_options_free(opts);
 
     printf("%s\n", failures == 0 ? "all calls behaved" : "SOME CALLS MISBEHAVED");
