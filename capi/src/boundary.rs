@@ -226,7 +226,7 @@ mod tests {
 
     #[test]
     fn guard_clears_err_on_success_and_accepts_a_null_err() {
-        let mut err = 1usize as *mut qs_error; // garbage the caller left there
+        let mut err = ptr::dangling_mut::<qs_error>(); // garbage the caller left there
         assert_eq!(unsafe { guard(&mut err, || Ok(())) }, QS_OK);
         assert!(err.is_null());
         let code = unsafe { guard(ptr::null_mut(), || Err(input_error("x"))) };

@@ -1,7 +1,7 @@
 //! # quadsect's C and C++ interface
 //!
 //! `libquadsect.so` / `libquadsect.a` and `include/quadsect.h` (made by
-//! cbindgen from this crate; `check_header.sh` checks it is fresh).  Two
+//! cbindgen from this crate; the test in `header.rs` checks it is fresh).  Two
 //! levels, both exact and both never aborting the host:
 //!
 //! * text/JSON ([`json`]): expressions in the input syntax in, the JSON of
@@ -11,10 +11,11 @@
 //!   small structs, extremes as doubles rounded outward ([`float`]).
 //!
 //! Every entry point runs inside [`boundary::guard`]: a panic becomes an
-//! internal error (code 1), bad input code 2, an exhausted budget code 3,
-//! with the kind and message in a `qs_error`.  No global state: calls on
+//! internal error (code 1), bad input code 2, an exhausted budget code 3
+//! (with the `undecided` answer still written, as the CLI prints it), with
+//! the kind and message in a `qs_error`.  No global state: calls on
 //! different threads share nothing (the engine's budget is thread-local).
-//! See `README.md` for the ownership rules.
+//! See the README's "C and C++" section for the ownership rules.
 
 // The C names (qs_error, qs_natural_f64, …) are the interface.
 #![allow(non_camel_case_types)]
