@@ -133,6 +133,36 @@ pub(crate) unsafe fn guard(
     code
 }
 
+/// An answer and, when a budget ran out, the budget error: the answer is
+/// then the `undecided` one and is written all the same (code 3), as the
+/// CLI prints it before exiting with 3.
+pub(crate) type Answer<T> = (T, Option<Error>);
+
+/// Runs an entry point that writes one answer to `*out` (named `what`):
+/// checks `out`, sets it to `cleared` (what a failed call leaves), runs
+/// `body` in [`guard`] and writes its answer, also when the budget ran out.
+///
+/// # Safety
+/// `out` is NULL or writable; `err` as for [`guard`].
+pub(crate) unsafe fn answer_into<T>(
+    out: *mut T,
+    what: &str,
+    cleared: T,
+    err: *mut *mut qs_error,
+    body: impl FnOnce() -> Result<Answer<T>, Error>,
+) -> c_int {
+    // SAFETY: the caller's contract
+    unsafe {
+        guard(err, || {
+            check_out(out, what)?;
+            *out = cleared;
+            let (answer, exhausted) = body()?;
+            *out = answer;
+            exhausted.map_or(Ok(()), Err)
+        })
+    }
+}
+
 /// The error's kind: a NUL-terminated tag (`parse`, `number`,
 /// `not-an-ellipsoid`, `bad-quadric`, `input`, `json`, `missing-field`,
 /// `bad-field`, `unknown-op`, `budget`, `internal`, …).  The string belongs
@@ -205,11 +235,39 @@ pub unsafe extern "C" fn qs_string_free(s: *mut c_char) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     fn text(p: *const c_char) -> String {
         unsafe { CStr::from_ptr(p) }.to_str().unwrap().to_string()
+    }
+
+    #[test]
+    fn answer_into_writes_the_answer_also_with_a_budget_error() {
+        let mut out = 7;
+        let mut err = ptr::null_mut();
+        let budget = || Ok((42, Some(Error::new(ErrorKind::Budget, "time"))));
+        let code = unsafe { answer_into(&mut out, "out", 0, &mut err, budget) };
+        assert_eq!((code, out), (QS_ERR_BUDGET, 42));
+        assert_eq!(text(unsafe { qs_error_kind(err) }), "budget");
+        unsafe { qs_error_free(err) };
+        let code = unsafe { answer_into(&mut out, "out", 0, &mut err, || Err(input_error("no"))) };
+        assert_eq!((code, out), (QS_ERR_INPUT, 0));
+        unsafe { qs_error_free(err) };
+        let code = unsafe { answer_into(ptr::null_mut(), "out", 0, &mut err, || Ok((1, None))) };
+        assert_eq!(code, QS_ERR_INPUT);
+        assert!(text(unsafe { qs_error_message(err) }).contains("out is NULL"));
+        unsafe { qs_error_free(err) };
+    }
+
+    /// The message of `err` (empty for NULL), and frees it.
+    pub(crate) fn take_message(err: *mut qs_error) -> String {
+        if err.is_null() {
+            return String::new();
+        }
+        let m = text(unsafe { qs_error_message(err) });
+        unsafe { qs_error_free(err) };
+        m
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! out, through the engine's one dispatch table (`batch::run_op_within`), so
 //! the answers are exactly those of `quadsect batch`.
 
-use crate::boundary::{check_out, guard, host_string, input_error, qs_error, read_str};
+use crate::boundary::{Answer, answer_into, host_string, input_error, qs_error, read_str};
 use crate::options::{budget_of, qs_options};
 use engine::{Error, ErrorKind};
 use serde_json::{Map, Value};
@@ -16,7 +16,7 @@ fn run_json(
     op: &str,
     fields: &[(&str, &str)],
     budget: &engine::Budget,
-) -> Result<(String, Option<Error>), Error> {
+) -> Result<Answer<String>, Error> {
     let mut obj = Map::new();
     obj.insert("op".into(), Value::from(op));
     for (name, text) in fields {
@@ -48,15 +48,12 @@ unsafe fn json_entry(
 ) -> c_int {
     // SAFETY: the caller's contract
     unsafe {
-        guard(err, || {
-            check_out(out_json, "out_json")?;
-            *out_json = ptr::null_mut();
+        answer_into(out_json, "out_json", ptr::null_mut(), err, || {
             let a = read_str(args[0].1, args[0].0)?;
             let b = read_str(args[1].1, args[1].0)?;
             let (json, exhausted) =
                 run_json(op, &[(args[0].0, a), (args[1].0, b)], &budget_of(opts))?;
-            *out_json = host_string(&json);
-            exhausted.map_or(Ok(()), Err)
+            Ok((host_string(&json), exhausted))
         })
     }
 }
@@ -170,15 +167,14 @@ pub unsafe extern "C" fn qs_natural_json_opts(
 pub unsafe extern "C" fn qs_batch_line(line: *const c_char, out: *mut *mut c_char) -> c_int {
     // SAFETY: the caller's contract
     unsafe {
-        guard(ptr::null_mut(), || {
-            check_out(out, "out")?;
-            *out = ptr::null_mut();
+        // a budget that runs out is an error line of the answer, not a code
+        answer_into(out, "out", ptr::null_mut(), ptr::null_mut(), || {
             if line.is_null() {
                 return Err(input_error("line is NULL"));
             }
             let text = CStr::from_ptr(line).to_string_lossy();
-            *out = host_string(&engine::batch::answer_line(&text).to_string());
-            Ok(())
+            let answer = engine::batch::answer_line(&text).to_string();
+            Ok((host_string(&answer), None))
         })
     }
 }

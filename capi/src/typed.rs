@@ -2,7 +2,7 @@
 //! exact binary value (never rounded, never snapped to a decimal), and
 //! answers as small C structs.
 
-use crate::boundary::{check_out, guard, input_error, qs_error, read_ref};
+use crate::boundary::{Answer, answer_into, input_error, qs_error, read_ref};
 use crate::float::{Enclosure, enclose, exact};
 use crate::options::{budget_of, qs_options};
 use engine::natural::{AxesRelation, Class, ClassifyOptions};
@@ -294,7 +294,7 @@ fn classify(
     a: &qs_natural_f64,
     b: &qs_natural_f64,
     budget: engine::Budget,
-) -> Result<(qs_natural_result, Option<Error>), Error> {
+) -> Result<Answer<qs_natural_result>, Error> {
     let (a, b) = (natural_of(a, "a")?, natural_of(b, "b")?);
     let options = ClassifyOptions::with_budget(budget).without_components();
     let r = engine::natural::classify_with(&a, &b, &options)?;
@@ -349,12 +349,8 @@ pub unsafe extern "C" fn qs_natural_classify_f64_opts(
 ) -> c_int {
     // SAFETY: the caller's contract
     unsafe {
-        guard(err, || {
-            check_out(out, "out")?;
-            *out = qs_natural_result::default();
-            let (r, exhausted) = classify(read_ref(a, "a")?, read_ref(b, "b")?, budget_of(opts))?;
-            *out = r;
-            exhausted.map_or(Ok(()), Err)
+        answer_into(out, "out", qs_natural_result::default(), err, || {
+            classify(read_ref(a, "a")?, read_ref(b, "b")?, budget_of(opts))
         })
     }
 }
@@ -404,7 +400,7 @@ fn tangent(
     e: &qs_ellipsoid_f64,
     quadric: &[f64; 10],
     budget: engine::Budget,
-) -> Result<(qs_tangent_result, Option<Error>), Error> {
+) -> Result<Answer<qs_tangent_result>, Error> {
     let e = ellipsoid_of(e)?;
     let s = quadric_of(quadric)?;
     let r = engine::tangent::decide_with(&e, &s, &TangentOptions::with_budget(budget))?;
@@ -483,13 +479,9 @@ pub unsafe extern "C" fn qs_tangent_quadric_f64_opts(
 ) -> c_int {
     // SAFETY: the caller's contract
     unsafe {
-        guard(err, || {
-            check_out(out, "out")?;
-            *out = qs_tangent_result::CLEAR;
+        answer_into(out, "out", qs_tangent_result::CLEAR, err, || {
             let q = read_ref(quadric.cast::<[f64; 10]>(), "quadric")?;
-            let (r, exhausted) = tangent(read_ref(e, "e")?, q, budget_of(opts))?;
-            *out = r;
-            exhausted.map_or(Ok(()), Err)
+            tangent(read_ref(e, "e")?, q, budget_of(opts))
         })
     }
 }
@@ -497,9 +489,9 @@ pub unsafe extern "C" fn qs_tangent_quadric_f64_opts(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::boundary::{qs_error_free, qs_error_message};
+    use crate::boundary::qs_error_free;
+    use crate::boundary::tests::take_message;
     use proptest::prelude::*;
-    use std::ffi::CStr;
 
     const ID: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
@@ -528,34 +520,14 @@ mod tests {
         };
         let mut err = ptr::null_mut();
         let code = unsafe { qs_natural_classify_f64(a, b, &mut out, &mut err) };
-        let msg = if err.is_null() {
-            String::new()
-        } else {
-            let m = unsafe { CStr::from_ptr(qs_error_message(err)) }
-                .to_str()
-                .unwrap()
-                .to_string();
-            unsafe { qs_error_free(err) };
-            m
-        };
-        (code, out, msg)
+        (code, out, take_message(err))
     }
 
     fn tangent_c(e: &qs_ellipsoid_f64, q: &[f64; 10]) -> (c_int, qs_tangent_result, String) {
         let mut out = qs_tangent_result::CLEAR;
         let mut err = ptr::null_mut();
         let code = unsafe { qs_tangent_quadric_f64(e, q.as_ptr(), &mut out, &mut err) };
-        let msg = if err.is_null() {
-            String::new()
-        } else {
-            let m = unsafe { CStr::from_ptr(qs_error_message(err)) }
-                .to_str()
-                .unwrap()
-                .to_string();
-            unsafe { qs_error_free(err) };
-            m
-        };
-        (code, out, msg)
+        (code, out, take_message(err))
     }
 
     #[test]
