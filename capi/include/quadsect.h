@@ -6,10 +6,13 @@
  * regenerates it).  See the README's "C and C++" section for building,
  * linking, ownership rules and thread safety.
  *
- * Return codes: QS_OK 0, QS_ERR_INTERNAL 1, QS_ERR_INPUT 2, QS_ERR_BUDGET 3.
- * Every `qs_error **err` may be NULL; otherwise *err is set to NULL on
- * success and to a new error (free it with qs_error_free) on failure.
- * Every returned `char *` is freed with qs_string_free.
+ * Return codes (the CLI's exit statuses): QS_OK 0, QS_ERR_INTERNAL 1,
+ * QS_ERR_INPUT 2, QS_ERR_BUDGET 3.  Every `qs_error **err` may be NULL;
+ * otherwise *err is set to NULL on success and to a new error (free it
+ * with qs_error_free) on failure.  On QS_ERR_BUDGET the outputs hold the
+ * `undecided` answer.  Every returned `char *` is freed with
+ * qs_string_free (NULL is allowed).  No global state: every function is
+ * thread-safe and re-entrant.
  */
 
 #ifndef QUADSECT_H
