@@ -13,6 +13,7 @@ pub mod fixed;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
+pub mod reconstruct;
 
 pub use parse::{NumberError, parse_rational, scan_number};
 pub use qsqrt::QSqrt;

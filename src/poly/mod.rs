@@ -8,6 +8,7 @@
 //! exact division, which is all the fraction-free algorithms need.
 
 pub mod extension;
+pub mod kronecker;
 pub mod mpoly;
 pub mod parse;
 pub mod ring;

@@ -149,6 +149,26 @@ fn method_json(m: &Method) -> Value {
                 "resultant_elimination": elim,
             })
         }
+        Method::ModularRur(an) => {
+            let r = &an.rur;
+            json!({
+                "method": "critical-ideal-modular-rur",
+                "critical_points": r.points(),
+                "separating_element": "S",
+                "rur_poly": upoly_string(&r.f, U),
+                "rur_coordinates": r.coords.iter().map(|c| upoly_string(c, U)).collect::<Vec<_>>(),
+                "rur_denominator": upoly_string(&r.denom, U),
+                "real_critical_points": r.real_roots.len(),
+                "reconstruction_primes": r.primes,
+                "soundness": "rur_poly D(u) is square-free and divides, in Z[u], the homogenised compositions of E, of the three minors of ∇S × ∇E and of S − u at (x, y, z) = rur_coordinates / rur_denominator: every root u of D is S at a critical point, distinct roots at distinct points",
+                "completeness": {
+                    "prime": r.count.prime,
+                    "count_bound": r.count.bound,
+                    "argument": "the leading forms of E and of the minors have no common zero at infinity modulo prime, so the number of complex critical points is at most count_bound (the standard monomials of a Gröbner basis modulo prime); count_bound = deg D, so the roots of D are all the critical values",
+                },
+                "resultant_elimination": Value::Null,
+            })
+        }
         Method::LevelSets(ls) => json!({
             "method": "level-sets",
             "levels": ls.levels.iter().map(|(q, ne)| json!({"level": crate::number::fmt_q(q), "real_points": ne})).collect::<Vec<_>>(),
@@ -309,6 +329,14 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.form[1],
             an.rur.form[2],
             an.rur.real_roots.len()
+        ),
+        Method::ModularRur(an) => format!(
+            "critical ideal E = 0, ∇S×∇E = 0, multi-modular: {} critical points, RUR in u = S (its polynomial is D(u); {} primes, verified exactly), {} real; complete: at most {} critical points by the count modulo {}",
+            an.rur.points(),
+            an.rur.primes,
+            an.rur.real_roots.len(),
+            an.rur.count.bound,
+            an.rur.count.prime
         ),
         Method::LevelSets(ls) => format!(
             "curves of critical points: {} level curves tested",

@@ -11,6 +11,7 @@
 mod algebraic;
 mod enclose;
 mod isolate;
+pub mod modrur;
 mod newton;
 mod rational;
 mod report;

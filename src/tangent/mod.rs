@@ -25,6 +25,7 @@ pub mod critical;
 pub mod ellipsoid;
 pub mod examples;
 pub mod judging;
+pub mod modular;
 pub mod pencil;
 pub mod quadric;
 pub mod separable;
@@ -97,6 +98,9 @@ pub enum Method {
     Separable(separable::SeparableAnalysis),
     /// deg S ≥ 3 with a finite critical set.
     CriticalIdeal(critical::CriticalAnalysis),
+    /// deg S ≥ 3 in general position: the verified multi-modular RUR with
+    /// S as separating element (D(u) is its polynomial).
+    ModularRur(modular::ModularAnalysis),
     /// deg S ≥ 3 with curves of critical points (symmetric inputs).
     LevelSets(critical::LevelSetAnalysis),
     /// S is a non-zero constant.
@@ -240,6 +244,16 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         let (vals, nonreal) = split_values(&real, &an.judging);
         let j = an.judging.clone();
         (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
+    } else if let Ok(an) = modular::analyze(&e, surface) {
+        let vals = an.real_values();
+        let j = an.rur.f.clone();
+        (
+            vals,
+            vec![],
+            j,
+            Method::ModularRur(an),
+            WitnessFinder::Modular,
+        )
     } else {
         let outcome = match critical::analyze(&e, surface) {
             Ok(o) => o,
@@ -312,6 +326,7 @@ enum WitnessFinder {
     Lambda,
     Separable,
     Critical,
+    Modular,
     Level,
 }
 
@@ -443,6 +458,7 @@ fn witness_for(
         (Method::Pencil(an), WitnessFinder::Pencil) => an.witness(e, s, want),
         (Method::Separable(an), WitnessFinder::Separable) => an.witness(value, e, s, want),
         (Method::CriticalIdeal(an), WitnessFinder::Critical) => an.witness(value, e, s, want),
+        (Method::ModularRur(an), WitnessFinder::Modular) => an.witness(value, e, s, want),
         (Method::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
         (Method::Constant, _) => {
             let c = e.center.clone();
