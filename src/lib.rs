@@ -8,6 +8,7 @@
 
 pub mod batch;
 pub mod bench;
+pub mod bench_cases;
 pub mod budget;
 pub mod elim;
 pub mod error;

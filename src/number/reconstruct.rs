@@ -213,13 +213,17 @@ pub fn prime31(i: usize) -> u64 {
     list[i]
 }
 
-/// Chinese remaindering of a vector of residues, prime by prime: the values
-/// are kept in `[0, M)` with `M` the product of the primes so far.
+/// Chinese remaindering of a vector of residues: the values are kept in
+/// `[0, M)` with `M` the product of the primes so far.  Primes are combined
+/// in pairs in machine words first (`p₁p₂ < 2^62`), so each big-integer pass
+/// (a Montgomery reduction of the digits and one multiply-add) serves two
+/// primes; call [`CrtVec::flush`] before reading.
 #[derive(Clone, Debug)]
 pub struct CrtVec {
     modulus: BigInt,
     values: Vec<BigInt>,
     primes: usize,
+    pending: Option<(u64, Vec<u64>)>,
 }
 
 impl CrtVec {
@@ -229,6 +233,7 @@ impl CrtVec {
             modulus: BigInt::one(),
             values: vec![BigInt::zero(); n],
             primes: 0,
+            pending: None,
         }
     }
 
@@ -237,31 +242,87 @@ impl CrtVec {
         self.primes
     }
 
-    /// The product of the primes.
+    /// The bit size of the product of all primes pushed (pending included).
+    pub fn modulus_bits(&self) -> u64 {
+        self.modulus.bits()
+            + self
+                .pending
+                .as_ref()
+                .map_or(0, |(p, _)| 64 - p.leading_zeros() as u64)
+    }
+
+    /// The product of the primes (after [`CrtVec::flush`]).
     pub fn modulus(&self) -> &BigInt {
+        debug_assert!(self.pending.is_none(), "CrtVec read before flush");
         &self.modulus
     }
 
-    /// The values in `[0, M)`.
+    /// The values in `[0, M)` (after [`CrtVec::flush`]).
     pub fn values(&self) -> &[BigInt] {
+        debug_assert!(self.pending.is_none(), "CrtVec read before flush");
         &self.values
     }
 
     /// Adds the residues `r` (in `[0, p)`) modulo a new prime `p`.
     pub fn push(&mut self, fp: &Fp, r: &[u64]) {
         assert_eq!(r.len(), self.values.len());
-        let mm = fp.from_big(&self.modulus);
-        let minv = fp.inv(mm).expect("the primes are distinct");
+        self.primes += 1;
+        match self.pending.take() {
+            None => self.pending = Some((fp.p, r.to_vec())),
+            Some((p1, r1)) => {
+                // x ≡ r1 (mod p1), x ≡ r (mod p2):  x = r1 + p1·((r − r1)/p1 mod p2)
+                let inv = fp.inv(p1 % fp.p).expect("distinct primes");
+                let both: Vec<u64> = r1
+                    .iter()
+                    .zip(r)
+                    .map(|(&a, &b)| a + p1 * fp.mul(fp.sub(b, a % fp.p), inv))
+                    .collect();
+                self.combine(p1 * fp.p, &both);
+            }
+        }
+    }
+
+    /// Folds a pending single prime into the values.
+    pub fn flush(&mut self) {
+        if let Some((p, r)) = self.pending.take() {
+            self.combine(p, &r);
+        }
+    }
+
+    /// Adds residues modulo an odd `m < 2^62` coprime to the modulus.
+    fn combine(&mut self, m: u64, r: &[u64]) {
+        let mm = crate::number::modular::Modulus::new(m);
+        let single = (m < 1 << 31).then(|| Fp::new(m));
+        // x mod m for x ≥ 0 from its 64-bit digits: one prime by Barrett;
+        // a pair (m > 2^61) by acc·2^64 = redc(acc·R²) and a digit reduced
+        // by at most 7 subtractions
+        let reduce = |x: &BigInt| -> u64 {
+            if let Some(fp) = &single {
+                return fp.from_biguint(x.magnitude());
+            }
+            let mut acc = 0u64;
+            for d in x.magnitude().iter_u64_digits().rev() {
+                let mut dm = d;
+                while dm >= m {
+                    dm -= m;
+                }
+                let t = mm.shift64(acc) + dm;
+                acc = if t >= m { t - m } else { t };
+            }
+            acc
+        };
+        debug_assert!(!(1 << 31..=1 << 61).contains(&m));
+        let minv = inv_mod(reduce(&self.modulus), m).expect("coprime moduli");
         for (v, &ri) in self.values.iter_mut().zip(r) {
             crate::budget::check();
-            let cur = fp.from_big(v);
-            let t = fp.mul(fp.sub(ri, cur), minv);
+            let cur = reduce(v);
+            let diff = if ri >= cur { ri - cur } else { ri + m - cur };
+            let t = ((diff as u128 * minv as u128) % m as u128) as u64;
             if t != 0 {
                 *v += &self.modulus * BigInt::from(t);
             }
         }
-        self.modulus *= BigInt::from(fp.p);
-        self.primes += 1;
+        self.modulus *= BigInt::from(m);
     }
 }
 
@@ -281,8 +342,28 @@ pub fn rational_reconstruction(a: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt
     }
     let (mut r0, mut r1) = (m.clone(), a);
     let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
+    let bound_bits = bound.bits();
     while r1 > bound {
         crate::budget::check();
+        // Lehmer blocks while far above the bound: the block's last
+        // remainder is the smallest, so no stopping point is skipped when
+        // it is still above the bound
+        if r1.bits() > bound_bits + 128
+            && r0.bits() - r1.bits() < 16
+            && let Some((a, b, c, d)) =
+                crate::number::lehmer_cofactors(r0.magnitude(), r1.magnitude())
+        {
+            let lin = |p: i128, q: i128, x: &BigInt, y: &BigInt| -> BigInt {
+                x * BigInt::from(p) + y * BigInt::from(q)
+            };
+            let n1 = lin(c, d, &r0, &r1);
+            if n1 > bound {
+                let n0 = lin(a, b, &r0, &r1);
+                let (s0, s1) = (lin(a, b, &t0, &t1), lin(c, d, &t0, &t1));
+                (r0, r1, t0, t1) = (n0, n1, s0, s1);
+                continue;
+            }
+        }
         let (q, r) = r0.div_rem(&r1);
         r0 = std::mem::replace(&mut r1, r);
         let t = &t0 - &q * &t1;
@@ -299,6 +380,12 @@ pub fn rational_reconstruction(a: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt
     } else {
         Some((r1, t1))
     }
+}
+
+/// The bit size of the symmetric representative of `v ∈ [0, m)` (no
+/// division).
+pub fn symmetric_bits(v: &BigInt, m: &BigInt) -> u64 {
+    if v + v > *m { (m - v).bits() } else { v.bits() }
 }
 
 /// The symmetric representative of `a mod m` in `(−m/2, m/2]`.
@@ -365,6 +452,7 @@ mod tests {
             c.push(&fp, &r);
             k += 1;
         }
+        c.flush();
         let back: Vec<BigInt> = c
             .values()
             .iter()
@@ -372,6 +460,60 @@ mod tests {
             .collect();
         assert_eq!(back, xs);
         assert_eq!(c.primes(), k);
+    }
+
+    /// Wang's algorithm with plain Euclidean steps (the reference for the
+    /// Lehmer-accelerated version).
+    fn plain_reconstruction(a: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> {
+        let bound: BigInt = (m >> 1usize).sqrt();
+        let (mut r0, mut r1) = (m.clone(), a.mod_floor(m));
+        let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
+        while r1 > bound {
+            let (q, r) = r0.div_rem(&r1);
+            r0 = std::mem::replace(&mut r1, r);
+            let t = &t0 - &q * &t1;
+            t0 = std::mem::replace(&mut t1, t);
+        }
+        if t1.abs() > bound || t1.is_zero() || !r1.gcd(&t1).is_one() {
+            return None;
+        }
+        if t1.is_negative() {
+            Some((-r1, -t1))
+        } else {
+            Some((r1, t1))
+        }
+    }
+
+    #[test]
+    fn lehmer_reconstruction_agrees_with_plain_euclid() {
+        let m: BigInt = (0..70).map(|i| BigInt::from(prime31(i))).product();
+        let mut seed = 0x1234_5678_9abc_def1u64;
+        let mut big = |bits: u32| {
+            let mut x = BigInt::one();
+            for _ in 0..bits / 32 {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                x = (x << 32usize) + BigInt::from(seed >> 32);
+            }
+            x
+        };
+        for bits in [64u32, 500, 1000, 1080, 1200] {
+            let (n, d) = (big(bits), big(bits / 2 + 32));
+            let a = (&n * d.modinv(&m).unwrap()).mod_floor(&m);
+            let want = plain_reconstruction(&a, &m);
+            assert_eq!(rational_reconstruction(&a, &m), want, "{bits} bits");
+            if bits <= 1000 {
+                let g = n.gcd(&d);
+                assert_eq!(want, Some((&n / &g, &d / &g)));
+            }
+            // a random residue: both agree on failure too
+            let r = big(2100).mod_floor(&m);
+            assert_eq!(
+                rational_reconstruction(&r, &m),
+                plain_reconstruction(&r, &m)
+            );
+        }
     }
 
     #[test]

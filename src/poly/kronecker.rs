@@ -118,8 +118,25 @@ pub fn mul(a: &ZPoly, b: &ZPoly) -> ZPoly {
     if la.min(lb) < SCHOOLBOOK_BELOW {
         return a * b;
     }
-    let bound = max_bits(a) + max_bits(b) + (la.min(lb) as u64).ilog2() as u64 + 1;
+    let (ba, bb) = (max_bits(a), max_bits(b));
+    let bound = ba + bb + (la.min(lb) as u64).ilog2() as u64 + 1;
     let w = bound + 2;
+    // schoolbook: la·lb word products of the operand sizes; Kronecker: one
+    // product of the packed sizes (Karatsuba above 32 words, ~n^1.6)
+    let school = (la * lb) as f64 * (ba / 64 + 1) as f64 * (bb / 64 + 1) as f64;
+    let (na, nb) = (
+        (la as u64 * w / 64 + 1) as f64,
+        (lb as u64 * w / 64 + 1) as f64,
+    );
+    let (small, big) = (na.min(nb), na.max(nb));
+    let kron = if small < 32.0 {
+        small * big
+    } else {
+        big / small * small.powf(1.6)
+    };
+    if school <= kron {
+        return a * b;
+    }
     crate::budget::check_size(
         "Kronecker product",
         la + lb,

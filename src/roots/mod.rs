@@ -15,6 +15,7 @@ pub mod modrur;
 mod newton;
 mod rational;
 mod report;
+pub mod rurcheck;
 mod sturm;
 mod zerodim;
 

@@ -22,18 +22,17 @@
 //! fails the exact checks and the caller falls back to the exact route.
 
 use super::RealAlg;
+use super::rurcheck::{Check, CheckFailure, vanish_on_roots};
 use crate::elim::f4::{
     ModPoly, ModQuotient, Mono, groebner_mod, mono, standard_monomials_of, zmpoly_mod,
 };
 use crate::number::Q;
 use crate::number::reconstruct::{CrtVec, Fp, prime31, rational_reconstruction, symmetric_mod};
-use crate::poly::kronecker;
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
-use std::collections::HashMap;
 
 /// Why the modular route gave no result (never a verdict: the caller falls
 /// back to the exact route).
@@ -56,6 +55,8 @@ pub struct CountCertificate {
 /// roots τ of `f`, and `h(ξ(τ)) = τ`.
 #[derive(Clone, Debug)]
 pub struct ModularRur {
+    /// Which of the candidate separating elements `h` was used.
+    pub separating: usize,
     /// `f(u)`: primitive, square-free, of degree = the number of zeros; its
     /// roots are the values of `h` at the zeros (each taken once).
     pub f: ZPoly,
@@ -201,17 +202,27 @@ fn mulmod(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
     r.iter().map(|&x| fp.reduce(x)).collect()
 }
 
-/// The RUR modulo p with respect to `h`: the minimal polynomial `f` of `h`
-/// on the quotient and the Kronecker numerators `G_v = v(u)·f′(u) mod f`.
-fn image_mod_p(fp: &Fp, gens: &[ModPoly], h: &ModPoly) -> Result<Image, ImageFail> {
+/// The RUR modulo p with respect to the first of `hs` that separates the
+/// zeros (only `hs[i]` when `fixed = Some(i)`): the minimal polynomial `f`
+/// of `h` on the quotient and the Kronecker numerators
+/// `G_v = v(u)·f′(u) mod f`.  Returns the index of the element used.
+fn image_mod_p(
+    fp: &Fp,
+    gens: &[ModPoly],
+    hs: &[ModPoly],
+    fixed: Option<usize>,
+) -> Result<(usize, Image), ImageFail> {
     let gb = groebner_mod(fp, gens).ok_or(ImageFail::TooLarge)?;
     if gb.is_unit() {
         return Err(ImageFail::Unit);
     }
     let quo = ModQuotient::new(&gb).ok_or(ImageFail::NotZeroDimensional)?;
     let n = quo.dim();
-    let nf_h = gb.normal_forms(std::slice::from_ref(h));
-    let hv = quo.coords(&nf_h[0]).expect("normal forms are on the basis");
+    let nf_h = gb.normal_forms(hs);
+    let hv: Vec<Vec<u64>> = nf_h
+        .iter()
+        .map(|p| quo.coords(p).expect("normal forms are on the basis"))
+        .collect();
     let one = 0; // the basis is increasing: 1 comes first
     let mut e1 = vec![0u64; n];
     e1[one] = 1;
@@ -241,7 +252,8 @@ fn image_mod_p(fp: &Fp, gens: &[ModPoly], h: &ModPoly) -> Result<Image, ImageFai
             kry.push(next);
         }
         let top = kry.pop().expect("n + 1 vectors");
-        let rhs = vec![top, xs[0].clone(), xs[1].clone(), xs[2].clone(), hv.clone()];
+        let mut rhs = vec![top, xs[0].clone(), xs[1].clone(), xs[2].clone()];
+        rhs.extend(hv.iter().cloned());
         if let Some(sol) = solve_columns(fp, &kry, &rhs) {
             kp = Some(sol);
             break;
@@ -250,35 +262,47 @@ fn image_mod_p(fp: &Fp, gens: &[ModPoly], h: &ModPoly) -> Result<Image, ImageFai
     let sol = kp.ok_or(ImageFail::NotRadical)?;
     // in K_p = F_p[T]/(m_t): T^n = Σ c_j T^j; U = h(T)
     let c = &sol[0];
-    let u = &sol[4];
-    let mut pows: Vec<Vec<u64>> = Vec::with_capacity(n + 1);
-    let mut cur = e1.clone();
-    for _ in 0..=n {
-        crate::budget::check();
-        let next = mulmod(fp, &cur, u, c);
-        pows.push(cur);
-        cur = next;
+    let choices: Vec<usize> = match fixed {
+        Some(i) => vec![i],
+        None => (0..hs.len()).collect(),
+    };
+    for hi in choices {
+        let u = &sol[4 + hi];
+        let mut pows: Vec<Vec<u64>> = Vec::with_capacity(n + 1);
+        let mut cur = e1.clone();
+        for _ in 0..=n {
+            crate::budget::check();
+            let next = mulmod(fp, &cur, u, c);
+            pows.push(cur);
+            cur = next;
+        }
+        let top = pows.pop().expect("n + 1 powers");
+        let rhs = vec![top, sol[1].clone(), sol[2].clone(), sol[3].clone()];
+        let Some(s2) = solve_columns(fp, &pows, &rhs) else {
+            continue;
+        };
+        // f(u) = u^n − Σ s2[0]_j u^j, monic; store f_j = −s2[0]_j
+        let fc = &s2[0];
+        let f_low: Vec<u64> = fc.iter().map(|&x| fp.neg(x)).collect();
+        // f′(u) = n u^(n−1) + Σ j f_j u^(j−1)
+        let mut fd = vec![0u64; n];
+        for j in 1..n {
+            fd[j - 1] = fp.mul(j as u64 % fp.p, f_low[j]);
+        }
+        fd[n - 1] = n as u64 % fp.p;
+        let mut residues = f_low;
+        for coords in &s2[1..4] {
+            residues.extend(mulmod(fp, coords, &fd, fc));
+        }
+        return Ok((
+            hi,
+            Image {
+                lms: gb.leading(),
+                residues,
+            },
+        ));
     }
-    let top = pows.pop().expect("n + 1 powers");
-    let rhs = vec![top, sol[1].clone(), sol[2].clone(), sol[3].clone()];
-    let s2 = solve_columns(fp, &pows, &rhs).ok_or(ImageFail::NotSeparating)?;
-    // f(u) = u^n − Σ s2[0]_j u^j, monic; store f_j = −s2[0]_j
-    let fc = &s2[0];
-    let f_low: Vec<u64> = fc.iter().map(|&x| fp.neg(x)).collect();
-    // f′(u) = n u^(n−1) + Σ j f_j u^(j−1)
-    let mut fd = vec![0u64; n];
-    for j in 1..n {
-        fd[j - 1] = fp.mul(j as u64 % fp.p, f_low[j]);
-    }
-    fd[n - 1] = n as u64 % fp.p;
-    let mut residues = f_low;
-    for coords in &s2[1..4] {
-        residues.extend(mulmod(fp, coords, &fd, fc));
-    }
-    Ok(Image {
-        lms: gb.leading(),
-        residues,
-    })
+    Err(ImageFail::NotSeparating)
 }
 
 /// A rational polynomial modulo p (`None` when a denominator vanishes).
@@ -317,24 +341,28 @@ fn no_zeros_at_infinity(fp: &Fp, gens: &[ZMPoly]) -> bool {
     }
 }
 
-/// The candidate over Q: `f` monic and the three numerators.
+/// The candidate over Q: `f = u^n + Σ nums[j] u^j / den` (monic) and the
+/// numerators `G_v = Σ nums[n(v+1) + j] u^j / den`.
 struct Candidate {
-    f: Vec<Q>,
-    g: [Vec<Q>; 3],
+    n: usize,
+    nums: Vec<BigInt>,
+    den: BigInt,
 }
 
 /// Rational reconstruction of all values with a running common denominator
-/// (after the first few coefficients most are integers times it).
-fn reconstruct(values: &[BigInt], m: &BigInt) -> Option<Vec<Q>> {
+/// (after the first few coefficients most are integers times it): the
+/// numerators over the final common denominator.
+fn reconstruct(values: &[BigInt], m: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
     let bound_bits = (m.bits() - 1) / 2;
     let mut den = BigInt::one();
-    let mut out = Vec::with_capacity(values.len());
+    // (numerator, denominator at the time) per value
+    let mut out: Vec<(BigInt, BigInt)> = Vec::with_capacity(values.len());
     for v in values {
         crate::budget::check();
         let a = (v * &den).mod_floor(m);
         let s = symmetric_mod(&a, m);
         if s.bits() <= bound_bits {
-            out.push(Q::new(s, den.clone()));
+            out.push((s, den.clone()));
             continue;
         }
         let (n, d) = rational_reconstruction(&a, m)?;
@@ -342,200 +370,26 @@ fn reconstruct(values: &[BigInt], m: &BigInt) -> Option<Vec<Q>> {
         if den.bits() > bound_bits {
             return None;
         }
-        out.push(Q::new(n, den.clone()));
+        out.push((n, den.clone()));
     }
-    Some(out)
+    let nums = out.into_iter().map(|(n, d)| n * (&den / d)).collect();
+    Some((nums, den))
 }
 
 fn candidate_of(values: &[BigInt], m: &BigInt, n: usize) -> Option<Candidate> {
-    let q = reconstruct(values, m)?;
-    Some(Candidate {
-        f: q[..n].to_vec(),
-        g: std::array::from_fn(|k| q[n * (k + 1)..n * (k + 2)].to_vec()),
-    })
+    let (nums, den) = reconstruct(values, m)?;
+    Some(Candidate { n, nums, den })
 }
 
 /// Does the candidate reduce to the residues modulo another prime?
 fn agrees_mod(fp: &Fp, cand: &Candidate, residues: &[u64]) -> bool {
-    cand.f
-        .iter()
-        .chain(cand.g.iter().flatten())
-        .zip(residues)
-        .all(|(q, &r)| match fp.inv(fp.from_big(q.denom())) {
-            Some(di) => fp.mul(fp.from_big(q.numer()), di) == r,
-            None => false,
-        })
-}
-
-/// `D | H` in Z[u] for a primitive `D`, decided exactly.
-///
-/// Exact division when that is cheap; otherwise the quotient modulo
-/// primes, lifted by the CRT to `Q̃` with `‖Q̃‖∞ < M/2`: if
-/// `‖D‖₁·‖Q̃‖∞ + ‖H‖∞ < M/2` then `D·Q̃ − H ≡ 0 (mod M)` has coefficients
-/// below `M/2`, so `D·Q̃ = H`.  A non-zero remainder modulo a prime not
-/// dividing `lc(D)` disproves divisibility; a modulus beyond the
-/// Landau–Mignotte size of a true quotient gives up (returns false).
-pub fn divides(d: &ZPoly, h: &ZPoly) -> bool {
-    if h.is_zero() {
-        return true;
-    }
-    let (Some(dn), Some(hn)) = (d.degree(), h.degree()) else {
+    let Some(di) = fp.inv(fp.from_big(&cand.den)) else {
         return false;
     };
-    if hn < dn {
-        return false;
-    }
-    let qlen = hn - dn + 1;
-    let bits = |p: &ZPoly| p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
-    let (hb, db) = (bits(h), bits(d));
-    let d1: u64 = db + (d.coeffs().len() as u64).ilog2() as u64 + 1;
-    // estimated costs in limb operations
-    let qb = hb.saturating_sub(d.lc().bits()) + qlen as u64;
-    let exact_cost = qlen as u64 * (dn as u64 + 1) * (qb / 64 + 1) * (db / 64 + 1);
-    let primes_needed = (hb.max(d1 + qb) + 8) / 31 + 1;
-    let modular_cost = primes_needed
-        * (h.coeffs().len() as u64 * (hb / 32 + 2) + qlen as u64 * (dn as u64 + 1))
-        + primes_needed * qlen as u64 * (primes_needed / 2 + 1);
-    if exact_cost <= modular_cost {
-        return divides_exactly(d, h);
-    }
-    let cap = hb + d1 + qlen as u64 + (h.coeffs().len() as u64).ilog2() as u64 + 16;
-    let mut crt = CrtVec::new(qlen);
-    let mut next_check = hb.max(d1) + 3;
-    for k in 0.. {
-        crate::budget::check_now();
-        let fp = Fp::new(prime31(k));
-        let dp: Vec<u64> = d.coeffs().iter().map(|c| fp.from_big(c)).collect();
-        if dp[dn] == 0 {
-            continue;
-        }
-        let mut r: Vec<u64> = h.coeffs().iter().map(|c| fp.from_big(c)).collect();
-        let linv = fp.inv(dp[dn]).expect("non-zero");
-        let mut q = vec![0u64; qlen];
-        for i in (0..qlen).rev() {
-            let t = fp.mul(r[i + dn], linv);
-            q[i] = t;
-            if t != 0 {
-                let nt = fp.neg(t);
-                for (j, &dj) in dp.iter().enumerate() {
-                    r[i + j] = fp.reduce(r[i + j] + nt * dj);
-                }
-            }
-        }
-        if r[..dn].iter().any(|&x| x != 0) {
-            return false;
-        }
-        crt.push(&fp, &q);
-        let mb = crt.modulus().bits();
-        if mb >= next_check {
-            let lifted: Vec<BigInt> = crt
-                .values()
-                .iter()
-                .map(|v| symmetric_mod(v, crt.modulus()))
-                .collect();
-            let qbits = lifted.iter().map(|c| c.bits()).max().unwrap_or(0);
-            if hb.max(d1 + qbits) + 3 <= mb {
-                return true;
-            }
-            next_check = mb + 4 * 31;
-        }
-        if mb > cap {
-            return false;
-        }
-    }
-    unreachable!("the loop returns")
-}
-
-/// Exact division in Z[u] with early exit (`D` primitive: by Gauss' lemma
-/// every quotient coefficient of a true factor is an integer).
-fn divides_exactly(d: &ZPoly, h: &ZPoly) -> bool {
-    let (dn, hn) = (d.degree().expect("non-zero"), h.degree().expect("non-zero"));
-    let lc = d.lc();
-    let mut r: Vec<BigInt> = h.coeffs().to_vec();
-    for k in (0..=hn - dn).rev() {
-        crate::budget::check();
-        let (t, rem) = r[k + dn].div_rem(&lc);
-        if !rem.is_zero() {
-            return false;
-        }
-        if !t.is_zero() {
-            for (j, dj) in d.coeffs().iter().enumerate() {
-                r[k + j] -= &t * dj;
-            }
-        }
-    }
-    r[..dn].iter().all(|x| x.is_zero())
-}
-
-/// Homogeneous compositions `P^h(X, Y, Z, W)` of integer polynomials at
-/// univariate integer polynomials, with the powers `Z^c W^e` shared.
-struct Composer<'a> {
-    x: &'a ZPoly,
-    y: &'a ZPoly,
-    z: &'a ZPoly,
-    w: &'a ZPoly,
-    zw: HashMap<(u32, u32), ZPoly>,
-}
-
-impl<'a> Composer<'a> {
-    fn zw(&mut self, c: u32, e: u32) -> ZPoly {
-        if let Some(p) = self.zw.get(&(c, e)) {
-            return p.clone();
-        }
-        crate::budget::check();
-        let p = if c == 0 && e == 0 {
-            ZPoly::constant(BigInt::one())
-        } else if c > 0 {
-            let lower = self.zw(c - 1, e);
-            kronecker::mul(&lower, self.z)
-        } else {
-            let lower = self.zw(0, e - 1);
-            kronecker::mul(&lower, self.w)
-        };
-        self.zw.insert((c, e), p.clone());
-        p
-    }
-
-    /// `W^k · P(X/W, Y/W, Z/W)` for `deg P ≤ k`, by Horner in X then Y.
-    fn compose(&mut self, p: &ZMPoly, k: u32) -> ZPoly {
-        let mut by_a: HashMap<u32, HashMap<u32, Vec<(u32, BigInt)>>> = HashMap::new();
-        for (e, c) in p.terms() {
-            by_a.entry(e[X])
-                .or_default()
-                .entry(e[Y])
-                .or_default()
-                .push((e[Z], c.clone()));
-        }
-        let amax = by_a.keys().copied().max().unwrap_or(0);
-        let mut acc = ZPoly::zero();
-        for a in (0..=amax).rev() {
-            let mut inner = ZPoly::zero();
-            if let Some(by_b) = by_a.get(&a) {
-                let bmax = by_b.keys().copied().max().unwrap_or(0);
-                for b in (0..=bmax).rev() {
-                    let mut part = ZPoly::zero();
-                    if let Some(cs) = by_b.get(&b) {
-                        for (c, coef) in cs {
-                            let t = self.zw(*c, k - a - b - c);
-                            part = &part + &t.scale(coef);
-                        }
-                    }
-                    inner = if inner.is_zero() {
-                        part
-                    } else {
-                        &kronecker::mul(&inner, self.y) + &part
-                    };
-                }
-                // Horner in Y skipped no degree: inner is Σ_b Y^b·part_b
-            }
-            acc = if acc.is_zero() {
-                inner
-            } else {
-                &kronecker::mul(&acc, self.x) + &inner
-            };
-        }
-        acc
-    }
+    cand.nums
+        .iter()
+        .zip(residues)
+        .all(|(x, &r)| fp.mul(fp.from_big(x), di) == r)
 }
 
 /// The exact checks of a candidate: soundness of every zero, returned as
@@ -545,20 +399,19 @@ fn verify(
     h: &QMPoly,
     cand: &Candidate,
 ) -> Result<(ZPoly, [ZPoly; 3], ZPoly), String> {
-    let n = cand.f.len();
-    let lden = crate::number::denom_lcm(cand.f.iter().chain(cand.g.iter().flatten()));
-    let ints =
-        |v: &[Q]| -> Vec<BigInt> { v.iter().map(|c| c.numer() * (&lden / c.denom())).collect() };
-    let mut fz = ints(&cand.f);
-    fz.push(lden.clone());
+    let n = cand.n;
+    // f = (nums_f + Δ·u^n)/Δ, x_v = G_v/f′ = nums_v/(Δ·f′)
+    let mut fz = cand.nums[..n].to_vec();
+    fz.push(cand.den.clone());
     let f_scaled = ZPoly::new(fz);
     let phi = f_scaled.derivative();
-    let gs: [ZPoly; 3] = std::array::from_fn(|k| ZPoly::new(ints(&cand.g[k])));
+    let gs: [ZPoly; 3] =
+        std::array::from_fn(|k| ZPoly::new(cand.nums[n * (k + 1)..n * (k + 2)].to_vec()));
     let f = f_scaled.primitive_part();
     if f.degree() != Some(n) {
         return Err("degree of the reconstructed polynomial".into());
     }
-    // x_v = G_v/f′ = (L·G_v)/(L·f′): remove the common content
+    // remove the common content of the numerators and Φ
     let mut g_all = phi.content();
     for g in &gs {
         g_all = g_all.gcd(&g.content());
@@ -572,30 +425,28 @@ fn verify(
     if f.gcd(&f.derivative()).degree() != Some(0) {
         return Err("the reconstructed polynomial is not square-free".into());
     }
-    let (hz, hk) = h.to_primitive_z();
-    let kh = hz.total_degree().unwrap_or(0);
-    let mut comp = Composer {
-        x: &gs[0],
-        y: &gs[1],
-        z: &gs[2],
-        w: &phi,
-        zw: HashMap::new(),
-    };
-    for (i, g) in gens.iter().enumerate() {
-        let k = g.total_degree().unwrap_or(0);
-        let hg = comp.compose(g, k);
-        if !divides(&f, &hg) {
-            return Err(format!("generator {i} does not vanish on the candidate"));
-        }
-    }
+    let mut checks: Vec<Check> = gens
+        .iter()
+        .map(|g| Check {
+            p: g.clone(),
+            k: g.total_degree().unwrap_or(0),
+            u_coef: BigInt::zero(),
+        })
+        .collect();
     // hk·hz(ξ) = u:  hk_n·hz^h(G, Φ) − hk_d·u·Φ^kh ≡ 0 (mod f)
-    let hh = comp.compose(&hz, kh).scale(hk.numer());
-    let wk = comp.zw(0, kh).scale(hk.denom());
-    let u_wk = wk.shift_up(1);
-    if !divides(&f, &(&hh - &u_wk)) {
-        return Err("the separating element does not take the value u".into());
+    let (hz, hk) = h.to_primitive_z();
+    checks.push(Check {
+        k: hz.total_degree().unwrap_or(0),
+        p: hz.scale(hk.numer()),
+        u_coef: hk.denom().clone(),
+    });
+    match vanish_on_roots(&f, &gs, &phi, &checks) {
+        Ok(()) => Ok((f, gs, phi)),
+        Err(CheckFailure::NotDivisible(i)) | Err(CheckFailure::Undecided(i)) if i == gens.len() => {
+            Err("the separating element does not take the value u".into())
+        }
+        Err(e) => Err(format!("generator check failed: {e:?}")),
     }
-    Ok((f, gs, phi))
 }
 
 /// Solves the zero-dimensional system `gens = 0` (in x, y, z) with the
@@ -607,7 +458,7 @@ fn verify(
 /// did not verify within `max_primes`.
 pub fn solve_modular(
     gens: &[QMPoly],
-    h: &QMPoly,
+    hs: &[QMPoly],
     max_primes: usize,
 ) -> Result<ModularRur, Declined> {
     let zgens: Vec<ZMPoly> = gens
@@ -618,7 +469,7 @@ pub fn solve_modular(
     let maxdeg = zgens
         .iter()
         .map(|g| g.total_degree().unwrap_or(0))
-        .chain(h.total_degree())
+        .chain(hs.iter().filter_map(|h| h.total_degree()))
         .max()
         .unwrap_or(0);
     if maxdeg > crate::elim::f4::MAX_DEGREE / 4 {
@@ -628,23 +479,33 @@ pub fn solve_modular(
     let mut reference: Option<(Vec<Mono>, CrtVec)> = None;
     let mut count: Option<CountCertificate> = None;
     let mut candidate: Option<Candidate> = None;
-    let mut probe: Option<Q> = None;
+    let mut probe: Option<(BigInt, BigInt)> = None;
+    let (mut next_probe, mut next_full) = (0u64, 0u64);
     let (mut unlucky, mut fails) = (0usize, 0usize);
     let mut tried_count = 0usize;
+    // the separating element, fixed at the first prime that has one
+    let mut chosen: Option<usize> = None;
     for k in 0..max_primes {
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
-        let Some(hp) = qmpoly_mod(&fp, h) else {
+        let Some(hp) = hs
+            .iter()
+            .map(|h| qmpoly_mod(&fp, h))
+            .collect::<Option<Vec<_>>>()
+        else {
             continue;
         };
         let gp: Vec<ModPoly> = zgens.iter().map(|g| zmpoly_mod(&fp, g)).collect();
-        let img = match image_mod_p(&fp, &gp, &hp) {
-            Ok(i) => i,
+        let img = match image_mod_p(&fp, &gp, &hp, chosen) {
+            Ok((i, img)) => {
+                chosen = Some(i);
+                img
+            }
             Err(e) => {
                 fails += 1;
-                if fails >= 3 {
+                if fails >= 2 {
                     return decline(match e {
-                        ImageFail::Unit => "no common zero modulo three primes",
+                        ImageFail::Unit => "no common zero modulo two primes",
                         ImageFail::NotZeroDimensional => {
                             "infinitely many zeros (curves of critical points)"
                         }
@@ -679,6 +540,7 @@ pub fn solve_modular(
                 count = None;
                 candidate = None;
                 probe = None;
+                (next_probe, next_full) = (0, 0);
             }
             None => {}
         }
@@ -698,13 +560,15 @@ pub fn solve_modular(
                     return decline("zeros at infinity modulo every prime tried");
                 };
                 let c = candidate.take().expect("present");
-                match verify(&zgens, h, &c) {
+                let hi = chosen.expect("an image was computed");
+                match verify(&zgens, &hs[hi], &c) {
                     Ok((f, coords, denom)) => {
                         if f.degree() != Some(cc.bound) {
                             return decline("the verified zeros do not reach the counting bound");
                         }
                         let real_roots = RealAlg::roots_of(&f);
                         return Ok(ModularRur {
+                            separating: hi,
                             f,
                             coords,
                             denom,
@@ -715,6 +579,9 @@ pub fn solve_modular(
                     }
                     Err(_) => {
                         probe = None;
+                        let mb = crt.modulus_bits();
+                        next_probe = mb + (mb / 8).max(31);
+                        next_full = next_probe;
                     }
                 }
             } else {
@@ -722,16 +589,33 @@ pub fn solve_modular(
                 probe = None;
             }
         }
-        crt.push(&fp, &img.residues);
-        crate::budget::check_size("modular RUR", 4 * n, crt.modulus().bits());
-        // a cheap probe first: the constant coefficient of f, stable over
-        // two primes, before reconstructing everything
-        let pr =
-            rational_reconstruction(&crt.values()[0], crt.modulus()).map(|(a, b)| Q::new(a, b));
-        if pr.is_some() && pr == probe {
-            candidate = candidate_of(crt.values(), crt.modulus(), n);
+        // the probe (the constant coefficient of f) against this prime
+        let probe_ok = probe.as_ref().is_some_and(|(pn, pd)| {
+            fp.inv(fp.from_big(pd))
+                .is_some_and(|di| fp.mul(fp.from_big(pn), di) == img.residues[0])
+        });
+        if !probe_ok {
+            probe = None;
         }
-        probe = pr;
+        crt.push(&fp, &img.residues);
+        let mb = crt.modulus_bits();
+        crate::budget::check_size("modular RUR", 4 * n, mb);
+        // rational reconstruction is tried on a geometric schedule: first
+        // the probe alone; once it agrees with a further prime, everything
+        if probe_ok && candidate.is_none() && mb >= next_full {
+            crt.flush();
+            candidate = candidate_of(crt.values(), crt.modulus(), n);
+            if candidate.is_none() {
+                next_full = mb + (mb / 8).max(31);
+            }
+        }
+        if probe.is_none() && mb >= next_probe {
+            crt.flush();
+            probe = rational_reconstruction(&crt.values()[0], crt.modulus());
+            if probe.is_none() {
+                next_probe = mb + (mb / 8).max(31);
+            }
+        }
     }
     decline("the reconstruction did not stabilise within the prime limit")
 }
@@ -761,7 +645,7 @@ mod tests {
             ("2x^2+y^2+3z^2+x*y-y*z-7", "x^3+y^3-z^3+x*z-2y+1"),
         ] {
             let (gens, s) = critical_system(e, s);
-            let m = solve_modular(&gens, &s, 500).unwrap();
+            let m = solve_modular(&gens, std::slice::from_ref(&s), 500).unwrap();
             let exact = super::super::solve_zero_dim(&gens, std::slice::from_ref(&s))
                 .unwrap()
                 .unwrap();
@@ -776,7 +660,7 @@ mod tests {
     fn symmetric_systems_are_declined_not_guessed() {
         // S and E even in z: the critical points (x, y, ±z) share their value
         let (gens, s) = critical_system("x^2+2y^2+3z^2-6", "x^3 - 2x*y + z^2 - 1");
-        let d = solve_modular(&gens, &s, 100).unwrap_err();
+        let d = solve_modular(&gens, std::slice::from_ref(&s), 100).unwrap_err();
         assert!(d.0.contains("equal values"), "{d:?}");
     }
 }

@@ -245,11 +245,11 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         let j = an.judging.clone();
         (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
     } else if let Ok(an) = modular::analyze(&e, surface) {
-        let vals = an.real_values();
-        let j = an.rur.f.clone();
+        let (vals, nonreal) = split_values(&an.real_values(), &an.judging);
+        let j = an.judging.clone();
         (
             vals,
-            vec![],
+            nonreal,
             j,
             Method::ModularRur(an),
             WitnessFinder::Modular,
