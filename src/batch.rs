@@ -1,75 +1,60 @@
 //! `quadsect batch`: JSON lines in, JSON lines out, one answer per input
-//! line, in order.  Lines are processed in parallel (rayon) in chunks; a bad
-//! line (or even an internal failure) yields an error line and the batch
-//! goes on.
+//! line, in order, streamed: each answer is written as soon as it and the
+//! lines before it are done ([`run_batch_with`]).  Lines run in parallel on
+//! worker threads, each under its own compute budget; a bad line (or even
+//! an internal failure, or an exhausted budget) yields its error line in
+//! place and the batch goes on.
 
+use crate::budget::{self, Budget};
 use crate::error::{Error, ErrorKind};
 use serde_json::{Map, Value, json};
-use std::io::{BufRead, Write};
+use std::collections::BTreeMap;
+use std::io::{BufRead, ErrorKind as IoErrorKind, Write};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Condvar, Mutex, mpsc};
 
-/// Lines processed together (in parallel) before their answers are written.
-pub const CHUNK: usize = 2048;
-
-fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
-    obj.get(name)
-        .ok_or_else(|| Error::new(ErrorKind::MissingField, format!("missing field \"{name}\"")))
+/// Runs one operation given as a JSON object (`op` and its arguments)
+/// within a compute budget: the same JSON as the CLI's `--json`.  When the
+/// budget runs out, `tangent` and `natural` answer `undecided` with the
+/// limit in `reason`, `roots` and `resultant` give an error of kind
+/// `budget`.
+pub fn run_op_within(obj: &Map<String, Value>, budget: &Budget) -> Result<Value, Error> {
+    let request = crate::request::Request::from_json(obj)?;
+    Ok(request.execute(budget)?.to_json())
 }
 
-fn str_field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, Error> {
-    field(obj, name)?.as_str().ok_or_else(|| {
-        Error::new(
-            ErrorKind::BadField,
-            format!("field \"{name}\" must be a string"),
-        )
-    })
-}
-
-/// Runs one operation given as a JSON object (`op` and its arguments) and
-/// returns the same JSON as the CLI's `--json`.
+/// [`run_op_within`] under the default budget ([`Budget::default`]).
 pub fn run_op(obj: &Map<String, Value>) -> Result<Value, Error> {
-    let op = str_field(obj, "op")?;
-    match op {
-        "roots" => {
-            let r = crate::ops::roots(str_field(obj, "poly")?)?;
-            Ok(crate::report::roots_json(&r))
-        }
-        "resultant" => {
-            let r = crate::ops::resultant(
-                str_field(obj, "f")?,
-                str_field(obj, "g")?,
-                str_field(obj, "var")?,
-            )?;
-            Ok(crate::report::resultant_json(&r))
-        }
-        "tangent" => {
-            let r = crate::tangent::decide_str(
-                str_field(obj, "ellipsoid")?,
-                str_field(obj, "surface")?,
-            )?;
-            Ok(crate::report::tangent_json(&r))
-        }
-        "natural" => {
-            let q = |name: &str| -> Result<crate::natural::Natural, Error> {
-                let v = field(obj, name)?;
-                match v {
-                    Value::String(s) => crate::natural::parse_natural(s),
-                    other => crate::natural::types::from_json(other),
-                }
-                .map_err(|e| e.context(&format!("in \"{name}\"")))
-            };
-            let r = crate::natural::classify(&q("a")?, &q("b")?)?;
-            Ok(crate::report::natural_json(&r))
-        }
-        other => Err(Error::new(
-            ErrorKind::UnknownOp,
-            format!("unknown op \"{other}\" (expected tangent, natural, roots or resultant)"),
-        )),
-    }
+    run_op_within(obj, &Budget::default())
 }
 
-/// Answers one input line (never panics: an internal failure becomes an
-/// error line).
+/// Answers one input line of the batch protocol under the default budget
+/// ([`Budget::default`]; see [`answer_line_within`]): exactly one answer
+/// object `{"id", "ok": true, "result"}` or `{"id", "ok": false, "error":
+/// {"kind", "message"}}`, never a panic.
+///
+/// ```
+/// let v = quadsect::batch::answer_line(r#"{"id":1,"op":"roots","poly":"x^2-2"}"#);
+/// assert_eq!(v["result"]["distinct_real"], 2);
+/// let bad = quadsect::batch::answer_line("oops");
+/// assert_eq!((bad["ok"].as_bool(), bad["error"]["kind"].as_str()), (Some(false), Some("json")));
+/// ```
 pub fn answer_line(line: &str) -> Value {
+    answer_line_within(line, &Budget::default())
+}
+
+/// Answers one input line within a compute budget (see [`run_op_within`]):
+/// exactly one answer object, never a panic.
+///
+/// ```
+/// use quadsect::budget::Budget;
+/// use std::time::Duration;
+/// let none = Budget::unlimited().with_time_limit(Some(Duration::ZERO));
+/// let v = quadsect::batch::answer_line_within(r#"{"id":7,"op":"roots","poly":"x^3000-3x^1001+1"}"#, &none);
+/// assert_eq!(v["error"]["kind"], "budget");
+/// assert_eq!(v["id"], 7);
+/// ```
+pub fn answer_line_within(line: &str, budget: &Budget) -> Value {
     let parsed: Result<Value, _> = serde_json::from_str(line);
     let (id, result) = match parsed {
         Err(e) => (
@@ -85,8 +70,15 @@ pub fn answer_line(line: &str) -> Value {
         ),
         Ok(Value::Object(obj)) => {
             let id = obj.get("id").cloned().unwrap_or(Value::Null);
-            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_op(&obj)))
-                .unwrap_or_else(|p| Err(Error::internal(panic_message(&p))));
+            // `run_op_within` catches an exhausted budget itself; a payload
+            // reaching this point is a panic (an internal failure)
+            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                run_op_within(&obj, budget)
+            }))
+            .unwrap_or_else(|p| match p.downcast::<budget::Exhausted>() {
+                Ok(e) => Err(Error::from(*e)),
+                Err(p) => Err(Error::internal(panic_message(&p))),
+            });
             (id, r)
         }
         Ok(_) => (
@@ -116,65 +108,432 @@ pub fn panic_message(p: &Box<dyn std::any::Any + Send>) -> String {
     }
 }
 
+/// How [`run_batch_with`] runs.
+#[derive(Clone, Debug)]
+pub struct BatchOptions {
+    /// Worker threads (at least 1).
+    pub threads: usize,
+    /// Most lines read but not yet written: a slow line delays the lines
+    /// after it by at most this many (at least 1).
+    pub lookahead: usize,
+    /// The compute budget of each line.
+    pub budget: Budget,
+    /// Show progress on stderr (lines done, lines/s).
+    pub progress: bool,
+    /// The input's size in bytes when known (a regular file): the progress
+    /// display then shows a bar and the time left.
+    pub input_bytes: Option<u64>,
+}
+
+impl Default for BatchOptions {
+    /// All cores, a look-ahead of [`DEFAULT_LOOKAHEAD`] lines per thread,
+    /// the default budget per line, no progress display.
+    fn default() -> Self {
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+        BatchOptions {
+            threads,
+            lookahead: DEFAULT_LOOKAHEAD * threads,
+            budget: Budget::default(),
+            progress: false,
+            input_bytes: None,
+        }
+    }
+}
+
+/// Look-ahead per worker thread (lines) of [`BatchOptions::default`].
+pub const DEFAULT_LOOKAHEAD: usize = 64;
+
+/// What a batch run did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BatchSummary {
+    /// Answer lines written.
+    pub lines: usize,
+    /// The output was closed early (a broken pipe, as `quadsect batch F |
+    /// head -1` does): the run stopped there.
+    pub output_closed: bool,
+}
+
 /// Reads JSON lines from `input` and writes one answer line per input line
-/// to `out`, in order, processing chunks in parallel.  `progress` shows a
-/// spinner with the count of lines on stderr.  Returns the number of lines.
+/// to `out`, in order, in parallel on all cores, each line under the
+/// default budget.  `progress` shows progress on stderr.  Returns the
+/// number of lines (see [`run_batch_with`]).
 pub fn run_batch(
-    input: impl BufRead,
-    mut out: impl Write,
+    input: impl BufRead + Send + 'static,
+    out: impl Write,
     progress: bool,
 ) -> std::io::Result<usize> {
-    use rayon::prelude::*;
-    let bar = if progress {
-        let b = indicatif::ProgressBar::new_spinner();
-        b.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} {pos} lines  {per_sec}  {elapsed}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
-        );
-        Some(b)
-    } else {
-        None
+    let opts = BatchOptions {
+        progress,
+        ..BatchOptions::default()
     };
-    let mut input = input;
-    let mut total = 0;
+    run_batch_with(input, out, &opts).map(|s| s.lines)
+}
+
+/// A line read, waiting for its answer: its index, text and size in bytes.
+type Job = (usize, String, u64);
+
+/// The lines read but not yet written, shared by the reader (who waits
+/// while there are `lookahead` of them) and the writer.
+struct Window {
+    state: Mutex<WindowState>,
+    changed: Condvar,
+}
+
+struct WindowState {
+    read: usize,
+    written: usize,
+    stop: bool,
+}
+
+impl Window {
+    /// Blocks until one more line may be read; `false` when the run stops.
+    fn admit(&self, lookahead: usize) -> bool {
+        let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
+        while !st.stop && st.read - st.written >= lookahead {
+            st = self.changed.wait(st).unwrap_or_else(|e| e.into_inner());
+        }
+        if st.stop {
+            return false;
+        }
+        st.read += 1;
+        true
+    }
+
+    fn set_written(&self, n: usize) {
+        let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
+        st.written = n;
+        self.changed.notify_all();
+    }
+
+    fn stop(&self) {
+        let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
+        st.stop = true;
+        self.changed.notify_all();
+    }
+}
+
+/// Stops the reader and cancels the running lines when the run ends.
+struct StopOnDrop {
+    window: Arc<Window>,
+    cancel: Arc<AtomicBool>,
+}
+
+impl Drop for StopOnDrop {
+    fn drop(&mut self) {
+        self.cancel.store(true, Ordering::Relaxed);
+        self.window.stop();
+    }
+}
+
+/// Reads the lines of `input` lazily (one more only when the look-ahead
+/// allows it) and queues them; returns the first read error.
+fn read_lines(
+    mut input: impl BufRead,
+    jobs: mpsc::Sender<Job>,
+    window: &Window,
+    lookahead: usize,
+) -> std::io::Result<()> {
     let mut buf = Vec::new();
+    let mut i = 0;
     loop {
-        let mut chunk = Vec::with_capacity(CHUNK);
-        while chunk.len() < CHUNK {
-            buf.clear();
-            if input.read_until(b'\n', &mut buf)? == 0 {
-                break;
-            }
-            if buf.last() == Some(&b'\n') {
+        if !window.admit(lookahead) {
+            return Ok(());
+        }
+        buf.clear();
+        let n = input.read_until(b'\n', &mut buf)?;
+        if n == 0 {
+            return Ok(());
+        }
+        if buf.last() == Some(&b'\n') {
+            buf.pop();
+            if buf.last() == Some(&b'\r') {
                 buf.pop();
-                if buf.last() == Some(&b'\r') {
-                    buf.pop();
+            }
+        }
+        // invalid UTF-8 becomes U+FFFD and then a JSON error line: never lost
+        let line = String::from_utf8_lossy(&buf).into_owned();
+        if jobs.send((i, line, n as u64)).is_err() {
+            return Ok(());
+        }
+        i += 1;
+    }
+}
+
+/// Without the `cli` feature there is no progress display.
+#[cfg(not(feature = "cli"))]
+struct NoBar;
+
+#[cfg(not(feature = "cli"))]
+impl NoBar {
+    fn set_message(&self, _: String) {}
+    fn set_position(&self, _: u64) {}
+    fn finish_and_clear(self) {}
+}
+
+#[cfg(not(feature = "cli"))]
+fn progress_bar(_: &BatchOptions) -> Option<NoBar> {
+    None
+}
+
+/// The progress display on stderr: lines done and lines/s, with a bar and
+/// the time left when the input size is known.
+#[cfg(feature = "cli")]
+fn progress_bar(opts: &BatchOptions) -> Option<indicatif::ProgressBar> {
+    if !opts.progress {
+        return None;
+    }
+    let (bar, template) = match opts.input_bytes {
+        Some(total) => (
+            indicatif::ProgressBar::new(total),
+            "{bar:30} {percent:>3}%  {msg}  {elapsed} (eta {eta})",
+        ),
+        None => (
+            indicatif::ProgressBar::new_spinner(),
+            "{spinner} {msg}  {elapsed}",
+        ),
+    };
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(template)
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
+    );
+    // redrawn on a timer: updates between two draws are not lost, and the
+    // display moves while a slow line holds the others back
+    bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    Some(bar)
+}
+
+/// Reads JSON lines from `input` and writes one answer line per input line
+/// to `out`, in input order, streaming:
+///
+/// * each answer is written and flushed as soon as it and every earlier
+///   line are done;
+/// * the lines are answered by `opts.threads` workers, each under its own
+///   `opts.budget`; at most `opts.lookahead` lines are read ahead of the
+///   last one written, so a slow line delays only the lines after it, and
+///   only up to the look-ahead;
+/// * the input is read lazily: a client that waits for the answer to line
+///   i before it sends line i+1 gets it;
+/// * a bad line yields its error line in place (nothing is lost);
+/// * a closed output (broken pipe) ends the run quietly:
+///   [`BatchSummary::output_closed`], not an error.
+///
+/// The reader and the workers are detached threads (so that a reader
+/// blocked on an open but silent input cannot keep the run alive after the
+/// output closed); they end on their own once the run is over.
+pub fn run_batch_with(
+    input: impl BufRead + Send + 'static,
+    mut out: impl Write,
+    opts: &BatchOptions,
+) -> std::io::Result<BatchSummary> {
+    let threads = opts.threads.max(1);
+    let lookahead = opts.lookahead.max(1);
+    let cancel = Arc::new(AtomicBool::new(false));
+    let budget = opts.budget.clone().with_cancel_flag(cancel.clone());
+    let window = Arc::new(Window {
+        state: Mutex::new(WindowState {
+            read: 0,
+            written: 0,
+            stop: false,
+        }),
+        changed: Condvar::new(),
+    });
+    // however the run ends, the reader stops and the lines still running
+    // are cancelled
+    let _stop = StopOnDrop {
+        window: window.clone(),
+        cancel: cancel.clone(),
+    };
+    let (job_tx, job_rx) = mpsc::channel::<Job>();
+    let (ans_tx, ans_rx) = mpsc::channel::<Job>();
+    let reader = {
+        let window = window.clone();
+        std::thread::spawn(move || read_lines(input, job_tx, &window, lookahead))
+    };
+    let job_rx = Arc::new(Mutex::new(job_rx));
+    for _ in 0..threads {
+        let (jobs, answers, budget) = (job_rx.clone(), ans_tx.clone(), budget.clone());
+        std::thread::spawn(move || {
+            loop {
+                let job = jobs.lock().unwrap_or_else(|e| e.into_inner()).recv();
+                let Ok((i, line, bytes)) = job else { break };
+                let answer = answer_line_within(&line, &budget).to_string();
+                if answers.send((i, answer, bytes)).is_err() {
+                    break;
                 }
             }
-            // invalid UTF-8 becomes U+FFFD and then a JSON error line: never lost
-            chunk.push(String::from_utf8_lossy(&buf).into_owned());
+        });
+    }
+    drop(ans_tx);
+    let bar = progress_bar(opts);
+    let started = std::time::Instant::now();
+    let mut pending: BTreeMap<usize, (String, u64)> = BTreeMap::new();
+    let (mut written, mut bytes_done) = (0usize, 0u64);
+    let mut closed = false;
+    // the workers hang up when the reader is done and every line answered
+    'run: while let Ok((i, answer, bytes)) = ans_rx.recv() {
+        pending.insert(i, (answer, bytes));
+        loop {
+            while let Some((answer, bytes)) = pending.remove(&written) {
+                if let Err(e) = writeln!(out, "{answer}") {
+                    if e.kind() == IoErrorKind::BrokenPipe {
+                        closed = true;
+                        break 'run;
+                    }
+                    return Err(e);
+                }
+                written += 1;
+                bytes_done += bytes;
+            }
+            // more answers already done: write them before flushing
+            match ans_rx.try_recv() {
+                Ok((i, answer, bytes)) => {
+                    pending.insert(i, (answer, bytes));
+                }
+                Err(_) => break,
+            }
         }
-        if chunk.is_empty() {
-            break;
+        if let Err(e) = out.flush() {
+            if e.kind() == IoErrorKind::BrokenPipe {
+                closed = true;
+                break;
+            }
+            return Err(e);
         }
-        let answers: Vec<String> = chunk
-            .par_iter()
-            .map(|l| answer_line(l).to_string())
-            .collect();
-        for a in &answers {
-            writeln!(out, "{a}")?;
-        }
-        out.flush()?;
-        total += chunk.len();
+        window.set_written(written);
         if let Some(b) = &bar {
-            b.set_position(total as u64);
-        }
-        if chunk.len() < CHUNK {
-            break;
+            let rate = written as f64 / started.elapsed().as_secs_f64().max(1e-9);
+            b.set_message(format!("{written} lines  {rate:.1} lines/s"));
+            if opts.input_bytes.is_some() {
+                b.set_position(bytes_done);
+            }
         }
     }
     if let Some(b) = bar {
         b.finish_and_clear();
     }
-    Ok(total)
+    if closed {
+        return Ok(BatchSummary {
+            lines: written,
+            output_closed: true,
+        });
+    }
+    // every line read has been answered: the reader has finished
+    match reader.join() {
+        Ok(r) => r?,
+        Err(_) => return Err(std::io::Error::other("the batch reader failed")),
+    }
+    Ok(BatchSummary {
+        lines: written,
+        output_closed: false,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Cursor;
+
+    fn lines(n: usize) -> String {
+        (0..n)
+            .map(|i| {
+                format!(
+                    "{{\"id\":{i},\"op\":\"roots\",\"poly\":\"x^2-{}\"}}\n",
+                    i + 2
+                )
+            })
+            .collect()
+    }
+
+    fn opts(threads: usize, lookahead: usize) -> BatchOptions {
+        BatchOptions {
+            threads,
+            lookahead,
+            budget: Budget::default(),
+            progress: false,
+            input_bytes: None,
+        }
+    }
+
+    #[test]
+    fn answers_in_input_order_whatever_the_threads_and_look_ahead() {
+        for (threads, lookahead) in [(1, 1), (2, 1), (3, 2), (4, 64)] {
+            let mut out = Vec::new();
+            let input = Cursor::new(lines(50).into_bytes());
+            let s = run_batch_with(input, &mut out, &opts(threads, lookahead)).unwrap();
+            assert_eq!(
+                s,
+                BatchSummary {
+                    lines: 50,
+                    output_closed: false
+                }
+            );
+            let text = String::from_utf8(out).unwrap();
+            for (i, l) in text.lines().enumerate() {
+                let v: Value = serde_json::from_str(l).unwrap();
+                assert_eq!(v["id"], i, "threads {threads}, look-ahead {lookahead}");
+                assert_eq!(v["result"]["distinct_real"], 2);
+            }
+        }
+    }
+
+    /// A writer whose reader goes away after `keep` lines.
+    struct ClosesAfter {
+        keep: usize,
+        lines: usize,
+    }
+
+    impl Write for ClosesAfter {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            if self.lines >= self.keep {
+                return Err(std::io::Error::from(IoErrorKind::BrokenPipe));
+            }
+            self.lines += buf.iter().filter(|&&b| b == b'\n').count();
+            Ok(buf.len())
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_closed_output_ends_the_run_quietly() {
+        let input = Cursor::new(lines(500).into_bytes());
+        let out = ClosesAfter { keep: 3, lines: 0 };
+        let s = run_batch_with(input, out, &opts(2, 8)).unwrap();
+        assert!(s.output_closed);
+        assert!(s.lines >= 3 && s.lines < 500, "{s:?}");
+    }
+
+    /// Input that fails after its first bytes.
+    struct FailsAfter(Cursor<Vec<u8>>);
+
+    impl std::io::Read for FailsAfter {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            match self.0.read(buf)? {
+                0 => Err(std::io::Error::other("disk on fire")),
+                n => Ok(n),
+            }
+        }
+    }
+
+    #[test]
+    fn a_read_error_comes_after_the_answers_to_the_lines_before_it() {
+        let input = std::io::BufReader::new(FailsAfter(Cursor::new(lines(5).into_bytes())));
+        let mut out = Vec::new();
+        let e = run_batch_with(input, &mut out, &opts(2, 4)).unwrap_err();
+        assert!(e.to_string().contains("disk on fire"));
+        assert_eq!(String::from_utf8(out).unwrap().lines().count(), 5);
+    }
+
+    #[test]
+    fn an_exhausted_budget_is_not_an_internal_error() {
+        let none = Budget::unlimited().with_time_limit(Some(std::time::Duration::ZERO));
+        let v = answer_line_within(
+            r#"{"id":1,"op":"natural","a":"cylinder point=0,0,0 axis=1,0,0 radius2=1","b":"cone vertex=0,1,0 axis=0,1,0 tan2=1"}"#,
+            &none,
+        );
+        assert_eq!(v["ok"], true);
+        assert_eq!(v["result"]["class"], "undecided");
+        assert_eq!(v["result"]["reason"]["limit"], "time");
+    }
 }

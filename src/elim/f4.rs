@@ -315,9 +315,6 @@ pub struct ModGb {
     pub fp: Fp,
     /// The reduced basis: monic, leading monomials increasing.
     pub polys: Vec<ModPoly>,
-    /// The sugar degree of each element: `w^(sugar − deg)·f^h` lies in the
-    /// ideal of the homogenised generators.
-    pub sugar: Vec<u32>,
 }
 
 struct F4 {
@@ -480,7 +477,6 @@ pub fn groebner_mod(fp: &Fp, input: &[ModPoly]) -> Option<ModGb> {
                 return Some(ModGb {
                     fp: *fp,
                     polys: vec![vec![(0, 1)]],
-                    sugar: vec![s],
                 });
             }
             f4.store.push(p);
@@ -495,11 +491,7 @@ pub fn groebner_mod(fp: &Fp, input: &[ModPoly]) -> Option<ModGb> {
     let targets: Vec<ModPoly> = act.iter().map(|&g| f4.store[g].clone()).collect();
     let basis: Vec<ModPoly> = targets.clone();
     let polys = reduce_all(fp, &basis, &targets, true);
-    Some(ModGb {
-        fp: *fp,
-        polys,
-        sugar: act.iter().map(|&g| f4.sugar[g]).collect(),
-    })
+    Some(ModGb { fp: *fp, polys })
 }
 
 /// Full reduction of each target by monic `basis` polynomials (one matrix
@@ -681,7 +673,7 @@ pub fn zmpoly_mod(fp: &Fp, p: &crate::poly::ZMPoly) -> ModPoly {
     let mut out: ModPoly = p
         .terms()
         .iter()
-        .map(|(e, c)| (mono(e[X], e[Y], e[Z]), fp.from_big(c) as u32))
+        .map(|(e, c)| (mono(e[X], e[Y], e[Z]), fp.reduce_big(c) as u32))
         .collect();
     normalize(&mut out);
     out

@@ -13,10 +13,9 @@ pub mod f4;
 pub mod groebner;
 pub mod quotient;
 
-use crate::number::Q;
 use crate::number::modular::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};
 use crate::poly::mpoly::{MPoly, NVARS, QMPoly, ZMPoly};
-use crate::poly::zpoly::{reduce_mod, rem_mod_in_place};
+use crate::poly::zpoly::rem_mod_in_place;
 use crate::poly::{Ring, UPoly, ZPoly};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -24,6 +23,7 @@ use num_traits::{One, Signed, Zero};
 /// The Sylvester matrix of `f` (degree m) and `g` (degree n): `n` shifted
 /// rows of the coefficients of `f` followed by `m` rows of `g`, highest
 /// powers first.  Its determinant is `Res(f, g)`.
+#[cfg(test)]
 pub fn sylvester_matrix<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> Vec<Vec<R>> {
     let m = f.degree().unwrap_or(0);
     let n = g.degree().unwrap_or(0);
@@ -43,13 +43,7 @@ pub fn sylvester_matrix<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> Vec<Vec<R>> {
 
 /// Determinant by Bareiss' fraction-free elimination (exact divisions by the
 /// previous pivot only), with row pivoting.  `O(n³)` ring operations.
-///
-/// ```
-/// use quadsect::elim::bareiss_determinant;
-/// use num_bigint::BigInt;
-/// let m = vec![vec![BigInt::from(2), BigInt::from(1)], vec![BigInt::from(7), BigInt::from(4)]];
-/// assert_eq!(bareiss_determinant(m), BigInt::from(1));
-/// ```
+#[cfg(test)]
 pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
     let n = m.len();
     if n == 0 {
@@ -67,7 +61,10 @@ pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
                 None => return R::rzero(),
             }
         }
+        // a row costs about n − k products of entries of the pivot's size
+        let row_work = m[k][k].bit_size().saturating_mul((n - k) as u64);
         for i in k + 1..n {
+            crate::budget::check_for(row_work);
             for j in k + 1..n {
                 let t = m[i][j].rmul(&m[k][k]).rsub(&m[i][k].rmul(&m[k][j]));
                 m[i][j] = t
@@ -84,6 +81,7 @@ pub fn bareiss_determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
 
 /// `Res(f, g)` as the Bareiss determinant of the Sylvester matrix.
 /// The resultant with a zero polynomial is 0.
+#[cfg(test)]
 pub fn resultant_sylvester<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
     if f.is_zero() || g.is_zero() {
         return R::rzero();
@@ -93,16 +91,6 @@ pub fn resultant_sylvester<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
 
 /// `Res(f, g)` by the subresultant PRS (Cohen, Algorithm 3.3.7, without the
 /// content step so that it runs over any ring with exact division).
-///
-/// ```
-/// use quadsect::elim::resultant_subresultant;
-/// use quadsect::poly::ZPoly;
-/// use num_bigint::BigInt;
-/// // Res(x^2 - 1, x - 2) = f(2) = 3
-/// let f = ZPoly::from_i64s(&[-1, 0, 1]);
-/// let g = ZPoly::from_i64s(&[-2, 1]);
-/// assert_eq!(resultant_subresultant(&f, &g), BigInt::from(3));
-/// ```
 pub fn resultant_subresultant<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
     if f.is_zero() || g.is_zero() {
         return R::rzero();
@@ -123,6 +111,7 @@ pub fn resultant_subresultant<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
     let mut gg = R::rone();
     let mut h = R::rone();
     loop {
+        crate::budget::check_now();
         let da = a.degree().unwrap_or(0);
         let db = b.degree().unwrap_or(0);
         let delta = da - db;
@@ -177,11 +166,13 @@ pub fn resultant_modular(f: &ZPoly, g: &ZPoly) -> BigInt {
         return num_traits::pow(g.lc(), m);
     }
     let bound = (n as u64) * log2_norm2_ceil(f.coeffs()) + (m as u64) * log2_norm2_ceil(g.coeffs());
+    crate::budget::check_size("a resultant", 1, bound);
     let fd: Vec<Digits> = f.coeffs().iter().map(Digits::new).collect();
     let gd: Vec<Digits> = g.coeffs().iter().map(Digits::new).collect();
     let mut crt = Crt::new();
     let mut i = 0;
     while crt.modulus_bits() <= bound + 1 {
+        crate::budget::check();
         let md = Modulus::new(nth_prime(i));
         i += 1;
         let a: Vec<u64> = fd.iter().map(|d| d.reduce(&md)).collect();
@@ -221,6 +212,7 @@ pub fn resultant_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, m: &Modulus) -> u64 {
 
 /// The resultant of two univariate integer polynomials, by the fastest
 /// exact route (multi-modular).
+#[cfg(test)]
 pub fn resultant_z(f: &ZPoly, g: &ZPoly) -> BigInt {
     resultant_modular(f, g)
 }
@@ -232,15 +224,6 @@ pub fn resultant_z(f: &ZPoly, g: &ZPoly) -> BigInt {
 /// G)`); univariate inputs use the multi-modular algorithm, bivariate ones
 /// evaluation/interpolation modulo primes, and others the subresultant PRS
 /// over Z[other variables].
-///
-/// ```
-/// use quadsect::elim::resultant_mpoly;
-/// use quadsect::poly::parse_poly;
-/// use quadsect::poly::mpoly::X;
-/// let f = parse_poly("x^2 + y^2 - 1").unwrap();
-/// let g = parse_poly("x - y").unwrap();
-/// assert_eq!(resultant_mpoly(&f, &g, X).to_string_canonical(), "2*y^2 - 1");
-/// ```
 pub fn resultant_mpoly(f: &QMPoly, g: &QMPoly, v: usize) -> QMPoly {
     if f.is_zero() || g.is_zero() {
         return MPoly::zero();
@@ -272,11 +255,38 @@ pub fn resultant_zmpoly(f: &ZMPoly, g: &ZMPoly, v: usize) -> ZMPoly {
         }
         1 => resultant_bivariate_modular(f, g, v, others[0]),
         _ => {
+            let (terms, bits) = resultant_size(f, g, v, &others);
+            crate::budget::check_size("a resultant", terms, bits);
             let fu = f.to_upoly(v);
             let gu = g.to_upoly(v);
             resultant_subresultant(&fu, &gu)
         }
     }
+}
+
+/// Upper bounds on the size of `Res_v(f, g)` from the Sylvester matrix
+/// (`m = deg_v f`, `n = deg_v g`): its degree in each other variable `w` is
+/// at most `n·deg_w f + m·deg_w g` (so at most the product of those plus
+/// one terms), its total degree at most `deg f · deg g`, and its coefficients have at most
+/// `n·bits(‖f‖₁) + m·bits(‖g‖₁)` bits (Hadamard's bound with row sums).
+fn resultant_size(f: &ZMPoly, g: &ZMPoly, v: usize, others: &[usize]) -> (usize, u64) {
+    let m = f.degree_in(v).unwrap_or(0) as usize;
+    let n = g.degree_in(v).unwrap_or(0) as usize;
+    let dense = others.iter().fold(1usize, |acc, &w| {
+        let dw =
+            n * f.degree_in(w).unwrap_or(0) as usize + m * g.degree_in(w).unwrap_or(0) as usize;
+        acc.saturating_mul(dw + 1)
+    });
+    // total degree at most deg f · deg g: at most C(D + k, k) monomials
+    let d = (f.total_degree().unwrap_or(0) as usize)
+        .saturating_mul(g.total_degree().unwrap_or(0) as usize);
+    let by_degree = (1..=others.len()).fold(1usize, |acc, i| acc.saturating_mul(d + i) / i);
+    let terms = dense.min(by_degree);
+    let l1 = |p: &ZMPoly| -> u64 {
+        let top = p.terms().iter().map(|(_, c)| c.bits()).max().unwrap_or(0);
+        top + crate::poly::upoly::log2_ceil(p.len())
+    };
+    (terms, (n as u64) * l1(f) + (m as u64) * l1(g))
 }
 
 /// `Res_v(f, g)` for `f, g ∈ Z[v, w]` by evaluation at `w = 0, 1, 2, …`
@@ -295,6 +305,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         s.bits()
     };
     let bound = (n as u64) * l1(f) + (m as u64) * l1(g);
+    crate::budget::check_size("a resultant", dw + 1, bound);
     // coefficient grids: fc[i][j] = coefficient of v^i w^j
     let grid = |p: &ZMPoly, dv: usize| -> Vec<Vec<(usize, Digits)>> {
         let mut rows: Vec<Vec<(usize, Digits)>> = vec![Vec::new(); dv + 1];
@@ -311,6 +322,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         if crts[0].modulus_bits() > bound + 1 {
             break;
         }
+        crate::budget::check_now();
         let md = Modulus::new(nth_prime(pi));
         pi += 1;
         let red = |rows: &Vec<Vec<(usize, Digits)>>| -> Vec<Vec<u64>> {
@@ -341,6 +353,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         let mut ys = Vec::with_capacity(dw + 1);
         let mut k = 0u64;
         while xs.len() <= dw {
+            crate::budget::check();
             let x = md.to_mont(k);
             let kk = k;
             k += 1;
@@ -362,6 +375,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         }
         let coeffs = interpolate_mod(&xs, &ks, &ys, &md);
         for (i, c) in coeffs.iter().enumerate() {
+            crate::budget::check();
             crts[i].push(&md, *c);
         }
     }
@@ -395,6 +409,7 @@ fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> 
     // divided differences
     let mut dd = ys.to_vec();
     for j in 1..n {
+        crate::budget::check();
         for i in (j..n).rev() {
             let num = m.sub(dd[i], dd[i - 1]);
             let diff = (ks[i] - ks[i - j]) as usize;
@@ -404,6 +419,7 @@ fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> 
     // expand Newton form from the top
     let mut c = vec![0u64; n];
     for i in (0..n).rev() {
+        crate::budget::check();
         // c := c·(x - xs[i]) + dd[i]
         for k in (1..n).rev() {
             c[k] = m.sub(c[k - 1], m.mul(c[k], xs[i]));
@@ -412,20 +428,6 @@ fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> 
         // (the loop above computed c·x - c·xs[i] with the old c shifted)
     }
     c
-}
-
-/// Univariate resultant of rational polynomials given as multivariate
-/// constants (convenience for the CLI): returns the exact rational value.
-pub fn resultant_q_univariate(f: &UPoly<Q>, g: &UPoly<Q>) -> Q {
-    let v = 0;
-    let fm = MPoly::from_univariate(f, v);
-    let gm = MPoly::from_univariate(g, v);
-    resultant_mpoly(&fm, &gm, v).constant_term()
-}
-
-/// Reduction helper re-exported for the modular algorithms of other layers.
-pub fn reduce_zpoly_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
-    reduce_mod(p, m)
 }
 
 #[cfg(test)]
@@ -464,5 +466,45 @@ mod tests {
         let c = resultant_sylvester(&fz.to_upoly(X), &gz.to_upoly(X));
         assert_eq!(a, b);
         assert_eq!(a, c);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_bareiss_determinant() {
+        use crate::elim::bareiss_determinant;
+        use num_bigint::BigInt;
+        let m = vec![
+            vec![BigInt::from(2), BigInt::from(1)],
+            vec![BigInt::from(7), BigInt::from(4)],
+        ];
+        assert_eq!(bareiss_determinant(m), BigInt::from(1));
+    }
+
+    #[test]
+    fn doc_resultant_subresultant() {
+        use crate::elim::resultant_subresultant;
+        use crate::poly::ZPoly;
+        use num_bigint::BigInt;
+        // Res(x^2 - 1, x - 2) = f(2) = 3
+        let f = ZPoly::from_i64s(&[-1, 0, 1]);
+        let g = ZPoly::from_i64s(&[-2, 1]);
+        assert_eq!(resultant_subresultant(&f, &g), BigInt::from(3));
+    }
+
+    #[test]
+    fn doc_resultant_mpoly() {
+        use crate::elim::resultant_mpoly;
+        use crate::poly::mpoly::X;
+        use crate::poly::parse_poly;
+        let f = parse_poly("x^2 + y^2 - 1").unwrap();
+        let g = parse_poly("x - y").unwrap();
+        assert_eq!(
+            resultant_mpoly(&f, &g, X).to_string_canonical(),
+            "2*y^2 - 1"
+        );
     }
 }

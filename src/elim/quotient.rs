@@ -15,7 +15,7 @@
 
 use super::groebner::{GPoly, GV, GroebnerBasis, Mono};
 use crate::number::Q;
-use crate::poly::QPoly;
+use crate::poly::{QPoly, Ring};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -38,6 +38,19 @@ impl Quotient {
     /// The quotient of a zero-dimensional Gröbner basis (`None` otherwise).
     pub fn new(gb: GroebnerBasis) -> Option<Quotient> {
         let basis = gb.standard_monomials()?;
+        // the multiplication matrices by x, y, z have dim² entries each
+        let n = basis.len();
+        let bits = gb
+            .polys
+            .iter()
+            .flat_map(|g| g.terms.iter().map(|(_, c)| c.bits()))
+            .max()
+            .unwrap_or(0);
+        crate::budget::check_size(
+            "the multiplication matrices of the quotient algebra",
+            n.saturating_mul(n).saturating_mul(3),
+            bits,
+        );
         let index = basis.iter().enumerate().map(|(i, m)| (*m, i)).collect();
         Some(Quotient { gb, basis, index })
     }
@@ -66,6 +79,7 @@ impl Quotient {
         self.basis
             .iter()
             .map(|b| {
+                crate::budget::check();
                 let terms: Vec<(Mono, BigInt)> = f
                     .terms
                     .iter()
@@ -111,6 +125,7 @@ pub fn mat_vec(m: &QMatrix, v: &[Q]) -> Vec<Q> {
         if v[j].is_zero() {
             continue;
         }
+        crate::budget::check_for(v[j].bit_size().saturating_mul(out.len() as u64));
         for (o, mij) in out.iter_mut().zip(m[j].iter()) {
             if !mij.is_zero() {
                 *o += mij * &v[j];
@@ -130,6 +145,7 @@ pub fn mat_comb(terms: &[(Q, &QMatrix)]) -> QMatrix {
             continue;
         }
         for j in 0..n {
+            crate::budget::check_for(k.bit_size().saturating_mul(rows as u64));
             for i in 0..rows {
                 if !m[j][i].is_zero() {
                     out[j][i] += &m[j][i] * k;
@@ -176,12 +192,23 @@ fn gauss_jordan_ff(
         pivots.push(r);
         let prow = a[r].clone();
         let p = &prow[c];
+        // a row costs about (width − c) products of numbers of this size:
+        // with large numbers the clock is read for each row, with huge
+        // ones for each entry
+        let (row_work, huge) = (
+            p.bits().saturating_mul((width - c) as u64),
+            p.bits() > crate::budget::LARGE_BITS,
+        );
         for (i, row) in a.iter_mut().enumerate() {
             if i == r {
                 continue;
             }
+            crate::budget::check_for(row_work);
             let f = std::mem::take(&mut row[c]);
             for j in c + 1..width {
+                if huge {
+                    crate::budget::check_now();
+                }
                 let mut t = p * &row[j];
                 if !f.is_zero() && !prow[j].is_zero() {
                     t -= &f * &prow[j];
@@ -223,6 +250,27 @@ pub fn krylov_shape(
 ) -> Result<KrylovShape, crate::error::Error> {
     let n = v.len();
     let l = crate::number::denom_lcm(m.iter().flatten());
+    // the Krylov vectors w_0 … w_n have entries of up to about
+    // n·bits(M) + bits(V) bits (M = L·m integral); the elimination works on
+    // minors of them.  Estimated before anything is built.
+    let lbits = l.bits();
+    let mbits = m
+        .iter()
+        .flatten()
+        .filter(|c| !c.is_zero())
+        .map(|c| (c.numer().bits() + lbits + 1).saturating_sub(c.denom().bits()))
+        .max()
+        .unwrap_or(0);
+    let vbits = v
+        .iter()
+        .map(|c| c.numer().bits() + c.denom().bits())
+        .max()
+        .unwrap_or(0);
+    crate::budget::check_size(
+        "the Krylov matrix of a minimal polynomial",
+        n.saturating_mul(n + 1 + rhs.len()),
+        (n as u64).saturating_mul(mbits + crate::poly::upoly::log2_ceil(n)) + vbits,
+    );
     let mi: Vec<Vec<BigInt>> = m
         .iter()
         .map(|col| col.iter().map(|c| c.numer() * (&l / c.denom())).collect())
@@ -238,6 +286,7 @@ pub fn krylov_shape(
             if cj.is_zero() {
                 continue;
             }
+            crate::budget::check_for(cj.bits().saturating_mul(n as u64));
             for (o, mij) in out.iter_mut().zip(mi[j].iter()) {
                 if !mij.is_zero() {
                     *o += mij * cj;

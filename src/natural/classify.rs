@@ -1,4 +1,4 @@
-//! The complete classification of two natural quadrics (SPEC §4): class,
+//! The complete classification of two natural quadrics (contract §4): class,
 //! counts and exact components, with the part-1 deciders where they apply.
 //!
 //! Order of decisions:
@@ -16,7 +16,7 @@
 use super::coaxial::{center_on_axis, same_axis, sphere_on_axis, sphere_sphere};
 use super::deciders::{AxesRelation, AxialPlane, pencil_has_planar_member, relation, thm8};
 use super::planar::{parallelogram_heights, planar_components, skeletal_lines};
-use super::result::{Class, Component, NaturalReport, PlanarDeciders, class_of};
+use super::result::{Class, Component, Counts, NaturalReport, PlanarDeciders, class_of};
 use super::tangency::{Section7, section7};
 use super::topology::classify_nonplanar;
 use super::types::{Natural, parse_natural};
@@ -49,17 +49,31 @@ fn conic_string(f: &super::deciders::Conic2) -> String {
     p.to_string_canonical().replace('x', "s").replace('y', "t")
 }
 
-/// Classifies two natural quadrics.
+/// Classifies two natural quadrics under the default budget.
+///
+/// Cost: planar cases (coplanar axes, spheres, a common axis) take exact
+/// operations on a few small polynomials (tens to hundreds of µs); skew
+/// axes and other non-planar cases compute the topology of the
+/// intersection curve (a zero-dimensional system of degree ≤ 16 and a
+/// sweep), ≈ 0.5–3 ms on small integers.
 ///
 /// ```
-/// use quadsect::natural::{classify, parse_natural, result::Class};
-/// let a = parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
-/// let b = parse_natural("cylinder point=0,0,0 axis=0,1,0 radius2=1").unwrap();
+/// use quadsect::Natural;
+/// use quadsect::natural::{classify, Class};
+/// let a: Natural = "cone vertex=0,0,0 axis=1,0,0 tan2=1".parse().unwrap();
+/// let b: Natural = "cone vertex=0,0,0 axis=0,1,0 tan2=3".parse().unwrap();
 /// let r = classify(&a, &b).unwrap();
-/// assert_eq!(r.class, Class::Conics);
-/// assert_eq!(r.conics(), 2);
+/// assert_eq!(r.class(), Class::Lines);
+/// assert_eq!(r.thm8(), Some(true)); // a common vertex
 /// ```
 pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
+    super::fast::classify_with(a, b, &super::fast::ClassifyOptions::default())
+}
+
+/// The complete route: class, counts and exact components (no budget of
+/// its own; [`super::fast::classify_with`] runs it under one).
+pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
+    crate::budget::check_now();
     let axes = relation(a, b);
     let t8 = axes.as_ref().and_then(|r| thm8(a, b, r));
     let mut notes = Vec::new();
@@ -77,6 +91,10 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
             section7: None,
             method: "proportional equations",
             notes,
+            counts: Counts::same_surface(),
+            components_computed: true,
+            route: None,
+            exhausted: None,
         });
     }
     let (components, method): (Vec<Component>, &'static str) = match (a, b) {
@@ -155,6 +173,7 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
         }
     };
     let class = class_of(&components);
+    let counts = Counts::of_components(&components);
     Ok(NaturalReport {
         a: a.clone(),
         b: b.clone(),
@@ -166,6 +185,10 @@ pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
         section7: sec7,
         method,
         notes,
+        counts,
+        components_computed: true,
+        route: None,
+        exhausted: None,
     })
 }
 
@@ -187,9 +210,19 @@ pub fn section7_agrees(s7: &Section7, comps: &[Component]) -> bool {
     }
 }
 
-/// Parses two quadrics (JSON or short syntax) and classifies them.
+/// Parses two quadrics (short syntax, or JSON with the feature `serde`)
+/// and classifies them.
+///
+/// ```
+/// use quadsect::natural::{classify_str, Class};
+/// let r = classify_str(
+///     "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+///     "cylinder point=0,0,0 axis=0,1,0 radius2=1").unwrap();
+/// assert_eq!(r.class(), Class::Conics);
+/// assert_eq!((r.conics(), r.lines(), r.points()), (2, 0, 0));
+/// ```
 pub fn classify_str(a: &str, b: &str) -> Result<NaturalReport, Error> {
-    let qa = parse_natural(a).map_err(|e| e.context("in A"))?;
-    let qb = parse_natural(b).map_err(|e| e.context("in B"))?;
+    let qa = parse_natural(a).map_err(|e| e.context("in the first quadric"))?;
+    let qb = parse_natural(b).map_err(|e| e.context("in the second quadric"))?;
     classify(&qa, &qb)
 }

@@ -7,7 +7,7 @@
 use super::exact::{EPoint, Exact, epoint};
 use super::result::{Component, ConicKind, Plane, PointKind};
 use super::types::{Cone, Natural, Sphere, axial_param};
-use super::vec3::{V3, add, cross, dot, lift, norm2, orthogonal, scale, sub};
+use crate::geom::vec3::{V3, add, cross, lift, norm2, orthogonal, scale, sub};
 use crate::number::{Q, QSqrt, qi};
 use num_traits::{One, Signed, Zero};
 
@@ -196,9 +196,4 @@ pub fn center_on_axis(s: &Sphere, q: &Natural) -> bool {
         Some((p, a)) => cross(&sub(&s.center, &p), &a).iter().all(|x| x.is_zero()),
         None => false,
     }
-}
-
-/// `(x − p)·a` helper kept for symmetry with [`axial_param`].
-pub fn axial_dot(x: &V3, p: &V3, a: &V3) -> Q {
-    dot(&sub(x, p), a)
 }

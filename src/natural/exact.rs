@@ -9,16 +9,19 @@
 //! must vanish at the number, decided by a gcd), so nothing is guessed.
 
 use crate::elim::resultant_mpoly;
-use crate::number::{Q, QSqrt, fmt_q};
+use crate::number::{Q, QSqrt};
 use crate::poly::mpoly::{MPoly, T, U};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
-use serde_json::{Value, json};
 
-/// An exact real number of the output.
+/// An exact real number of the output: an element `a + b√d` of a
+/// quadratic field (rationals included), or a real algebraic number of
+/// higher degree.  `Display` prints it exactly (`1/2 + 3/4·√(5)`) or, for
+/// higher degree, as its defining polynomial and interval.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Exact {
     /// In Q(√d) (rationals included).
     Quad(QSqrt),
@@ -30,19 +33,6 @@ impl Exact {
     /// A rational.
     pub fn rational(q: Q) -> Exact {
         Exact::Quad(QSqrt::rational(q))
-    }
-
-    /// JSON: a string for a rational, `{"a","b","d","approx"}` for a
-    /// quadratic irrational, `{"poly","interval","approx"}` otherwise.
-    pub fn json(&self) -> Value {
-        match self {
-            Exact::Quad(x) if x.is_rational() => json!(fmt_q(&x.a)),
-            Exact::Quad(x) => {
-                let x = x.normalized();
-                json!({"a": fmt_q(&x.a), "b": fmt_q(&x.b), "d": fmt_q(&x.d), "approx": x.approx(20)})
-            }
-            Exact::Alg(a) => crate::report::alg_json(a),
-        }
     }
 
     /// Decimal approximation.
@@ -62,10 +52,10 @@ impl Exact {
     }
 
     /// Exact sign.
-    pub fn sign(&self) -> i32 {
+    pub fn signum(&self) -> i32 {
         match self {
-            Exact::Quad(x) => x.sign(),
-            Exact::Alg(a) => a.sign(),
+            Exact::Quad(x) => x.signum(),
+            Exact::Alg(a) => a.signum(),
         }
     }
 
@@ -93,7 +83,7 @@ impl Exact {
     pub fn to_alg(&self) -> RealAlg {
         match self {
             Exact::Alg(a) => a.clone(),
-            Exact::Quad(x) if x.is_rational() => RealAlg::Rational(x.a.clone()),
+            Exact::Quad(x) if x.is_rational() => RealAlg::rational(x.a.clone()),
             Exact::Quad(x) => {
                 // root of (u − a)² − b² d
                 let p = QPoly::new(vec![
@@ -115,6 +105,22 @@ impl Exact {
 
 /// A point with exact coordinates.
 pub type EPoint = [Exact; 3];
+
+impl std::fmt::Display for Exact {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Exact::Quad(x) => write!(f, "{}", x.normalized()),
+            Exact::Alg(a) => write!(f, "{a}"),
+        }
+    }
+}
+
+impl PartialEq for Exact {
+    /// Exact equality.
+    fn eq(&self, other: &Exact) -> bool {
+        self.equals(other)
+    }
+}
 
 /// Lifts a Q(√d) vector.
 pub fn epoint(v: &[QSqrt; 3]) -> EPoint {
@@ -148,11 +154,6 @@ pub fn normalize_direction(d: &EPoint) -> EPoint {
         g = -g;
     }
     std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)))
-}
-
-/// JSON of a point.
-pub fn epoint_json(p: &EPoint) -> Value {
-    Value::Array(p.iter().map(|c| c.json()).collect())
 }
 
 /// Text of a point.
@@ -290,6 +291,7 @@ fn lll(mut b: Vec<Vec<BigInt>>) -> Vec<Vec<BigInt>> {
     let mut k = 1;
     let mut guard = 0;
     while k < n && guard < 100_000 {
+        crate::budget::check();
         guard += 1;
         let (mut mu, bn) = gs(&b);
         for j in (0..k).rev() {

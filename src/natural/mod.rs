@@ -1,17 +1,35 @@
 //! Natural quadrics (paper 000, Shene & Johnstone): how two spheres,
-//! circular cylinders or right cones meet, decided and computed exactly.
+//! circular cylinders or right circular cones meet, decided and computed
+//! exactly.
+//!
+//! [`classify`] returns the class of the intersection (two conics, a conic
+//! and a double line, lines, isolated points, empty, or a genuine space
+//! curve), the counts of real affine conics, lines and points, and each
+//! component with exact data (planes, centres, squared semi-axes in Q(√d)
+//! or as real algebraic numbers).  For coplanar axes the three conic
+//! deciders of part 1 — Theorem 8.1/8.2's closed forms, Lemma 8.1's
+//! projection-conic discriminant and the pencil rank — are reported and
+//! checked against each other; [`thm8`] is the closed form alone.
 
-pub mod classify;
-pub mod coaxial;
-pub mod deciders;
-pub mod exact;
-pub mod examples;
-pub mod planar;
-pub mod result;
-pub mod tangency;
-pub mod topology;
-pub mod types;
-pub mod vec3;
+pub(crate) mod classify;
+pub(crate) mod coaxial;
+pub(crate) mod deciders;
+pub(crate) mod exact;
+pub(crate) mod fast;
+pub(crate) mod planar;
+pub(crate) mod prepared;
+pub(crate) mod result;
+pub(crate) mod tangency;
+pub(crate) mod topology;
+pub(crate) mod types;
 
+pub use crate::geom::cayley_rotation;
 pub use classify::{classify, classify_str};
-pub use types::{Cone, Cylinder, Natural, Sphere, cayley_rotation, parse_natural};
+pub use deciders::{AxesRelation, conic_intersection_thm8 as thm8};
+pub use exact::{EPoint, Exact};
+pub use fast::{ClassifyOptions, classify_counts, classify_with};
+pub use prepared::Prepared;
+pub use result::{Class, Component, ConicKind, NaturalReport, PlanarDeciders, Plane, PointKind};
+pub use tangency::Section7;
+pub(crate) use types::parse_natural;
+pub use types::{Cone, Cylinder, Natural, Sphere};

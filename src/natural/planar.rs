@@ -13,13 +13,13 @@
 //! factors of F through V, and the sign of the squared height along them
 //! decides 2, 1 or 0 real lines), parallel axes (Theorem 8.2: one line of F
 //! at infinity), and complex-conjugate factors, whose real common point
-//! carries isolated tangency points (SPEC §6).  Lines of F may need one
+//! carries isolated tangency points (docs/errata.md).  Lines of F may need one
 //! square root: everything is computed in Q(√d).
 
 use super::deciders::{AxialPlane, Conic2};
 use super::exact::{EPoint, Exact, epoint, epoint_equal, nested};
 use super::result::{Component, ConicKind, Plane, PointKind};
-use super::vec3::{V3, norm2};
+use crate::geom::vec3::{V3, cross, dot, norm2};
 use crate::number::{Q, QSqrt, qi};
 use num_traits::{One, Signed, Zero};
 
@@ -52,7 +52,7 @@ fn qs(q: &Q) -> QSqrt {
 }
 
 fn rank_of(f: &Conic2) -> usize {
-    if !crate::tangent::ellipsoid::det3(f).is_zero() {
+    if !crate::geom::det3(f).is_zero() {
         return 3;
     }
     let any_minor = (0..3).any(|i| {
@@ -99,7 +99,7 @@ pub fn factor_conic(f: &Conic2) -> Factored {
             let mut k = [Q::zero(), Q::zero(), Q::zero()];
             'outer: for i in 0..3 {
                 for j in i + 1..3 {
-                    let c = crate::natural::vec3::cross(rows[i], rows[j]);
+                    let c = cross(rows[i], rows[j]);
                     if c.iter().any(|x| !x.is_zero()) {
                         k = c;
                         break 'outer;
@@ -202,18 +202,6 @@ pub fn vec3(h: &AxialPlane, u: &QSqrt, v: &QSqrt) -> [QSqrt; 3] {
     std::array::from_fn(|i| u.scale(&h.e1[i]).add(&v.scale(&h.e2[i])))
 }
 
-fn cross_sv(a: &[QSqrt; 3], b: &V3) -> [QSqrt; 3] {
-    [
-        a[1].scale(&b[2]).sub(&a[2].scale(&b[1])),
-        a[2].scale(&b[0]).sub(&a[0].scale(&b[2])),
-        a[0].scale(&b[1]).sub(&a[1].scale(&b[0])),
-    ]
-}
-
-fn dot_ss(a: &[QSqrt; 3], b: &[QSqrt; 3]) -> QSqrt {
-    a[0].mul(&b[0]).add(&a[1].mul(&b[1])).add(&a[2].mul(&b[2]))
-}
-
 fn rat_vec(v: &V3) -> EPoint {
     std::array::from_fn(|i| Exact::rational(v[i].clone()))
 }
@@ -257,10 +245,10 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
     let w3 = vec3(h, &w[0], &w[1]);
     let n = h.n.clone();
     let n2 = norm2(&n);
-    let lam = dot_ss(&w3, &w3);
-    let normal = cross_sv(&w3, &n);
+    let lam = dot(&w3, &w3);
+    let normal = cross(&w3, &n);
     let plane = Plane {
-        offset: Exact::Quad(dot_ss(&normal, &base)),
+        offset: Exact::Quad(dot(&normal, &base)),
         normal: epoint(&normal),
     };
     let at =
@@ -277,7 +265,7 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
         });
         return out;
     }
-    if a.sign() != 0 {
+    if a.signum() != 0 {
         let sigma0 = b
             .neg()
             .div(&a.scale(&two))
@@ -288,8 +276,8 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
                 .unwrap_or_else(|| qs(&Q::zero())),
         );
         let center = at(&sigma0);
-        if a.sign() < 0 {
-            match k.sign() {
+        if a.signum() < 0 {
+            match k.signum() {
                 1 => {
                     // ellipse: along L  k·λ/(−A), along the normal  k
                     let along = k.mul(&lam).div(&a.neg()).unwrap_or_else(|| qs(&Q::zero()));
@@ -315,9 +303,9 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
                 }),
                 _ => {}
             }
-        } else if k.sign() != 0 {
+        } else if k.signum() != 0 {
             let along = k.mul(&lam).div(&a).unwrap_or_else(|| qs(&Q::zero())).neg();
-            let (axes2, dirs) = if k.sign() > 0 {
+            let (axes2, dirs) = if k.signum() > 0 {
                 (
                     vec![Exact::Quad(k.clone()), Exact::Quad(along.neg())],
                     vec![rat_vec(&n), epoint(&w3)],
@@ -349,14 +337,14 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
                 });
             }
         }
-    } else if b.sign() != 0 {
+    } else if b.signum() != 0 {
         // parabola z² = Bσ + C: vertex at σ = −C/B, focal length² B²/(16 λ)
         let sv = c.neg().div(&b).unwrap_or_else(|| qs(&Q::zero()));
         let f2 = b
             .mul(&b)
             .div(&lam.scale(&qi(16)))
             .unwrap_or_else(|| qs(&Q::zero()));
-        let dir: [QSqrt; 3] = if b.sign() > 0 {
+        let dir: [QSqrt; 3] = if b.signum() > 0 {
             w3.clone()
         } else {
             std::array::from_fn(|i| w3[i].neg())
@@ -373,7 +361,7 @@ pub fn section(h: &AxialPlane, heights: &Conic2, l: &HLine) -> Vec<Component> {
         });
     } else {
         // z² = C: two parallel lines, one double line, or nothing
-        match c.sign() {
+        match c.signum() {
             1 => {
                 let mu2 = c.scale(&(Q::one() / &n2));
                 for s in [1, -1] {
@@ -575,9 +563,9 @@ mod tests {
                 } => {
                     assert_eq!(*kind, ConicKind::Ellipse);
                     // planes x = ±y: normal (±1, 1, 0) up to scale, through 0
-                    assert!(plane.offset.sign() == 0);
+                    assert!(plane.offset.signum() == 0);
                     let n = &plane.normal;
-                    assert_eq!(n[2].sign(), 0);
+                    assert_eq!(n[2].signum(), 0);
                     assert!(
                         n[0].equals(&n[1])
                             || n[0].equals(&Exact::Quad(match &n[1] {

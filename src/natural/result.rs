@@ -1,5 +1,5 @@
 //! The answer of the natural-quadric classification: class, counts and
-//! exact components (SPEC §4 output).
+//! exact components (contract §4 output).
 
 use super::deciders::AxesRelation;
 use super::exact::{EPoint, Exact};
@@ -7,7 +7,8 @@ use super::types::Natural;
 use crate::number::Q;
 
 /// The type of a conic.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum ConicKind {
     /// A circle.
     Circle,
@@ -20,7 +21,7 @@ pub enum ConicKind {
 }
 
 impl ConicKind {
-    /// SPEC spelling.
+    /// The output spelling.
     pub fn as_str(&self) -> &'static str {
         match self {
             ConicKind::Circle => "circle",
@@ -33,6 +34,7 @@ impl ConicKind {
 
 /// A plane `normal · P = offset`.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Plane {
     /// Normal vector.
     pub normal: EPoint,
@@ -41,7 +43,8 @@ pub struct Plane {
 }
 
 /// Kind of an isolated point.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum PointKind {
     /// The surfaces touch there (an isolated tangency point).
     Tangency,
@@ -62,8 +65,10 @@ impl PointKind {
     }
 }
 
-/// A real component of the intersection.
+/// A real component of the intersection, with exact data (coordinates in
+/// Q(√d) or real algebraic numbers, see [`Exact`]).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Component {
     /// A conic.
     Conic {
@@ -109,8 +114,12 @@ pub enum Component {
     },
 }
 
-/// The class of the intersection (SPEC §4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The class of the intersection, decided in this order: `same-surface`
+/// (proportional equations); `curve` (a one-dimensional real part not made
+/// of lines and conics); `conics`; `conic-and-line`; `lines`; `points`
+/// (isolated real points only); `empty`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Class {
     /// Proportional equations.
     SameSurface,
@@ -126,10 +135,20 @@ pub enum Class {
     Empty,
     /// A space curve that is not made of lines and conics.
     Curve,
+    /// Not decided: the compute budget ran out (see
+    /// [`NaturalReport::exhausted`]).
+    Undecided,
+}
+
+impl std::fmt::Display for Class {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
 }
 
 impl Class {
-    /// SPEC spelling.
+    /// `same-surface`, `conics`, `conic-and-line`, `lines`, `points`,
+    /// `empty` or `curve`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Class::SameSurface => "same-surface",
@@ -139,12 +158,14 @@ impl Class {
             Class::Points => "points",
             Class::Empty => "empty",
             Class::Curve => "curve",
+            Class::Undecided => "undecided",
         }
     }
 }
 
 /// The decider values of part 1 (when the axes are coplanar and distinct).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct PlanarDeciders {
     /// Theorem 8.1 / 8.2.
     pub thm8: Option<bool>,
@@ -170,57 +191,75 @@ pub struct PlanarDeciders {
     pub parallelogram: Option<Vec<Exact>>,
 }
 
-/// The full answer of `quadsect natural`.
+/// The answer of the classification of two natural quadrics: the class,
+/// the counts of real affine conics, lines and points, the components with
+/// exact data, the relation of the axes, Theorem 8.1/8.2's value and the
+/// part-1 deciders.  `Display` prints the human summary; with the feature
+/// `serde` it serializes to the JSON of `quadsect natural --json`.
 #[derive(Clone, Debug)]
 pub struct NaturalReport {
-    /// First quadric.
-    pub a: Natural,
-    /// Second quadric.
-    pub b: Natural,
-    /// The class.
-    pub class: Class,
-    /// Relation of the axes (`None` when a sphere is involved).
-    pub axes: Option<AxesRelation>,
-    /// Theorem 8.1/8.2 value where it applies.
-    pub thm8: Option<bool>,
-    /// Real components.
-    pub components: Vec<Component>,
-    /// Part-1 deciders (coplanar distinct axes).
-    pub deciders: Option<PlanarDeciders>,
-    /// The paper's §7 decider (skew axes).
-    pub section7: Option<super::tangency::Section7>,
-    /// How the class was decided.
-    pub method: &'static str,
-    /// Remarks.
-    pub notes: Vec<String>,
+    pub(crate) a: Natural,
+    pub(crate) b: Natural,
+    pub(crate) class: Class,
+    pub(crate) axes: Option<AxesRelation>,
+    pub(crate) thm8: Option<bool>,
+    pub(crate) components: Vec<Component>,
+    pub(crate) deciders: Option<PlanarDeciders>,
+    pub(crate) section7: Option<super::tangency::Section7>,
+    pub(crate) method: &'static str,
+    pub(crate) notes: Vec<String>,
+    /// Class and counts (the same whichever route answered).
+    pub(crate) counts: Counts,
+    /// False when only the class and counts were asked for (fast route).
+    pub(crate) components_computed: bool,
+    /// For a request without components: which route answered.
+    pub(crate) route: Option<Route>,
+    /// The compute budget that ran out (class `Undecided`).
+    pub(crate) exhausted: Option<crate::budget::Exhausted>,
 }
 
-impl NaturalReport {
-    /// Number of real affine conics.
-    pub fn conics(&self) -> usize {
-        self.components
-            .iter()
-            .filter(|c| matches!(c, Component::Conic { .. }))
-            .count()
+/// Which route answered a request for the class and counts only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Route {
+    /// The fast exact route (no components computed).
+    Fast,
+    /// The complete route, because the fast one could not decide (the
+    /// reason).
+    Complete(&'static str),
+}
+
+/// Class and counts of an intersection (contract §4 conventions: real
+/// affine components, a double line once, acnodes of a curve in `points`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Counts {
+    /// The class.
+    pub class: Class,
+    /// Real affine conics.
+    pub conics: usize,
+    /// Real affine lines.
+    pub lines: usize,
+    /// Isolated real points (acnodes of a curve included).
+    pub points: usize,
+}
+
+impl Counts {
+    pub(crate) fn new(class: Class, conics: usize, lines: usize, points: usize) -> Counts {
+        Counts {
+            class,
+            conics,
+            lines,
+            points,
+        }
     }
 
-    /// Number of real affine lines (a double line counts once).
-    pub fn lines(&self) -> usize {
-        self.components
-            .iter()
-            .filter(|c| matches!(c, Component::Line { .. }))
-            .count()
+    pub(crate) fn same_surface() -> Counts {
+        Counts::new(Class::SameSurface, 0, 0, 0)
     }
 
-    /// Number of isolated real points (acnodes of a curve included).
-    pub fn points(&self) -> usize {
-        let own = self
-            .components
-            .iter()
-            .filter(|c| matches!(c, Component::Point { .. }))
-            .count();
-        let acn: usize = self
-            .components
+    /// The counts of a list of components.
+    pub(crate) fn of_components(components: &[Component]) -> Counts {
+        let count = |f: fn(&Component) -> bool| components.iter().filter(|c| f(c)).count();
+        let acnodes: usize = components
             .iter()
             .map(|c| match c {
                 Component::Curve { singular, .. } => {
@@ -229,12 +268,129 @@ impl NaturalReport {
                 _ => 0,
             })
             .sum();
-        own + acn
+        Counts::new(
+            class_of(components),
+            count(|c| matches!(c, Component::Conic { .. })),
+            count(|c| matches!(c, Component::Line { .. })),
+            count(|c| matches!(c, Component::Point { .. })) + acnodes,
+        )
     }
 }
 
-/// The class implied by a list of components (SPEC §4 order).
-pub fn class_of(components: &[Component]) -> Class {
+impl NaturalReport {
+    /// The first quadric.
+    pub fn a(&self) -> &Natural {
+        &self.a
+    }
+
+    /// The second quadric.
+    pub fn b(&self) -> &Natural {
+        &self.b
+    }
+
+    /// The class.
+    pub fn class(&self) -> Class {
+        self.class
+    }
+
+    /// How the axes lie (`None` when a sphere is involved).
+    pub fn axes(&self) -> Option<&AxesRelation> {
+        self.axes.as_ref()
+    }
+
+    /// Theorem 8.1/8.2's closed-form value where it applies (coplanar or
+    /// parallel distinct axes), else `None`.  Not the class: see the crate
+    /// docs.
+    pub fn thm8(&self) -> Option<bool> {
+        self.thm8
+    }
+
+    /// The real affine components.
+    pub fn components(&self) -> &[Component] {
+        &self.components
+    }
+
+    /// The part-1 deciders (coplanar distinct axes).
+    pub fn deciders(&self) -> Option<&PlanarDeciders> {
+        self.deciders.as_ref()
+    }
+
+    /// The paper's §7 tangency decider (skew axes).
+    pub fn section7(&self) -> Option<&super::tangency::Section7> {
+        self.section7.as_ref()
+    }
+
+    /// How the class was decided, in words.
+    pub fn method_description(&self) -> &str {
+        self.method
+    }
+
+    /// Remarks.
+    pub fn notes(&self) -> &[String] {
+        &self.notes
+    }
+
+    /// Number of real affine conics (0 when the class is `Undecided`).
+    pub fn conics(&self) -> usize {
+        self.counts.conics
+    }
+
+    /// Number of real affine lines (a double line counts once).
+    pub fn lines(&self) -> usize {
+        self.counts.lines
+    }
+
+    /// Number of isolated real points (acnodes of a curve included).
+    pub fn points(&self) -> usize {
+        self.counts.points
+    }
+
+    /// True when the fast route answered (no components computed).
+    pub(crate) fn answered_fast(&self) -> bool {
+        self.route == Some(Route::Fast)
+    }
+
+    /// The compute budget that ran out (then the class is
+    /// [`Class::Undecided`] and nothing else is known).
+    pub fn exhausted(&self) -> Option<&crate::budget::Exhausted> {
+        self.exhausted.as_ref()
+    }
+
+    /// The answer when the compute budget ran out: class `Undecided`, no
+    /// components, and the limit that was hit.
+    pub(crate) fn budget_exhausted(
+        a: &Natural,
+        b: &Natural,
+        e: crate::budget::Exhausted,
+    ) -> NaturalReport {
+        NaturalReport {
+            a: a.clone(),
+            b: b.clone(),
+            class: Class::Undecided,
+            axes: None,
+            thm8: None,
+            components: vec![],
+            deciders: None,
+            section7: None,
+            method: "none (the compute budget ran out)",
+            notes: vec![],
+            counts: Counts::new(Class::Undecided, 0, 0, 0),
+            components_computed: false,
+            route: None,
+            exhausted: Some(e),
+        }
+    }
+
+    /// False when only the class and counts were asked for
+    /// ([`super::ClassifyOptions::without_components`]): then
+    /// [`NaturalReport::components`] and the deciders are empty.
+    pub fn has_components(&self) -> bool {
+        self.components_computed
+    }
+}
+
+/// The class implied by a list of components (contract §4 order).
+pub(crate) fn class_of(components: &[Component]) -> Class {
     let has = |f: fn(&Component) -> bool| components.iter().any(f);
     if has(|c| matches!(c, Component::Curve { .. })) {
         Class::Curve

@@ -3,7 +3,7 @@
 //! (cone–cylinder), with the bounding planes computed exactly in Q(√d) and
 //! every distance compared through its square.
 //!
-//! With the errata of SPEC §6: the cones are double cones, so the contact
+//! With the errata of docs/errata.md: the cones are double cones, so the contact
 //! point `t_i ∩ V2S_i` is taken on the whole line `V2S_i`; when `t_i ∥ V2S_i`
 //! the contact is at infinity and the surfaces are disjoint.
 //!
@@ -13,12 +13,13 @@
 
 use super::deciders::{AxesRelation, axes_relation};
 use super::types::{Cone, Cylinder, Natural, dist2_point_line};
-use super::vec3::{V3, cross, dot, norm2, orthogonal, sub};
+use crate::geom::vec3::{V3, cross, dot, norm2, orthogonal, sub};
 use crate::number::{Q, QSqrt, qi};
 use num_traits::{One, Signed, Zero};
 
-/// The verdict of §7.
+/// The verdict of the paper's §7 tangency decider (skew axes).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Section7 {
     /// The hypotheses do not hold (or the pair is not covered): the reason.
     NotApplicable(String),
@@ -67,7 +68,7 @@ pub fn cylinder_cylinder(c1: &Cylinder, c2: &Cylinder) -> Section7 {
     let dn = dot(&w, &n);
     let d2 = &dn * &dn / norm2(&n);
     // sign of d − (r1 + r2)  =  sign of (d² − r1² − r2²) − 2√(r1² r2²)
-    let s = QSqrt::new(&d2 - &c1.r2 - &c2.r2, qi(-2), &c1.r2 * &c2.r2).sign();
+    let s = QSqrt::new(&d2 - &c1.r2 - &c2.r2, qi(-2), &c1.r2 * &c2.r2).signum();
     let far = (&d2 - &c1.r2 - &c2.r2).is_positive();
     match (far, s) {
         (true, 1) => Section7::Disjoint,
@@ -175,7 +176,7 @@ fn bounding_test(cone: &Cone, u: &V3, axis2: &V3, s: &V3, rho2: &Q, v2: Option<&
     // for a cylinder ℓ2 is parallel to v, so its side is that of S − V.
     let sig: Vec<i32> = normals
         .iter()
-        .map(|n| sdot(n, &sv(&cone.axis)).sign())
+        .map(|n| sdot(n, &sv(&cone.axis)).signum())
         .collect();
     let probe = match v2 {
         Some(_) => axis2.clone(),
@@ -183,7 +184,7 @@ fn bounding_test(cone: &Cone, u: &V3, axis2: &V3, s: &V3, rho2: &Q, v2: Option<&
     };
     let dir: Vec<i32> = normals
         .iter()
-        .map(|n| sdot(n, &sv(&probe)).sign())
+        .map(|n| sdot(n, &sv(&probe)).signum())
         .collect();
     if dir.contains(&0) {
         return Section7::NotApplicable("the axis lies in a bounding plane".into());
@@ -204,7 +205,7 @@ fn bounding_test(cone: &Cone, u: &V3, axis2: &V3, s: &V3, rho2: &Q, v2: Option<&
         })
         .collect();
     let rho = QSqrt::rational(rho2.clone());
-    let cmp: Vec<i32> = d2.iter().map(|x| x.sub(&rho).sign()).collect();
+    let cmp: Vec<i32> = d2.iter().map(|x| x.sub(&rho).signum()).collect();
     if cmp.iter().any(|&c| c < 0) {
         return Section7::Transversal; // case 5
     }

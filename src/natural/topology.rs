@@ -5,14 +5,14 @@
 //! * **Singular points** of X: the zeros of `Q1 = Q2 = 0, ∇Q1 × ∇Q2 = 0`
 //!   (a cone vertex on the other surface is one of them); every isolated
 //!   real point of X is singular.
-//! * **Common rulings** (skew axes, SPEC §6): a ruling of one surface lying
+//! * **Common rulings** (skew axes, docs/errata.md): a ruling of one surface lying
 //!   on the other, found by exact linear algebra and one square root; X is
 //!   then that line plus a twisted cubic (class `curve`, `lines` 1).
 //! * **One-dimensional real part** (sweep): for a generic linear form ℓ, the
 //!   values of ℓ at the critical points of ℓ on X (zeros of `Q1, Q2,
 //!   det(∇Q1, ∇Q2, ∇ℓ)`) cut the line into gaps; the real part of X has
 //!   dimension one iff a level `ℓ = q` in some gap meets X in a real point.
-//! * **Isolated or crossing** (tangent cone, SPEC §6 on §5.1): at a singular
+//! * **Isolated or crossing** (tangent cone, docs/errata.md on §5.1): at a singular
 //!   point with `∇Q1 = λ∇Q2 ≠ 0`, the quadratic form `Hess Q1 − λ Hess Q2`
 //!   on the common tangent plane is definite (isolated point) or indefinite
 //!   (two real branches cross); at a cone vertex V on the other surface, the
@@ -21,8 +21,10 @@
 use super::exact::{EPoint, Exact, epoint, exact_of};
 use super::result::{Component, PointKind};
 use super::types::Natural;
-use super::vec3::{V3, cross, dot, lift, norm2, orthogonal};
 use crate::error::Error;
+use crate::geom::QuadricForm;
+use crate::geom::eval_qsqrt;
+use crate::geom::vec3::{V3, cross, dot, lift, norm2, orthogonal};
 use crate::number::{Q, QSqrt, qi};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly};
@@ -30,26 +32,8 @@ use crate::roots::{
     GENERIC_FORMS, RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_at,
     values_with,
 };
-use crate::tangent::QuadricForm;
-use crate::tangent::witness::eval_qsqrt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
-
-fn grad(f: &QMPoly) -> [QMPoly; 3] {
-    [f.derivative(X), f.derivative(Y), f.derivative(Z)]
-}
-
-fn cross_p(a: &[QMPoly; 3], b: &[QMPoly; 3]) -> [QMPoly; 3] {
-    [
-        &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
-        &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
-        &(&a[0] * &b[1]) - &(&a[1] * &b[0]),
-    ]
-}
-
-fn dot_p(a: &[QMPoly; 3], b: &[QMPoly; 3]) -> QMPoly {
-    &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])
-}
 
 /// A real zero of a system, with exact coordinates.
 #[derive(Clone, Debug)]
@@ -102,7 +86,7 @@ fn sign_at_zero(rur: &Rur, i: usize, p: &QMPoly) -> i32 {
 
 /// The singular points of X, or `None` when X is singular along a curve.
 pub fn singular_points(f1: &QMPoly, f2: &QMPoly) -> Result<Option<Rur>, Error> {
-    let c = cross_p(&grad(f1), &grad(f2));
+    let c = cross(&crate::geom::gradient(f1), &crate::geom::gradient(f2));
     let mut gens = vec![f1.clone(), f2.clone()];
     gens.extend(c);
     solve_zero_dim(&gens, &[])
@@ -112,8 +96,8 @@ pub fn singular_points(f1: &QMPoly, f2: &QMPoly) -> Result<Option<Rur>, Error> {
 /// `Some(true)` isolated, `Some(false)` real branches pass through it,
 /// `None` when the tangent cone is degenerate.
 pub fn isolated_by_tangent_cone(f1: &QMPoly, f2: &QMPoly, rur: &Rur, i: usize) -> Option<bool> {
-    let g1 = grad(f1);
-    let g2 = grad(f2);
+    let g1 = crate::geom::gradient(f1);
+    let g2 = crate::geom::gradient(f2);
     let zero1 = g1.iter().all(|g| sign_at_zero(rur, i, g) == 0);
     let zero2 = g2.iter().all(|g| sign_at_zero(rur, i, g) == 0);
     let h1 = QuadricForm::from_poly(f1)?;
@@ -127,8 +111,8 @@ pub fn isolated_by_tangent_cone(f1: &QMPoly, f2: &QMPoly, rur: &Rur, i: usize) -
         (false, true) => (hess(&h2), g1.clone()),
         (false, false) => {
             // |g2|² H1 − (g1·g2) H2
-            let n2 = dot_p(&g2, &g2);
-            let l = dot_p(&g1, &g2);
+            let n2 = dot(&g2, &g2);
+            let l = dot(&g1, &g2);
             let a = hess(&h1);
             let b = hess(&h2);
             (
@@ -143,11 +127,11 @@ pub fn isolated_by_tangent_cone(f1: &QMPoly, f2: &QMPoly, rur: &Rur, i: usize) -
     for k in 0..3 {
         let mut e: [QMPoly; 3] = [MPoly::zero(), MPoly::zero(), MPoly::zero()];
         e[k] = MPoly::constant(Q::one());
-        let u1 = cross_p(&normal, &e);
+        let u1 = cross(&normal, &e);
         if u1.iter().all(|c| sign_at_zero(rur, i, c) == 0) {
             continue;
         }
-        let u2 = cross_p(&normal, &u1);
+        let u2 = cross(&normal, &u1);
         let form = |u: &[QMPoly; 3], v: &[QMPoly; 3]| -> QMPoly {
             let mut acc = MPoly::zero();
             for r in 0..3 {
@@ -335,13 +319,14 @@ fn common_binary_roots(p: &[Q; 3], q: &[Q; 3]) -> Vec<[QSqrt; 2]> {
 /// Does the real curve X have a one-dimensional part?  (ℓ-sweep; X must
 /// contain no line and no planar component.)
 pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
-    let g1 = grad(f1);
-    let g2 = grad(f2);
+    let g1 = crate::geom::gradient(f1);
+    let g2 = crate::geom::gradient(f2);
     for l in GENERIC_FORMS {
+        crate::budget::check_now();
         let lin: QMPoly = &(&MPoly::var(X).scale(&qi(l[0])) + &MPoly::var(Y).scale(&qi(l[1])))
             + &MPoly::var(Z).scale(&qi(l[2]));
         let gl: [QMPoly; 3] = std::array::from_fn(|k| MPoly::constant(qi(l[k])));
-        let det = dot_p(&cross_p(&g1, &g2), &gl);
+        let det = dot(&cross(&g1, &g2), &gl);
         let Some(rur) = solve_zero_dim(&[f1.clone(), f2.clone(), det], std::slice::from_ref(&lin))?
         else {
             continue;
@@ -381,6 +366,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
         }
         let mut decided = true;
         for q in &levels {
+            crate::budget::check_now();
             let plane = &lin - &MPoly::constant(q.clone());
             match solve_zero_dim(&[f1.clone(), f2.clone(), plane], &[])? {
                 Some(r) => {

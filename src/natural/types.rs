@@ -1,50 +1,69 @@
 //! Natural quadrics — spheres, circular cylinders, right circular (double)
 //! cones — with validated constructors, their rational implicit equations
 //! and 4×4 matrices, exact rigid motions, and the input syntaxes (JSON of
-//! SPEC §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
+//! contract §2 and the short human form `cone vertex=0,0,0 axis=1,0,0 tan2=1/3`).
 
-use super::vec3::{V3, add, cross, dot, norm2, scale, sub};
 use crate::error::{Error, ErrorKind};
-use crate::number::{Q, fmt_q, parse_rational, qi};
+#[cfg(test)]
+use crate::geom::vec3::scale;
+use crate::geom::vec3::{V3, add, cross, dot, norm2, sub};
+use crate::number::{NumberMode, Q, fmt_q, parse_rational_with};
 use crate::poly::QMPoly;
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use num_traits::{One, Signed, Zero};
-use serde_json::{Value, json};
+#[cfg(feature = "serde")]
+use serde_json::Value;
 
-/// A sphere `|P − O|² = r2`.
-#[derive(Clone, Debug, PartialEq)]
+/// A sphere `|P − O|² = r2` (equation `|P − O|² − r2`, negative inside).
+/// Built only by [`Sphere::new`], which checks `r2 > 0`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Sphere {
     /// Centre O.
-    pub center: V3,
+    pub(crate) center: V3,
     /// Squared radius, `> 0`.
-    pub r2: Q,
+    pub(crate) r2: Q,
 }
 
-/// A circular cylinder `|(P − Q) × a|² = r2·|a|²`.
-#[derive(Clone, Debug, PartialEq)]
+/// A circular cylinder `|(P − Q) × a|² = r2·|a|²` (negative inside).
+/// Built only by [`Cylinder::new`], which checks a non-zero axis and
+/// `r2 > 0`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Cylinder {
     /// A point Q of the axis.
-    pub point: V3,
+    pub(crate) point: V3,
     /// Axis direction (non-zero, any length).
-    pub axis: V3,
+    pub(crate) axis: V3,
     /// Squared radius, `> 0`.
-    pub r2: Q,
+    pub(crate) r2: Q,
 }
 
 /// A right circular double cone `|a|²|P − V|² = (1 + t2)((P − V)·a)²`,
-/// half-angle α with `tan²α = t2 > 0`.
-#[derive(Clone, Debug, PartialEq)]
+/// half-angle α with `tan²α = t2 > 0`.  Built only by [`Cone::new`], which
+/// checks a non-zero axis and `t2 > 0`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Cone {
     /// Vertex V.
-    pub vertex: V3,
+    pub(crate) vertex: V3,
     /// Axis direction (non-zero).
-    pub axis: V3,
+    pub(crate) axis: V3,
     /// `tan²α > 0`.
-    pub t2: Q,
+    pub(crate) t2: Q,
 }
 
-/// Any natural quadric.
-#[derive(Clone, Debug, PartialEq)]
+/// Any natural quadric.  Its parts can only be built by their checked
+/// constructors, so a `Natural` is always a valid surface.
+///
+/// ```
+/// use quadsect::{Natural, Cylinder, Rational, ErrorKind};
+/// let r = |n: i64| Rational::from_integer(n.into());
+/// let c = Cylinder::new([r(0), r(0), r(0)], [r(1), r(0), r(0)], r(1)).unwrap();
+/// let q = Natural::Cylinder(c);
+/// assert_eq!(q.to_string(), "cylinder point=0,0,0 axis=1,0,0 radius2=1");
+/// assert_eq!("cylinder point=0,0,0 axis=1,0,0 radius2=1".parse::<Natural>().unwrap(), q);
+/// let bad = Cylinder::new([r(0), r(0), r(0)], [r(0), r(0), r(0)], r(-1)).unwrap_err();
+/// assert_eq!(bad.kind(), ErrorKind::BadQuadric);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Natural {
     /// A sphere.
     Sphere(Sphere),
@@ -82,6 +101,16 @@ impl Sphere {
         positive("radius2", &r2)?;
         Ok(Sphere { center, r2 })
     }
+
+    /// The centre.
+    pub fn center(&self) -> &V3 {
+        &self.center
+    }
+
+    /// The squared radius.
+    pub fn radius2(&self) -> &Q {
+        &self.r2
+    }
 }
 
 impl Cylinder {
@@ -91,6 +120,21 @@ impl Cylinder {
         positive("radius2", &r2)?;
         Ok(Cylinder { point, axis, r2 })
     }
+
+    /// The point of the axis it was given with.
+    pub fn point(&self) -> &V3 {
+        &self.point
+    }
+
+    /// The axis direction (as given).
+    pub fn axis(&self) -> &V3 {
+        &self.axis
+    }
+
+    /// The squared radius.
+    pub fn radius2(&self) -> &Q {
+        &self.r2
+    }
 }
 
 impl Cone {
@@ -99,6 +143,21 @@ impl Cone {
         nonzero_axis(&axis)?;
         positive("tan2", &t2)?;
         Ok(Cone { vertex, axis, t2 })
+    }
+
+    /// The vertex.
+    pub fn vertex(&self) -> &V3 {
+        &self.vertex
+    }
+
+    /// The axis direction (as given).
+    pub fn axis(&self) -> &V3 {
+        &self.axis
+    }
+
+    /// `tan²α` of the half-angle α.
+    pub fn tan2(&self) -> &Q {
+        &self.t2
     }
 
     /// `sin²α = t2/(1 + t2)`.
@@ -172,14 +231,11 @@ impl Natural {
         }
     }
 
-    /// The implicit equation (negative inside), SPEC §2.
+    /// The implicit equation (negative inside), contract §2.
     pub fn equation(&self) -> QMPoly {
         let p: [QMPoly; 3] = [MPoly::var(X), MPoly::var(Y), MPoly::var(Z)];
         let diff = |c: &V3| -> [QMPoly; 3] {
             std::array::from_fn(|i| &p[i] - &MPoly::constant(c[i].clone()))
-        };
-        let dotp = |u: &[QMPoly; 3], v: &[QMPoly; 3]| -> QMPoly {
-            &(&(&u[0] * &v[0]) + &(&u[1] * &v[1])) + &(&u[2] * &v[2])
         };
         let lin = |u: &[QMPoly; 3], a: &V3| -> QMPoly {
             &(&u[0].scale(&a[0]) + &u[1].scale(&a[1])) + &u[2].scale(&a[2])
@@ -187,27 +243,27 @@ impl Natural {
         match self {
             Natural::Sphere(s) => {
                 let d = diff(&s.center);
-                &dotp(&d, &d) - &MPoly::constant(s.r2.clone())
+                &dot(&d, &d) - &MPoly::constant(s.r2.clone())
             }
             Natural::Cylinder(c) => {
                 let d = diff(&c.point);
                 let a2 = norm2(&c.axis);
                 let da = lin(&d, &c.axis);
                 // |d × a|² = |d|²|a|² − (d·a)²
-                &(&dotp(&d, &d).scale(&a2) - &(&da * &da)) - &MPoly::constant(&c.r2 * &a2)
+                &(&dot(&d, &d).scale(&a2) - &(&da * &da)) - &MPoly::constant(&c.r2 * &a2)
             }
             Natural::Cone(c) => {
                 let d = diff(&c.vertex);
                 let a2 = norm2(&c.axis);
                 let da = lin(&d, &c.axis);
-                &dotp(&d, &d).scale(&a2) - &(&da * &da).scale(&(Q::one() + &c.t2))
+                &dot(&d, &d).scale(&a2) - &(&da * &da).scale(&(Q::one() + &c.t2))
             }
         }
     }
 
     /// The symmetric 4×4 matrix `M` with `equation(P) = [P 1] M [P 1]ᵀ`.
     pub fn matrix(&self) -> [[Q; 4]; 4] {
-        let f = crate::tangent::QuadricForm::from_poly(&self.equation())
+        let f = crate::geom::QuadricForm::from_poly(&self.equation())
             .expect("natural quadric equations have degree 2");
         let mut m: [[Q; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| Q::zero()));
         for i in 0..3 {
@@ -221,8 +277,26 @@ impl Natural {
         m
     }
 
-    /// Applies the rigid motion `P ↦ R P + t` (R orthogonal).
-    pub fn moved(&self, r: &[[Q; 3]; 3], t: &V3) -> Natural {
+    /// Parses the short syntax (or, with the feature `serde`, the JSON
+    /// form) with the numbers read in `mode` (see [`crate::NumberMode`]).
+    pub fn parse_in(text: &str, mode: NumberMode) -> Result<Natural, Error> {
+        parse_natural_in(text, mode)
+    }
+
+    /// Applies the rigid motion `P ↦ R P + t`, checked: `R` must be an exact
+    /// rotation (`R Rᵀ = I`, `det R = 1`; e.g. a Cayley rotation).
+    pub fn moved_by(&self, r: &[[Q; 3]; 3], t: &V3) -> Result<Natural, Error> {
+        if !crate::geom::is_rotation(r) {
+            return Err(Error::new(
+                ErrorKind::Input,
+                "a rigid motion needs an exact rotation matrix (R Rᵀ = I, det R = 1)",
+            ));
+        }
+        Ok(self.moved(r, t))
+    }
+
+    /// Applies the rigid motion `P ↦ R P + t` (R orthogonal, unchecked).
+    pub(crate) fn moved(&self, r: &[[Q; 3]; 3], t: &V3) -> Natural {
         let rot = |v: &V3| -> V3 {
             std::array::from_fn(|i| {
                 (0..3)
@@ -249,8 +323,9 @@ impl Natural {
         }
     }
 
-    /// Uniform scaling `P ↦ k P` (k > 0): radii² scale by k², angles stay.
-    pub fn scaled(&self, k: &Q) -> Natural {
+    /// Uniform scaling `P ↦ k P` (k ≠ 0): radii² scale by k², angles stay.
+    #[cfg(test)]
+    pub(crate) fn scaled(&self, k: &Q) -> Natural {
         let sc = |v: &V3| scale(v, k);
         match self {
             Natural::Sphere(s) => Natural::Sphere(Sphere {
@@ -267,22 +342,6 @@ impl Natural {
                 axis: c.axis.clone(),
                 t2: c.t2.clone(),
             }),
-        }
-    }
-
-    /// The JSON form of SPEC §2 (numbers as exact strings).
-    pub fn to_json(&self) -> Value {
-        let v = |p: &V3| -> Value { json!(p.iter().map(fmt_q).collect::<Vec<_>>()) };
-        match self {
-            Natural::Sphere(s) => {
-                json!({"kind": "sphere", "center": v(&s.center), "radius2": fmt_q(&s.r2)})
-            }
-            Natural::Cylinder(c) => {
-                json!({"kind": "cylinder", "point": v(&c.point), "axis": v(&c.axis), "radius2": fmt_q(&c.r2)})
-            }
-            Natural::Cone(c) => {
-                json!({"kind": "cone", "vertex": v(&c.vertex), "axis": v(&c.axis), "tan2": fmt_q(&c.t2)})
-            }
         }
     }
 
@@ -309,36 +368,9 @@ impl Natural {
     }
 }
 
-/// The Cayley rotation of the rational vector `(a, b, c)`: an exact
-/// rational orthogonal matrix with determinant 1 (every rotation whose angle
-/// is not π has this form).
-pub fn cayley_rotation(a: &Q, b: &Q, c: &Q) -> [[Q; 3]; 3] {
-    let n = a * a + b * b + c * c;
-    let d = Q::one() + &n;
-    let two = qi(2);
-    let m = [
-        [
-            Q::one() + a * a - b * b - c * c,
-            &two * (a * b - c),
-            &two * (a * c + b),
-        ],
-        [
-            &two * (a * b + c),
-            Q::one() - a * a + b * b - c * c,
-            &two * (b * c - a),
-        ],
-        [
-            &two * (a * c - b),
-            &two * (b * c + a),
-            Q::one() - a * a - b * b + c * c,
-        ],
-    ];
-    std::array::from_fn(|i| std::array::from_fn(|j| &m[i][j] / &d))
-}
-
 // ------------------------------------------------------------------ parsing
 
-fn parse_vec(s: &str, what: &str) -> Result<V3, Error> {
+fn parse_vec(s: &str, what: &str, mode: NumberMode) -> Result<V3, Error> {
     let parts: Vec<&str> = s.split(',').collect();
     if parts.len() != 3 {
         return Err(Error::new(
@@ -348,19 +380,19 @@ fn parse_vec(s: &str, what: &str) -> Result<V3, Error> {
     }
     let mut out: V3 = std::array::from_fn(|_| Q::zero());
     for (i, p) in parts.iter().enumerate() {
-        out[i] = parse_rational(p)
+        out[i] = parse_rational_with(p, mode)
             .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("{what}: {e} in \"{p}\"")))?;
     }
     Ok(out)
 }
 
-fn parse_num(s: &str, what: &str) -> Result<Q, Error> {
-    parse_rational(s)
+fn parse_num(s: &str, what: &str, mode: NumberMode) -> Result<Q, Error> {
+    parse_rational_with(s, mode)
         .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("{what}: {e} in \"{s}\"")))
 }
 
 /// Builds a quadric from named fields (shared by both syntaxes).
-fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
+fn build(kind: &str, fields: &[(String, String)], mode: NumberMode) -> Result<Natural, Error> {
     let get = |k: &str| fields.iter().find(|(n, _)| n == k).map(|(_, v)| v.as_str());
     let allowed: &[&str] = match kind {
         "sphere" => &["center", "radius2"],
@@ -395,13 +427,13 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
     };
     match kind {
         "sphere" => Ok(Natural::Sphere(Sphere::new(
-            parse_vec(need("center")?, "center")?,
-            parse_num(need("radius2")?, "radius2")?,
+            parse_vec(need("center")?, "center", mode)?,
+            parse_num(need("radius2")?, "radius2", mode)?,
         )?)),
         "cylinder" => Ok(Natural::Cylinder(Cylinder::new(
-            parse_vec(need("point")?, "point")?,
-            parse_vec(need("axis")?, "axis")?,
-            parse_num(need("radius2")?, "radius2")?,
+            parse_vec(need("point")?, "point", mode)?,
+            parse_vec(need("axis")?, "axis", mode)?,
+            parse_num(need("radius2")?, "radius2", mode)?,
         )?)),
         _ => {
             let angle: Vec<&str> = ["tan2", "tan", "cos2", "sin2"]
@@ -421,20 +453,28 @@ fn build(kind: &str, fields: &[(String, String)]) -> Result<Natural, Error> {
                     ),
                 ));
             }
-            let v = parse_num(get(angle[0]).unwrap_or(""), angle[0])?;
+            let v = parse_num(get(angle[0]).unwrap_or(""), angle[0], mode)?;
             let t2 = tan2_from(angle[0], &v)?;
             Ok(Natural::Cone(Cone::new(
-                parse_vec(need("vertex")?, "vertex")?,
-                parse_vec(need("axis")?, "axis")?,
+                parse_vec(need("vertex")?, "vertex", mode)?,
+                parse_vec(need("axis")?, "axis", mode)?,
                 t2,
             )?))
         }
     }
 }
 
-/// Parses the JSON object form of SPEC §2 (numbers as strings; JSON
+/// Parses the JSON object form of contract §2 (numbers as strings; JSON
 /// integers are accepted too, floats are refused as inexact).
+#[cfg(feature = "serde")]
 pub fn from_json(v: &Value) -> Result<Natural, Error> {
+    from_json_in(v, NumberMode::Exact)
+}
+
+/// [`from_json`] with the numbers read in the given mode (float mode: each
+/// literal becomes its nearest double).
+#[cfg(feature = "serde")]
+pub fn from_json_in(v: &Value, mode: NumberMode) -> Result<Natural, Error> {
     let obj = v.as_object().ok_or_else(|| {
         Error::new(
             ErrorKind::BadQuadric,
@@ -475,24 +515,32 @@ pub fn from_json(v: &Value) -> Result<Natural, Error> {
         };
         fields.push((k.clone(), s));
     }
-    build(kind, &fields)
+    build(kind, &fields, mode)
 }
 
 /// Parses the short human syntax, e.g. `cone vertex=0,0,0 axis=1,0,0
 /// tan2=1/3`, or a JSON object (when the text starts with `{`).
-///
-/// ```
-/// use quadsect::natural::parse_natural;
-/// let c = parse_natural("cone vertex=0,0,0 axis=1,0,0 cos2=3/4").unwrap();
-/// assert_eq!(c.to_short(), "cone vertex=0,0,0 axis=1,0,0 tan2=1/3");
-/// assert!(parse_natural("cylinder point=0,0,0 axis=0,0,0 radius2=1").is_err());
-/// ```
 pub fn parse_natural(text: &str) -> Result<Natural, Error> {
+    parse_natural_in(text, NumberMode::Exact)
+}
+
+/// [`parse_natural`] with the numbers read in the given mode: in
+/// [`NumberMode::Float`] each literal is replaced by its nearest double,
+/// so `axis=0.7071067811865476,…` is the double a program would use.
+pub fn parse_natural_in(text: &str, mode: NumberMode) -> Result<Natural, Error> {
     let t = text.trim();
     if t.starts_with('{') {
-        let v: Value = serde_json::from_str(t)
-            .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("invalid JSON: {e}")))?;
-        return from_json(&v);
+        #[cfg(feature = "serde")]
+        {
+            let v: Value = serde_json::from_str(t)
+                .map_err(|e| Error::new(ErrorKind::BadQuadric, format!("invalid JSON: {e}")))?;
+            return from_json_in(&v, mode);
+        }
+        #[cfg(not(feature = "serde"))]
+        return Err(Error::new(
+            ErrorKind::BadQuadric,
+            "the JSON form of a natural quadric needs the crate feature `serde`; use the short syntax (e.g. `sphere center=0,0,0 radius2=1`)",
+        ));
     }
     let mut words = t.split_whitespace();
     let kind = words
@@ -508,7 +556,7 @@ pub fn parse_natural(text: &str) -> Result<Natural, Error> {
         })?;
         fields.push((k.to_string(), v.to_string()));
     }
-    build(kind, &fields)
+    build(kind, &fields, mode)
 }
 
 /// Squared distance from a point to a line (point `p`, direction `a`).
@@ -526,19 +574,7 @@ pub fn axial_param(x: &V3, p: &V3, a: &V3) -> Q {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn cayley_is_orthogonal() {
-        let r = cayley_rotation(&qi(1), &crate::number::q(2, 3), &qi(-2));
-        for i in 0..3 {
-            for j in 0..3 {
-                let d: Q = (0..3)
-                    .map(|k| &r[i][k] * &r[j][k])
-                    .fold(Q::zero(), |a, b| a + b);
-                assert_eq!(d, if i == j { qi(1) } else { qi(0) });
-            }
-        }
-    }
+    use crate::number::qi;
 
     #[test]
     fn parse_forms_agree() {
@@ -572,5 +608,50 @@ mod tests {
         pt[1] = qi(2);
         pt[2] = qi(4); // V + (1, 0, 1): angle 45°
         assert_eq!(e.eval(&pt), Q::zero());
+    }
+}
+
+impl std::str::FromStr for Natural {
+    type Err = Error;
+    /// The short syntax (`cone vertex=0,0,0 axis=1,0,0 tan2=1/3`) or, with
+    /// the feature `serde`, the JSON object form.
+    fn from_str(s: &str) -> Result<Natural, Error> {
+        parse_natural(s)
+    }
+}
+
+impl std::fmt::Display for Natural {
+    /// The short syntax (parses back to the same quadric).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.to_short())
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_natural() {
+        use crate::natural::parse_natural;
+        let c = parse_natural("cone vertex=0,0,0 axis=1,0,0 cos2=3/4").unwrap();
+        assert_eq!(c.to_short(), "cone vertex=0,0,0 axis=1,0,0 tan2=1/3");
+        assert!(parse_natural("cylinder point=0,0,0 axis=0,0,0 radius2=1").is_err());
+    }
+}
+
+#[cfg(test)]
+mod doc_examples_more {
+    //! Examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_natural_in() {
+        use crate::natural::types::parse_natural_in;
+        use crate::number::{NumberMode, double_value};
+        let c = parse_natural_in("sphere center=0.1,0,0 radius2=1", NumberMode::Float).unwrap();
+        let crate::natural::Natural::Sphere(s) = c else {
+            unreachable!()
+        };
+        assert_eq!(s.center[0], double_value(0.1).unwrap());
     }
 }

@@ -21,16 +21,6 @@ use std::ops::AddAssign;
 ///
 /// Addition and left shifts wrap modulo `2^(64·N)`: exact whenever the true
 /// result fits, which the caller must prove.
-///
-/// ```
-/// use num_bigint::BigInt;
-/// use quadsect::number::fixed::Fixed;
-/// let a = Fixed::<2>::from_bigint(&BigInt::from(u64::MAX)).unwrap();
-/// let mut b = Fixed::<2>::from_bigint(&BigInt::from(-3)).unwrap();
-/// b += &a; // the borrow crosses a limb
-/// assert_eq!(b.to_bigint(), BigInt::from(u64::MAX) - 3);
-/// assert_eq!(b.shl(60).to_bigint(), (BigInt::from(u64::MAX) - 3) << 60usize);
-/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Fixed<const N: usize>([u64; N]);
 
@@ -60,6 +50,7 @@ impl<const N: usize> Fixed<N> {
     }
 
     /// `x` if it fits in `64·N` bits, else `None`.  `O(N)`, no allocation.
+    #[cfg(test)]
     pub fn from_bigint(x: &BigInt) -> Option<Self> {
         if !fits(x, N) {
             return None;
@@ -75,6 +66,8 @@ impl<const N: usize> Fixed<N> {
     }
 
     /// The exact value as a `BigInt`.  `O(N)`.
+    #[cfg(test)]
+    #[allow(clippy::wrong_self_convention)] // Fixed<N> is large: no copy
     pub fn to_bigint(&self) -> BigInt {
         bigint_from_limbs(&self.0)
     }
@@ -100,6 +93,7 @@ impl<const N: usize> Fixed<N> {
     /// The least `β >= 0` with `-2^β <= self < 2^β` (so `|self| <= 2^β`);
     /// see [`signed_bits`].
     #[inline]
+    #[cfg(test)]
     pub fn signed_bits(&self) -> u32 {
         signed_bits(&self.0)
     }
@@ -419,6 +413,25 @@ mod tests {
         assert_eq!(
             Fixed::<2>::from_limbs(wide.limbs()).to_bigint(),
             BigInt::from(-9)
+        );
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_fixed() {
+        use crate::number::fixed::Fixed;
+        use num_bigint::BigInt;
+        let a = Fixed::<2>::from_bigint(&BigInt::from(u64::MAX)).unwrap();
+        let mut b = Fixed::<2>::from_bigint(&BigInt::from(-3)).unwrap();
+        b += &a; // the borrow crosses a limb
+        assert_eq!(b.to_bigint(), BigInt::from(u64::MAX) - 3);
+        assert_eq!(
+            b.shl(60).to_bigint(),
+            (BigInt::from(u64::MAX) - 3) << 60usize
         );
     }
 }

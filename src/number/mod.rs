@@ -9,16 +9,21 @@
 //! Floats appear only in printed approximations, and those are computed from
 //! the exact value by integer arithmetic ([`approx_decimal`]).
 
+pub(crate) mod filter;
 pub mod fixed;
+pub(crate) mod float;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
-pub mod reconstruct;
+pub(crate) mod reconstruct;
+mod sign;
 
-pub use parse::{NumberError, parse_rational, scan_number};
+pub use float::double_value;
+pub use parse::{NumberError, NumberMode, parse_rational, parse_rational_with, scan_number_with};
 pub use qsqrt::QSqrt;
+pub use sign::Sign;
 
-use num_bigint::{BigInt, Sign};
+use num_bigint::{BigInt, Sign as BigSign};
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -29,11 +34,6 @@ pub type Q = BigRational;
 pub type Z = BigInt;
 
 /// The rational `n/d` from small integers.
-///
-/// ```
-/// let q = quadsect::number::q(6, 4);
-/// assert_eq!(quadsect::number::fmt_q(&q), "3/2");
-/// ```
 pub fn q(n: i64, d: i64) -> Q {
     Q::new(BigInt::from(n), BigInt::from(d))
 }
@@ -45,6 +45,8 @@ pub fn qi(n: i64) -> Q {
 
 /// Prints a rational as `a` or `a/b` (lowest terms, sign on the numerator).
 pub fn fmt_q(x: &Q) -> String {
+    // printing is quadratic in the size of the number
+    crate::budget::check_for(x.numer().bits() + x.denom().bits());
     if x.denom().is_one() {
         x.numer().to_string()
     } else {
@@ -60,9 +62,9 @@ pub fn sign_q(x: &Q) -> i32 {
 /// The exact sign of an integer: -1, 0 or 1.
 pub fn sign_z(x: &Z) -> i32 {
     match x.sign() {
-        Sign::Minus => -1,
-        Sign::NoSign => 0,
-        Sign::Plus => 1,
+        BigSign::Minus => -1,
+        BigSign::NoSign => 0,
+        BigSign::Plus => 1,
     }
 }
 
@@ -100,17 +102,12 @@ pub fn floor_log2_q(x: &Q) -> i64 {
 /// to nearest, computed exactly with integers (no floating point).
 ///
 /// Plain notation is used for moderate exponents, scientific otherwise.
-///
-/// ```
-/// use quadsect::number::{approx_decimal, q};
-/// assert_eq!(approx_decimal(&q(7, 9), 5), "0.77778");
-/// assert_eq!(approx_decimal(&q(-1233, 112), 6), "-11.0089");
-/// ```
 pub fn approx_decimal(x: &Q, digits: usize) -> String {
     let digits = digits.max(1);
     if x.is_zero() {
         return "0".to_string();
     }
+    crate::budget::check_for(x.numer().bits() + x.denom().bits());
     let neg = x.is_negative();
     let ax = x.abs();
     // e10 = floor(log10 |x|): estimate from log2, then correct exactly.
@@ -435,5 +432,23 @@ mod tests {
         assert_eq!(exact_sqrt_q(&q(9, 4)), Some(q(3, 2)));
         assert_eq!(exact_sqrt_q(&q(2, 1)), None);
         assert_eq!(exact_sqrt_q(&q(-4, 1)), None);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_q() {
+        let q = crate::number::q(6, 4);
+        assert_eq!(crate::number::fmt_q(&q), "3/2");
+    }
+
+    #[test]
+    fn doc_approx_decimal() {
+        use crate::number::{approx_decimal, q};
+        assert_eq!(approx_decimal(&q(7, 9), 5), "0.77778");
+        assert_eq!(approx_decimal(&q(-1233, 112), 6), "-11.0089");
     }
 }

@@ -82,12 +82,14 @@ impl Modulus {
 
     /// Into Montgomery form.
     #[inline(always)]
+    #[allow(clippy::wrong_self_convention)] // conversions need the modulus
     pub fn to_mont(&self, a: u64) -> u64 {
         self.mul(a % self.n, self.r2)
     }
 
     /// Out of Montgomery form.
     #[inline(always)]
+    #[allow(clippy::wrong_self_convention)] // conversions need the modulus
     pub fn from_mont(&self, a: u64) -> u64 {
         self.redc(a as u128)
     }
@@ -132,6 +134,8 @@ impl Modulus {
     }
 
     /// A signed small integer into Montgomery form.
+    #[cfg(test)]
+    #[allow(clippy::wrong_self_convention)] // conversions need the modulus
     pub fn from_i64(&self, v: i64) -> u64 {
         let m = self.to_mont(v.unsigned_abs());
         if v < 0 { self.neg(m) } else { m }

@@ -14,16 +14,30 @@ use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::fmt;
 
-/// An element `a + b√d` of Q(√d).
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// An exact real number `a + b√d` (rational `a`, `b`, and `d ≥ 0`).
+///
+/// Comparison is exact, also between numbers of different fields Q(√d)
+/// (through [`QSqrt::to_real_alg`]); equal values hash equally.
+///
+/// ```
+/// use quadsect::{QSqrt, Rational};
+/// let r = |n: i64| Rational::from_integer(n.into());
+/// let x = QSqrt::try_new(r(1), r(2), r(2)).unwrap(); // 1 + 2√2
+/// let y = QSqrt::try_new(r(1), r(1), r(8)).unwrap(); // 1 + √8
+/// assert_eq!(x, y);
+/// assert_eq!(x.to_string(), "1 + 2·√(2)");
+/// assert!(x > QSqrt::rational(r(3)));
+/// assert!(QSqrt::try_new(r(0), r(1), r(-1)).is_err()); // √-1 is not real
+/// ```
+#[derive(Clone, Debug)]
 pub struct QSqrt {
     /// Rational part.
-    pub a: Q,
+    pub(crate) a: Q,
     /// Coefficient of √d.
-    pub b: Q,
+    pub(crate) b: Q,
     /// Radicand, `d >= 0`.  When `d` is a rational square the value is folded
     /// into `a` and `b` is zero.
-    pub d: Q,
+    pub(crate) d: Q,
 }
 
 impl QSqrt {
@@ -36,9 +50,74 @@ impl QSqrt {
         }
     }
 
+    /// `a + b√d` for `d ≥ 0` (an error of kind `input` otherwise), folding
+    /// `√d` into the rational part when `d` is a square.
+    pub fn try_new(a: Q, b: Q, d: Q) -> Result<QSqrt, crate::Error> {
+        if d.is_negative() && !b.is_zero() {
+            return Err(crate::Error::new(
+                crate::ErrorKind::Input,
+                format!("√({}) is not real: the radicand must be ≥ 0", fmt_q(&d)),
+            ));
+        }
+        Ok(QSqrt::new(
+            a,
+            b,
+            if d.is_negative() { Q::zero() } else { d },
+        ))
+    }
+
+    /// The rational part `a`.
+    pub fn a(&self) -> &Q {
+        &self.a
+    }
+
+    /// The coefficient `b` of `√d`.
+    pub fn b(&self) -> &Q {
+        &self.b
+    }
+
+    /// The radicand `d` (0 for a rational).
+    pub fn d(&self) -> &Q {
+        &self.d
+    }
+
+    /// The exact sign.
+    pub fn sign(&self) -> super::Sign {
+        super::Sign::from_i32(self.signum())
+    }
+
+    /// The same number as a real algebraic number (a rational, or the root
+    /// of `(t − a)² − b²d` on the side of `a` given by the sign of `b`).
+    pub fn to_real_alg(&self) -> crate::roots::RealAlg {
+        use crate::roots::RealAlg;
+        if self.b.is_zero() {
+            return RealAlg::rational(self.a.clone());
+        }
+        // t² − 2a t + (a² − b²d), cleared of denominators
+        let c = [
+            &self.a * &self.a - &self.b * &self.b * &self.d,
+            -(&self.a + &self.a),
+            Q::one(),
+        ];
+        let l = super::denom_lcm(c.iter());
+        let z: Vec<BigInt> = c.iter().map(|q| q.numer() * (&l / q.denom())).collect();
+        let roots = RealAlg::roots_of(&crate::poly::ZPoly::new(z));
+        let i = if self.b.is_positive() { 1 } else { 0 };
+        roots[i].clone()
+    }
+
+    /// Exact comparison of any two, in one field or not.
+    fn cmp_any(&self, o: &QSqrt) -> Ordering {
+        if self.b.is_zero() || o.b.is_zero() || self.d == o.d {
+            self.cmp_exact(o)
+        } else {
+            self.to_real_alg().cmp_exact(&o.to_real_alg())
+        }
+    }
+
     /// `a + b√d`, folding `√d` into the rational part when `d` is a square.
     /// Panics (debug) on negative `d`; callers check the sign first.
-    pub fn new(a: Q, b: Q, d: Q) -> Self {
+    pub(crate) fn new(a: Q, b: Q, d: Q) -> Self {
         debug_assert!(!d.is_negative(), "negative radicand");
         if b.is_zero() || d.is_zero() {
             return QSqrt::rational(a);
@@ -61,7 +140,7 @@ impl QSqrt {
     }
 
     /// `√d` itself.
-    pub fn sqrt(d: Q) -> Self {
+    pub(crate) fn sqrt(d: Q) -> Self {
         QSqrt::new(Q::zero(), Q::one(), d)
     }
 
@@ -76,7 +155,7 @@ impl QSqrt {
     }
 
     /// The exact sign: -1, 0 or 1.
-    pub fn sign(&self) -> i32 {
+    pub(crate) fn signum(&self) -> i32 {
         let sa = sign_q(&self.a);
         let sb = sign_q(&self.b);
         if sb == 0 {
@@ -108,19 +187,19 @@ impl QSqrt {
     }
 
     /// Sum (both operands must live in the same field Q(√d)).
-    pub fn add(&self, o: &QSqrt) -> QSqrt {
+    pub(crate) fn add(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
         QSqrt::from_parts(&self.a + &o.a, &self.b + &o.b, d)
     }
 
     /// Difference.
-    pub fn sub(&self, o: &QSqrt) -> QSqrt {
+    pub(crate) fn sub(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
         QSqrt::from_parts(&self.a - &o.a, &self.b - &o.b, d)
     }
 
     /// Product.
-    pub fn mul(&self, o: &QSqrt) -> QSqrt {
+    pub(crate) fn mul(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
         let a = &self.a * &o.a + &self.b * &o.b * &d;
         let b = &self.a * &o.b + &self.b * &o.a;
@@ -128,27 +207,22 @@ impl QSqrt {
     }
 
     /// Product with a rational.
-    pub fn scale(&self, k: &Q) -> QSqrt {
+    pub(crate) fn scale(&self, k: &Q) -> QSqrt {
         QSqrt::from_parts(&self.a * k, &self.b * k, self.d.clone())
     }
 
     /// Negation.
-    pub fn neg(&self) -> QSqrt {
+    pub(crate) fn neg(&self) -> QSqrt {
         QSqrt::from_parts(-&self.a, -&self.b, self.d.clone())
     }
 
-    /// Conjugate `a - b√d`.
-    pub fn conj(&self) -> QSqrt {
-        QSqrt::from_parts(self.a.clone(), -&self.b, self.d.clone())
-    }
-
     /// Norm `a² - b²d` (a rational).
-    pub fn norm(&self) -> Q {
+    pub(crate) fn norm(&self) -> Q {
         &self.a * &self.a - &self.b * &self.b * &self.d
     }
 
     /// Inverse; `None` for zero.
-    pub fn inv(&self) -> Option<QSqrt> {
+    pub(crate) fn inv(&self) -> Option<QSqrt> {
         if self.is_zero() {
             return None;
         }
@@ -158,13 +232,13 @@ impl QSqrt {
     }
 
     /// Quotient; `None` when dividing by zero.
-    pub fn div(&self, o: &QSqrt) -> Option<QSqrt> {
+    pub(crate) fn div(&self, o: &QSqrt) -> Option<QSqrt> {
         Some(self.mul(&o.inv()?))
     }
 
     /// Exact comparison of two elements of the same field.
-    pub fn cmp_exact(&self, o: &QSqrt) -> Ordering {
-        match self.sub(o).sign() {
+    pub(crate) fn cmp_exact(&self, o: &QSqrt) -> Ordering {
+        match self.sub(o).signum() {
             -1 => Ordering::Less,
             0 => Ordering::Equal,
             _ => Ordering::Greater,
@@ -192,7 +266,7 @@ impl QSqrt {
     /// Square root of a non-negative rational in the field Q(√d), if it lies
     /// there: `√x` for rational `x`, either rational or `b·√d` with `x/d` a
     /// rational square.
-    pub fn sqrt_of_rational_in(x: &Q, d: &Q) -> Option<QSqrt> {
+    pub(crate) fn sqrt_of_rational_in(x: &Q, d: &Q) -> Option<QSqrt> {
         if x.is_negative() {
             return None;
         }
@@ -293,6 +367,39 @@ impl fmt::Display for QSqrt {
     }
 }
 
+impl PartialEq for QSqrt {
+    /// Exact equality of the values.
+    fn eq(&self, o: &QSqrt) -> bool {
+        self.cmp_any(o) == Ordering::Equal
+    }
+}
+
+impl Eq for QSqrt {}
+
+impl PartialOrd for QSqrt {
+    fn partial_cmp(&self, o: &QSqrt) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+impl Ord for QSqrt {
+    /// Exact order of the values.
+    fn cmp(&self, o: &QSqrt) -> Ordering {
+        self.cmp_any(o)
+    }
+}
+
+impl std::hash::Hash for QSqrt {
+    /// Consistent with the exact equality (hashes the value, not the form).
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        if self.b.is_zero() {
+            self.a.hash(state);
+        } else {
+            self.to_real_alg().hash(state);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -301,9 +408,9 @@ mod tests {
     #[test]
     fn sign_and_compare() {
         // 1 - √2 < 0, 3 - √2·2 > 0 (9 > 8), 3 - 2√(9/4) = 0
-        assert_eq!(QSqrt::new(qi(1), qi(-1), qi(2)).sign(), -1);
-        assert_eq!(QSqrt::new(qi(3), qi(-2), qi(2)).sign(), 1);
-        assert_eq!(QSqrt::new(qi(3), qi(-2), q(9, 4)).sign(), 0);
+        assert_eq!(QSqrt::new(qi(1), qi(-1), qi(2)).signum(), -1);
+        assert_eq!(QSqrt::new(qi(3), qi(-2), qi(2)).signum(), 1);
+        assert_eq!(QSqrt::new(qi(3), qi(-2), q(9, 4)).signum(), 0);
         let s2 = QSqrt::sqrt(qi(2));
         let x = s2.mul(&s2);
         assert_eq!(x, QSqrt::rational(qi(2)));

@@ -84,28 +84,9 @@ impl Fp {
         inv_mod(a % self.p, self.p)
     }
 
-    /// `a^e`.
-    pub fn pow(&self, mut a: u64, mut e: u64) -> u64 {
-        let mut r = 1;
-        while e > 0 {
-            if e & 1 == 1 {
-                r = self.mul(r, a);
-            }
-            a = self.mul(a, a);
-            e >>= 1;
-        }
-        r
-    }
-
-    /// A signed small integer as an element.
-    pub fn from_i64(&self, v: i64) -> u64 {
-        let m = v.unsigned_abs() % self.p;
-        if v < 0 { self.neg(m) } else { m }
-    }
-
     /// A big integer as an element (two Barrett steps per 64-bit digit).
-    pub fn from_big(&self, x: &BigInt) -> u64 {
-        let m = self.from_biguint(x.magnitude());
+    pub fn reduce_big(&self, x: &BigInt) -> u64 {
+        let m = self.reduce_biguint(x.magnitude());
         if x.sign() == Sign::Minus {
             self.neg(m)
         } else {
@@ -114,22 +95,13 @@ impl Fp {
     }
 
     /// A natural number as an element.
-    pub fn from_biguint(&self, x: &BigUint) -> u64 {
+    pub fn reduce_biguint(&self, x: &BigUint) -> u64 {
         let mut acc = 0u64;
         for d in x.iter_u64_digits().rev() {
             acc = self.reduce((acc << 32) | (d >> 32));
             acc = self.reduce((acc << 32) | (d & 0xffff_ffff));
         }
         acc
-    }
-
-    /// The symmetric representative in `(−p/2, p/2]`.
-    pub fn symmetric(&self, a: u64) -> i64 {
-        if a > self.p / 2 {
-            a as i64 - self.p as i64
-        } else {
-            a as i64
-        }
     }
 }
 
@@ -298,7 +270,7 @@ impl CrtVec {
         // by at most 7 subtractions
         let reduce = |x: &BigInt| -> u64 {
             if let Some(fp) = &single {
-                return fp.from_biguint(x.magnitude());
+                return fp.reduce_biguint(x.magnitude());
             }
             let mut acc = 0u64;
             for d in x.magnitude().iter_u64_digits().rev() {
@@ -448,7 +420,7 @@ mod tests {
         let mut k = 0;
         while c.modulus().bits() < 260 {
             let fp = Fp::new(prime31(k));
-            let r: Vec<u64> = xs.iter().map(|x| fp.from_big(x)).collect();
+            let r: Vec<u64> = xs.iter().map(|x| fp.reduce_big(x)).collect();
             c.push(&fp, &r);
             k += 1;
         }

@@ -8,15 +8,18 @@
 //! exact division, which is all the fraction-free algorithms need.
 
 pub mod extension;
-pub mod kronecker;
 pub mod mpoly;
 pub mod parse;
+mod public;
 pub mod ring;
 pub mod upoly;
 pub mod zpoly;
 
-pub use mpoly::{MPoly, QMPoly, ZMPoly};
-pub use parse::{Limits, ParseError, parse_poly, parse_poly_with};
+#[cfg(any(test, feature = "cli"))]
+pub use mpoly::MPoly;
+pub use mpoly::{QMPoly, ZMPoly};
+pub use parse::{Limits, ParseError, parse_poly, parse_poly_in};
+pub use public::{IntPoly, Polynomial, Var};
 pub use ring::Ring;
 pub use upoly::UPoly;
 pub use zpoly::{QPoly, ZPoly};

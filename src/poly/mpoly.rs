@@ -36,11 +36,6 @@ pub const L: usize = 4;
 /// Index of an auxiliary variable `t`.
 pub const T: usize = 5;
 
-/// Index of a variable from its name.
-pub fn var_index(name: &str) -> Option<usize> {
-    VAR_NAMES.iter().position(|&n| n == name)
-}
-
 /// A sparse multivariate polynomial.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct MPoly<C> {
@@ -293,6 +288,7 @@ impl<C: Ring> MPoly<C> {
         let up = self.to_upoly(v);
         let mut acc = MPoly::zero();
         for c in up.coeffs().iter().rev() {
+            crate::budget::check();
             acc = &(&acc * g) + c;
         }
         acc
@@ -304,6 +300,7 @@ impl<C: Ring> MPoly<C> {
         let mut acc = MPoly::zero();
         let mut powers: Vec<HashMap<u32, Self>> = vec![HashMap::new(); NVARS];
         for (e, c) in &self.terms {
+            crate::budget::check();
             let mut t = MPoly::constant(c.clone());
             let mut keep = [0u32; NVARS];
             for v in 0..NVARS {
@@ -402,6 +399,7 @@ impl<C: Ring> MPoly<C> {
         let mut r = self.clone();
         let mut q = Vec::new();
         while let Some((er, cr)) = r.terms.first().cloned() {
+            crate::budget::check();
             if !exps_divides(&eb, &er) {
                 return None;
             }
@@ -456,12 +454,6 @@ impl MPoly<Q> {
     /// Canonical string: terms by decreasing total degree, then decreasing
     /// lexicographic order (x > y > z > u > l > t); coefficients as integers
     /// or `a/b`; `*` between factors.  `parse(print(p)) == p`.
-    ///
-    /// ```
-    /// use quadsect::poly::parse_poly;
-    /// let p = parse_poly("3(x-1)^2 - y/2").unwrap();
-    /// assert_eq!(p.to_string_canonical(), "3*x^2 - 6*x - 1/2*y + 3");
-    /// ```
     pub fn to_string_canonical(&self) -> String {
         fmt_terms(&self.terms, fmt_q)
     }
@@ -565,6 +557,30 @@ impl<C: Ring> Sub for &MPoly<C> {
     }
 }
 
+/// Upper bounds on the number of terms and the coefficient bit size of
+/// `a · b`, from the operands: at most `|a|·|b|` terms, and at most the
+/// dense count `∏ (deg_v a + deg_v b + 1)`; coefficients of at most
+/// `bits(a) + bits(b) + ⌈log₂ min(|a|, |b|)⌉` bits.
+fn product_size<C: Ring>(a: &MPoly<C>, b: &MPoly<C>) -> (usize, u64) {
+    let degs = |p: &MPoly<C>| {
+        let mut d = [0u32; NVARS];
+        for (e, _) in &p.terms {
+            for v in 0..NVARS {
+                d[v] = d[v].max(e[v]);
+            }
+        }
+        d
+    };
+    let (da, db) = (degs(a), degs(b));
+    let dense = (0..NVARS).fold(1usize, |acc, v| {
+        acc.saturating_mul(da[v] as usize + db[v] as usize + 1)
+    });
+    let (ta, tb) = (a.terms.len(), b.terms.len());
+    let terms = ta.saturating_mul(tb).min(dense);
+    let bits = a.bit_size() + b.bit_size() + super::upoly::log2_ceil(ta.min(tb));
+    (terms, bits)
+}
+
 impl<C: Ring> Mul for &MPoly<C> {
     type Output = MPoly<C>;
     fn mul(self, o: &MPoly<C>) -> MPoly<C> {
@@ -577,8 +593,11 @@ impl<C: Ring> Mul for &MPoly<C> {
         if self.terms.len() == 1 {
             return o.mul_monomial(&self.terms[0].0, &self.terms[0].1);
         }
-        let mut map: HashMap<Exps, C> = HashMap::with_capacity(self.terms.len() * o.terms.len());
+        let (terms, bits) = product_size(self, o);
+        crate::budget::check_size("a product of polynomials", terms, bits);
+        let mut map: HashMap<Exps, C> = HashMap::with_capacity(terms);
         for (ea, ca) in &self.terms {
+            crate::budget::check();
             for (eb, cb) in &o.terms {
                 let e = exps_add(ea, eb);
                 let p = ca.rmul(cb);
@@ -666,6 +685,13 @@ impl<C: Ring> Ring for MPoly<C> {
     fn div_exact(&self, o: &Self) -> Option<Self> {
         MPoly::div_exact(self, o)
     }
+    fn bit_size(&self) -> u64 {
+        self.terms
+            .iter()
+            .map(|(_, c)| c.bit_size())
+            .max()
+            .unwrap_or(0)
+    }
 }
 
 #[cfg(test)]
@@ -690,5 +716,17 @@ mod tests {
         assert_eq!(ZMPoly::from_upoly(&up, X), a);
         assert_eq!(a.derivative(X), &(&x + &x) + &(&y - &one));
         assert_eq!(a.substitute(Y, &one), &(&x + &one) * &(&x - &one));
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_to_string_canonical() {
+        use crate::poly::parse_poly;
+        let p = parse_poly("3(x-1)^2 - y/2").unwrap();
+        assert_eq!(p.to_string_canonical(), "3*x^2 - 6*x - 1/2*y + 3");
     }
 }

@@ -1,4 +1,4 @@
-//! The polynomial expression parser (SPEC §1).
+//! The polynomial expression parser (contract §1).
 //!
 //! Grammar (whitespace is free):
 //!
@@ -17,8 +17,10 @@
 //! keep hostile inputs from hanging: see [`Limits`].
 
 use super::mpoly::{MPoly, NVARS, QMPoly};
-use crate::number::{Q, scan_number};
+use crate::number::{NumberMode, Q, scan_number_with};
 use num_traits::{One, Zero};
+use std::collections::HashMap;
+use std::collections::hash_map::Entry;
 use std::fmt;
 
 /// Size limits of the parser.  Inputs beyond them are rejected with a clear
@@ -72,20 +74,19 @@ impl fmt::Display for ParseError {
 impl std::error::Error for ParseError {}
 
 /// Parses a polynomial expression with the default [`Limits`].
-///
-/// ```
-/// use quadsect::poly::parse_poly;
-/// let p = parse_poly("2x^2 - 3(x-1) + y/4").unwrap();
-/// assert_eq!(p.to_string_canonical(), "2*x^2 - 3*x + 1/4*y + 3");
-/// let e = parse_poly("(x + 1))").unwrap_err();
-/// assert_eq!(e.to_string(), "unexpected ')' at column 8");
-/// ```
 pub fn parse_poly(text: &str) -> Result<QMPoly, ParseError> {
     parse_poly_with(text, &Limits::default())
 }
 
 /// Parses a polynomial expression with explicit limits.
 pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError> {
+    parse_poly_in(text, limits, NumberMode::Exact)
+}
+
+/// Parses a polynomial expression with explicit limits, reading every
+/// number literal in the given [`NumberMode`] (float mode: each literal
+/// becomes its nearest double).
+pub fn parse_poly_in(text: &str, limits: &Limits, mode: NumberMode) -> Result<QMPoly, ParseError> {
     if text.len() > limits.max_input_bytes {
         return Err(ParseError {
             message: format!(
@@ -102,6 +103,7 @@ pub fn parse_poly_with(text: &str, limits: &Limits) -> Result<QMPoly, ParseError
         pos: 0,
         depth: 0,
         limits,
+        mode,
     };
     p.skip_ws();
     if p.pos == p.s.len() {
@@ -123,6 +125,7 @@ struct Parser<'a> {
     pos: usize,
     depth: usize,
     limits: &'a Limits,
+    mode: NumberMode,
 }
 
 fn variable(c: u8) -> Option<usize> {
@@ -182,7 +185,19 @@ impl Parser<'_> {
     }
 
     fn check_size(&self, p: &QMPoly, at: usize) -> Result<(), ParseError> {
-        if p.len() > self.limits.max_terms {
+        let bits = p
+            .terms()
+            .iter()
+            .map(|(_, c)| c.numer().bits().max(c.denom().bits()))
+            .max()
+            .unwrap_or(0);
+        self.check_counts(p.len(), bits, at)
+    }
+
+    /// The size limits on a polynomial of `terms` terms whose largest
+    /// numerator or denominator has `bits` bits.
+    fn check_counts(&self, terms: usize, bits: u64, at: usize) -> Result<(), ParseError> {
+        if terms > self.limits.max_terms {
             return Err(self.err_at(
                 &format!(
                     "expression too large: more than {} terms",
@@ -191,12 +206,6 @@ impl Parser<'_> {
                 at,
             ));
         }
-        let bits = p
-            .terms()
-            .iter()
-            .map(|(_, c)| c.numer().bits().max(c.denom().bits()))
-            .max()
-            .unwrap_or(0);
         if bits > self.limits.max_coeff_bits {
             return Err(self.err_at(
                 &format!(
@@ -240,27 +249,42 @@ impl Parser<'_> {
 
     fn expr(&mut self) -> Result<QMPoly, ParseError> {
         let mut acc = self.term()?;
+        // a long sum is accumulated by monomial, so that its cost is linear
+        // in the input (repeated merges would be quadratic); a short one
+        // by merging, which is cheaper for a few terms
+        let mut long: Option<Sum> = None;
         loop {
-            match self.peek() {
-                Some(b'+') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = &acc + &t;
+            let negate = match self.peek() {
+                Some(b'+') => false,
+                Some(b'-') => true,
+                _ => break,
+            };
+            self.pos += 1;
+            let t = self.term()?;
+            let Some(sum) = long.as_mut() else {
+                acc = if negate { &acc - &t } else { &acc + &t };
+                self.check_size(&acc, self.pos)?;
+                if acc.len() > SHORT_SUM {
+                    let mut sum = Sum::default();
+                    sum.add(&std::mem::replace(&mut acc, MPoly::zero()), false);
+                    long = Some(sum);
                 }
-                Some(b'-') => {
-                    self.pos += 1;
-                    let t = self.term()?;
-                    acc = &acc - &t;
-                }
-                _ => return Ok(acc),
-            }
-            self.check_size(&acc, self.pos)?;
+                continue;
+            };
+            crate::budget::check_for(sum.bits);
+            sum.add(&t, negate);
+            self.check_counts(sum.terms.len(), sum.bits, self.pos)?;
         }
+        Ok(match long {
+            Some(sum) => MPoly::from_terms(sum.terms),
+            None => acc,
+        })
     }
 
     fn term(&mut self) -> Result<QMPoly, ParseError> {
         let mut acc = self.unary()?;
         loop {
+            crate::budget::check();
             match self.peek() {
                 Some(b'*') => {
                     let at = self.pos;
@@ -422,10 +446,11 @@ impl Parser<'_> {
             return Err(self.err_at("unexpected end of expression", self.pos));
         };
         if c.is_ascii_digit() || c == b'.' {
-            let (v, end) = scan_number(self.s, self.pos).map_err(|e| ParseError {
-                message: e.message,
-                column: self.err_at("", e.column - 1).column,
-            })?;
+            let (v, end) =
+                scan_number_with(self.s, self.pos, self.mode).map_err(|e| ParseError {
+                    message: e.message,
+                    column: self.err_at("", e.column - 1).column,
+                })?;
             self.pos = end;
             return Ok(MPoly::constant(v));
         }
@@ -461,13 +486,36 @@ impl Parser<'_> {
     }
 }
 
-/// Variables occurring in a parsed polynomial, by name.
-pub fn var_names(p: &QMPoly) -> Vec<&'static str> {
-    p.vars()
-        .into_iter()
-        .filter(|&v| v < NVARS)
-        .map(|v| super::mpoly::VAR_NAMES[v])
-        .collect()
+/// Sums of more terms than this are accumulated by monomial ([`Sum`]).
+const SHORT_SUM: usize = 64;
+
+/// The running value of a long sum in [`Parser::expr`]: its non-zero terms by
+/// monomial, and the largest coefficient size (bits of the numerator or
+/// the denominator) among the coefficients changed so far.
+#[derive(Default)]
+struct Sum {
+    terms: HashMap<[u32; NVARS], Q>,
+    bits: u64,
+}
+
+impl Sum {
+    fn add(&mut self, p: &QMPoly, negate: bool) {
+        for (e, c) in p.terms() {
+            let c = if negate { -c } else { c.clone() };
+            let v = match self.terms.entry(*e) {
+                Entry::Occupied(mut o) => {
+                    *o.get_mut() += c;
+                    if o.get().is_zero() {
+                        o.remove();
+                        continue;
+                    }
+                    o.into_mut()
+                }
+                Entry::Vacant(v) => v.insert(c),
+            };
+            self.bits = self.bits.max(v.numer().bits().max(v.denom().bits()));
+        }
+    }
 }
 
 #[cfg(test)]
@@ -496,6 +544,44 @@ mod tests {
         assert_eq!(s("x - x"), "0");
         assert_eq!(s("2^10"), "1024");
         assert_eq!(s("u^2 - 2u"), "u^2 - 2*u");
+    }
+
+    #[test]
+    fn hex_literals_and_implicit_multiplication() {
+        // the grammar of number::parse: a hex literal starts at 0x only
+        // when a hex digit or '.' follows; a variable may follow it
+        assert_eq!(s("0x1p3x"), "8*x");
+        assert_eq!(s("0x1.8p1x^2 - 0x.8y"), "3*x^2 - 1/2*y");
+        assert_eq!(s("0x^2 + 1"), "1");
+        assert_eq!(s("2x + 0xy"), "2*x");
+        assert_eq!(s("0xap-1(x+1)"), "5*x + 5");
+        assert_eq!(s("-0x1p-3"), "-1/8");
+        let e = parse_poly("x + 0x1p").unwrap_err();
+        assert_eq!(e.column, 9);
+        assert!(e.message.contains("binary exponent"), "{e}");
+        // inside a hex literal 'e' is a digit: 0x1.8e = 1 + 8/16 + 14/256
+        assert_eq!(
+            parse_poly("0x1.8e").unwrap().to_string_canonical(),
+            "199/128"
+        );
+        let e = parse_poly("0x1g + x").unwrap_err();
+        assert_eq!(
+            (e.message.as_str(), e.column),
+            ("unexpected 'g' in a hexadecimal number", 4)
+        );
+    }
+
+    #[test]
+    fn float_mode_reads_literals_as_doubles() {
+        let f = |t: &str| {
+            parse_poly_in(t, &Limits::default(), NumberMode::Float)
+                .unwrap()
+                .to_string_canonical()
+        };
+        assert_eq!(f("0.5x + 0.25"), "1/2*x + 1/4");
+        assert_eq!(f("0.1x"), "3602879701896397/36028797018963968*x");
+        assert_eq!(f("x/10"), "1/10*x"); // 10 is a double: the quotient stays exact
+        assert_eq!(s("0.1x"), "1/10*x");
     }
 
     #[test]
@@ -540,5 +626,32 @@ mod tests {
         assert!(parse_poly("10^100000000").is_err());
         let deep = "(".repeat(100_000) + "x" + &")".repeat(100_000);
         assert!(parse_poly(&deep).is_err());
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_poly() {
+        use crate::poly::parse_poly;
+        let p = parse_poly("2x^2 - 3(x-1) + y/4").unwrap();
+        assert_eq!(p.to_string_canonical(), "2*x^2 - 3*x + 1/4*y + 3");
+        let e = parse_poly("(x + 1))").unwrap_err();
+        assert_eq!(e.to_string(), "unexpected ')' at column 8");
+    }
+}
+
+#[cfg(test)]
+mod doc_examples_more {
+    //! Examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_parse_poly_in() {
+        use crate::number::NumberMode;
+        use crate::poly::{Limits, parse_poly_in};
+        let p = parse_poly_in("0x1p3x + 0.5", &Limits::default(), NumberMode::Float).unwrap();
+        assert_eq!(p.to_string_canonical(), "8*x + 1/2");
     }
 }

@@ -44,6 +44,13 @@ pub trait Ring: Clone + PartialEq + Debug {
     }
     /// `self / o` when `o` divides `self` exactly, otherwise `None`.
     fn div_exact(&self, o: &Self) -> Option<Self>;
+    /// The bit size of the largest integer stored (numerator plus
+    /// denominator for a rational, the largest coefficient for a
+    /// polynomial): what the size budget ([`crate::budget::check_size`])
+    /// measures.
+    fn bit_size(&self) -> u64 {
+        0
+    }
     /// `self^e` by repeated squaring.
     fn rpow(&self, mut e: u32) -> Self {
         let mut base = self.clone();
@@ -95,12 +102,27 @@ impl Ring for BigInt {
     fn rsub_assign(&mut self, o: &Self) {
         *self -= o;
     }
+    fn bit_size(&self) -> u64 {
+        self.bits()
+    }
     fn div_exact(&self, o: &Self) -> Option<Self> {
         if Zero::is_zero(o) {
             return None;
         }
         let (q, r) = self.div_rem(o);
         if Zero::is_zero(&r) { Some(q) } else { None }
+    }
+}
+
+/// The budget check before a rational operation on large numbers (each
+/// one computes a gcd, whose cost grows quadratically with their size);
+/// operations on small numbers leave the checks to the loops around them.
+#[inline]
+fn check_pair(a: &BigRational, b: &BigRational) {
+    let bits = a.numer().bits().max(a.denom().bits());
+    let bits = bits.max(b.numer().bits()).max(b.denom().bits());
+    if bits > crate::budget::LARGE_BITS {
+        crate::budget::check_now();
     }
 }
 
@@ -118,22 +140,30 @@ impl Ring for BigRational {
         Zero::is_zero(self)
     }
     fn radd(&self, o: &Self) -> Self {
+        check_pair(self, o);
         self + o
     }
     fn rsub(&self, o: &Self) -> Self {
+        check_pair(self, o);
         self - o
     }
     fn rmul(&self, o: &Self) -> Self {
+        check_pair(self, o);
         self * o
     }
     fn rneg(&self) -> Self {
         -self
     }
     fn radd_assign(&mut self, o: &Self) {
+        check_pair(self, o);
         *self += o;
     }
     fn rsub_assign(&mut self, o: &Self) {
+        check_pair(self, o);
         *self -= o;
+    }
+    fn bit_size(&self) -> u64 {
+        self.numer().bits() + self.denom().bits()
     }
     fn div_exact(&self, o: &Self) -> Option<Self> {
         if Zero::is_zero(o) {

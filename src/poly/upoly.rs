@@ -18,13 +18,6 @@ pub struct UPoly<R> {
 impl<R: Ring> UPoly<R> {
     /// The polynomial with the given coefficients (ascending powers); trailing
     /// zeros are removed.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// use num_bigint::BigInt;
-    /// let p = ZPoly::new(vec![BigInt::from(1), BigInt::from(0), BigInt::from(0)]);
-    /// assert_eq!(p.degree(), Some(0));
-    /// ```
     pub fn new(mut c: Vec<R>) -> Self {
         while c.last().is_some_and(|x| x.ris_zero()) {
             c.pop();
@@ -106,6 +99,7 @@ impl<R: Ring> UPoly<R> {
     pub fn eval(&self, a: &R) -> R {
         let mut acc = R::rzero();
         for c in self.c.iter().rev() {
+            crate::budget::check();
             acc = acc.rmul(a);
             acc.radd_assign(c);
         }
@@ -174,6 +168,7 @@ impl<R: Ring> UPoly<R> {
         let mut r = self.c.clone();
         let mut q = vec![R::rzero(); da - db + 1];
         for k in (0..=da - db).rev() {
+            crate::budget::check();
             // r := lb·r − r[k+db]·x^k·b, q := lb·q + r[k+db]·x^k
             let t = r[k + db].clone();
             for qi in q.iter_mut() {
@@ -203,6 +198,7 @@ impl<R: Ring> UPoly<R> {
         let lb = b.lc();
         let mut r = self.c.clone();
         for k in (0..=da - db).rev() {
+            crate::budget::check();
             let t = r[k + db].clone();
             for ri in r.iter_mut().take(k + db) {
                 *ri = ri.rmul(&lb);
@@ -231,6 +227,7 @@ impl<R: Ring> UPoly<R> {
         let mut r = self.c.clone();
         let mut q = vec![R::rzero(); da - db + 1];
         for k in (0..=da - db).rev() {
+            crate::budget::check();
             let t = r[k + db].div_exact(&lb)?;
             if !t.ris_zero() {
                 for (j, bj) in b.c.iter().enumerate() {
@@ -267,6 +264,7 @@ impl<R: Ring> UPoly<R> {
     pub fn compose(&self, g: &Self) -> Self {
         let mut acc = UPoly::zero();
         for c in self.c.iter().rev() {
+            crate::budget::check();
             acc = &(&acc * g) + &UPoly::constant(c.clone());
         }
         acc
@@ -306,17 +304,33 @@ impl<R: Ring> Sub for &UPoly<R> {
     }
 }
 
+/// `⌈log₂ n⌉` (the bits a sum of `n` terms can add), 0 for `n <= 1`.
+pub(crate) fn log2_ceil(n: usize) -> u64 {
+    (usize::BITS - n.saturating_sub(1).leading_zeros()) as u64
+}
+
 impl<R: Ring> Mul for &UPoly<R> {
     type Output = UPoly<R>;
     fn mul(self, o: &UPoly<R>) -> UPoly<R> {
         if self.ris_zero() || o.ris_zero() {
             return UPoly::zero();
         }
-        let mut c = vec![R::rzero(); self.c.len() + o.c.len() - 1];
+        let len = self.c.len() + o.c.len() - 1;
+        // the size of the product from the operands: all coefficients for
+        // long polynomials, the leading ones (O(1)) for short ones
+        let bits = if len > crate::poly::zpoly::SHORT {
+            self.bit_size() + o.bit_size() + log2_ceil(self.c.len().min(o.c.len()))
+        } else {
+            let lead = |p: &UPoly<R>| p.c.last().map_or(0, R::bit_size);
+            lead(self) + lead(o) + log2_ceil(self.c.len().min(o.c.len()))
+        };
+        crate::budget::check_size("a product of polynomials", len, bits);
+        let mut c = vec![R::rzero(); len];
         for (i, a) in self.c.iter().enumerate() {
             if a.ris_zero() {
                 continue;
             }
+            crate::budget::check();
             for (j, b) in o.c.iter().enumerate() {
                 c[i + j].radd_assign(&a.rmul(b));
             }
@@ -397,6 +411,9 @@ impl<R: Ring> Ring for UPoly<R> {
     fn div_exact(&self, o: &Self) -> Option<Self> {
         UPoly::div_exact(self, o)
     }
+    fn bit_size(&self) -> u64 {
+        self.c.iter().map(R::bit_size).max().unwrap_or(0)
+    }
 }
 
 #[cfg(test)]
@@ -430,5 +447,18 @@ mod tests {
         let prod = &a * &b;
         assert_eq!(prod.div_exact(&b), Some(a.clone()));
         assert_eq!(a.div_exact(&b), None);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_new() {
+        use crate::poly::ZPoly;
+        use num_bigint::BigInt;
+        let p = ZPoly::new(vec![BigInt::from(1), BigInt::from(0), BigInt::from(0)]);
+        assert_eq!(p.degree(), Some(0));
     }
 }

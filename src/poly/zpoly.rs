@@ -7,11 +7,12 @@
 //! primitive polynomials; a polynomial over Q is a rational constant times a
 //! primitive integer polynomial, and rationals appear only at the edges.
 
+use super::ring::Ring;
 use super::upoly::UPoly;
 use crate::number::fixed::{AtWidth, Fixed, MAX_LIMBS, at_width, push_limbs};
 use crate::number::modular::{Digits, Modulus, primes};
 use crate::number::{Q, sign_z};
-use num_bigint::{BigInt, Sign};
+use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::borrow::Cow;
@@ -36,12 +37,6 @@ impl UPoly<BigInt> {
     }
 
     /// The primitive part, normalised to a positive leading coefficient.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// let p = ZPoly::from_i64s(&[4, -6, -2]);
-    /// assert_eq!(p.primitive_part(), ZPoly::from_i64s(&[-2, 3, 1]));
-    /// ```
     pub fn primitive_part(&self) -> ZPoly {
         if self.is_zero() {
             return ZPoly::zero();
@@ -92,9 +87,14 @@ impl UPoly<BigInt> {
         if c.is_empty() {
             return (BigInt::zero(), BigInt::one());
         }
+        crate::budget::check();
+        let long = c.len() > SHORT;
         let mut acc = c[c.len() - 1].clone();
         let mut dpow = BigInt::one();
         for ci in c.iter().rev().skip(1) {
+            if long {
+                crate::budget::check();
+            }
             dpow *= d;
             acc *= n;
             if !ci.is_zero() {
@@ -142,6 +142,7 @@ impl UPoly<BigInt> {
         } else if !a.is_zero() {
             let n = c.len();
             for i in 0..n.saturating_sub(1) {
+                crate::budget::check();
                 for j in (i..n - 1).rev() {
                     let (lo, hi) = c.split_at_mut(j + 1);
                     lo[j] += &hi[0] * a;
@@ -159,6 +160,8 @@ impl UPoly<BigInt> {
         if n == 0 {
             return ZPoly::zero();
         }
+        let top = self.bit_size() + k.unsigned_abs() * (n as u64 - 1);
+        crate::budget::check_size("a polynomial with scaled roots", n, top);
         let out = c
             .iter()
             .enumerate()
@@ -214,13 +217,6 @@ impl UPoly<BigInt> {
     /// Greatest common divisor, primitive with positive leading coefficient
     /// (`gcd(0, 0) = 0`).  A modular test first detects the frequent coprime
     /// case; otherwise the primitive PRS is used.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// let a = ZPoly::from_i64s(&[-1, 0, 1]); // x^2 - 1
-    /// let b = ZPoly::from_i64s(&[1, 2, 1]);  // (x + 1)^2
-    /// assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1, 1]));
-    /// ```
     pub fn gcd(&self, o: &ZPoly) -> ZPoly {
         if self.is_zero() {
             return o.primitive_part();
@@ -265,14 +261,6 @@ impl UPoly<BigInt> {
     /// Square-free factorisation (Yun): `pp(p) = ∏ f_i^i` with the `f_i`
     /// square-free, pairwise coprime and primitive; returns the non-constant
     /// `(f_i, i)`.
-    ///
-    /// ```
-    /// use quadsect::poly::ZPoly;
-    /// // (x - 1)^2 (x + 2)
-    /// let p = ZPoly::from_i64s(&[2, -3, 0, 1]);
-    /// let f = p.squarefree_decomposition();
-    /// assert_eq!(f, vec![(ZPoly::from_i64s(&[2, 1]), 1), (ZPoly::from_i64s(&[-1, 1]), 2)]);
-    /// ```
     pub fn squarefree_decomposition(&self) -> Vec<(ZPoly, u32)> {
         let a = self.primitive_part();
         if a.degree().unwrap_or(0) == 0 {
@@ -325,17 +313,6 @@ impl UPoly<BigInt> {
 /// `B + nL + bits(n) + 1 <= 64·N` bits of two's complement hold them all
 /// exactly (products and sums modulo `2^(64N)` are exact when the true
 /// value fits).  `m < 0` is `|m|` with the odd coefficients negated.
-///
-/// ```
-/// use num_bigint::BigInt;
-/// use quadsect::poly::ZPoly;
-/// use quadsect::poly::zpoly::DyadicSigner;
-/// let p = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
-/// let s = DyadicSigner::new(&p);
-/// assert_eq!(s.sign_at(&BigInt::from(181), 7), -1); // 181/128 < √2
-/// assert_eq!(s.sign_at(&BigInt::from(-182), 7), 1); // -182/128 < -√2
-/// assert_eq!(s.sign_at(&BigInt::from(-4), 1), 1);
-/// ```
 pub struct DyadicSigner<'a> {
     p: Cow<'a, ZPoly>,
     /// The coefficients, `width` limbs each.
@@ -382,12 +359,17 @@ impl<'a> DyadicSigner<'a> {
         if c.is_empty() {
             return 0;
         }
+        crate::budget::check();
         if let Some(s) = self.sign_at_fixed(m, k) {
             return s;
         }
+        let long = c.len() > SHORT;
         let mut acc = c[c.len() - 1].clone();
         let mut sh = 0u64;
         for ci in c.iter().rev().skip(1) {
+            if long {
+                crate::budget::check();
+            }
             sh += k;
             acc *= m;
             if !ci.is_zero() {
@@ -461,7 +443,11 @@ pub fn taylor_shift_one<T>(c: &mut [T])
 where
     T: for<'a> AddAssign<&'a T>,
 {
+    let long = c.len() > SHORT;
     for i in 0..c.len().saturating_sub(1) {
+        if long {
+            crate::budget::check();
+        }
         taylor_shift_stage(&mut c[i..]);
     }
 }
@@ -479,6 +465,10 @@ where
         lo[j] += &hi[0];
     }
 }
+
+/// Polynomials up to this length are short: the budget checks sit in the
+/// loops that repeat their (cheap) passes, not in each pass.
+pub(crate) const SHORT: usize = 32;
 
 /// Reduction of an integer polynomial modulo a prime (Montgomery form).
 pub fn reduce_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
@@ -515,7 +505,11 @@ fn trim(a: &mut Vec<u64>) {
 pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Modulus) {
     let db = b.len() - 1;
     let inv = m.inv(b[db]).expect("leading coefficient is non-zero");
+    let long = db > SHORT;
     while a.len() > db {
+        if long {
+            crate::budget::check();
+        }
         let k = a.len() - 1 - db;
         let t = m.mul(a[a.len() - 1], inv);
         if t != 0 {
@@ -577,6 +571,7 @@ fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     let mut last: Option<ZPoly> = None;
     let mut i = 0;
     loop {
+        crate::budget::check();
         let m = Modulus::new(nth_prime(i));
         i += 1;
         let ra = reduce_mod(a, &m);
@@ -613,11 +608,6 @@ fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     }
 }
 
-/// Sign of a big integer as `Sign`.
-pub fn sign_of(x: &BigInt) -> Sign {
-    x.sign()
-}
-
 impl UPoly<Q> {
     /// Division with remainder over the field Q: `(q, r)` with
     /// `self = q·b + r`, `deg r < deg b`.  Panics if `b` is zero.
@@ -633,6 +623,7 @@ impl UPoly<Q> {
         let mut r: Vec<Q> = self.coeffs().to_vec();
         let mut q = vec![Q::zero(); da - db + 1];
         for k in (0..=da - db).rev() {
+            crate::budget::check();
             let t = &r[k + db] * &inv;
             if !t.is_zero() {
                 for (j, bj) in b.coeffs().iter().enumerate() {
@@ -665,6 +656,7 @@ impl UPoly<Q> {
         let (mut s0, mut s1) = (QPoly::constant(Q::one()), QPoly::zero());
         let (mut t0, mut t1) = (QPoly::zero(), QPoly::constant(Q::one()));
         while !r1.is_zero() {
+            crate::budget::check();
             let (q, r) = r0.divrem(&r1);
             r0 = std::mem::replace(&mut r1, r);
             let s2 = &s0 - &(&q * &s1);
@@ -739,5 +731,52 @@ mod tests {
         let (z, k) = ZPoly::from_q(&p);
         assert_eq!(z, ZPoly::from_i64s(&[2, 0, 3]));
         assert_eq!(z.to_q().map(|c| c * &k), p);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_primitive_part() {
+        use crate::poly::ZPoly;
+        let p = ZPoly::from_i64s(&[4, -6, -2]);
+        assert_eq!(p.primitive_part(), ZPoly::from_i64s(&[-2, 3, 1]));
+    }
+
+    #[test]
+    fn doc_gcd() {
+        use crate::poly::ZPoly;
+        let a = ZPoly::from_i64s(&[-1, 0, 1]); // x^2 - 1
+        let b = ZPoly::from_i64s(&[1, 2, 1]); // (x + 1)^2
+        assert_eq!(a.gcd(&b), ZPoly::from_i64s(&[1, 1]));
+    }
+
+    #[test]
+    fn doc_squarefree_decomposition() {
+        use crate::poly::ZPoly;
+        // (x - 1)^2 (x + 2)
+        let p = ZPoly::from_i64s(&[2, -3, 0, 1]);
+        let f = p.squarefree_decomposition();
+        assert_eq!(
+            f,
+            vec![
+                (ZPoly::from_i64s(&[2, 1]), 1),
+                (ZPoly::from_i64s(&[-1, 1]), 2)
+            ]
+        );
+    }
+
+    #[test]
+    fn doc_dyadicsigner() {
+        use crate::poly::ZPoly;
+        use crate::poly::zpoly::DyadicSigner;
+        use num_bigint::BigInt;
+        let p = ZPoly::from_i64s(&[-2, 0, 1]); // x^2 - 2
+        let s = DyadicSigner::new(&p);
+        assert_eq!(s.sign_at(&BigInt::from(181), 7), -1); // 181/128 < √2
+        assert_eq!(s.sign_at(&BigInt::from(-182), 7), 1); // -182/128 < -√2
+        assert_eq!(s.sign_at(&BigInt::from(-4), 1), 1);
     }
 }

@@ -1,10 +1,13 @@
-//! Output: JSON values (SPEC field names) and human-readable text.  This is
-//! the only layer that formats results; the computations return plain data.
+//! Output: the JSON of `--json` (feature `serde`) and the human-readable
+//! text.  This is the only layer that formats results; the computations
+//! return plain data.
 
-mod kernel;
-mod natural;
-mod tangent;
+#[cfg(feature = "serde")]
+mod json;
+mod text;
 
-pub use kernel::{alg_json, resultant_human, resultant_json, roots_human, roots_json, table};
-pub use natural::{natural_human, natural_json};
-pub use tangent::{alg_json_in, qsqrt_json, tangent_human, tangent_json, upoly_string};
+#[cfg(feature = "serde")]
+pub use json::{
+    alg_json, natural_input_json, natural_json, resultant_json, roots_json, tangent_json,
+};
+pub use text::{natural_human, roots_human, tangent_human, upoly_string};

@@ -10,61 +10,75 @@ use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
-/// An exact real algebraic number.
+/// An exact real algebraic number: a rational, or the unique root of a
+/// square-free integer polynomial in an isolating interval with rational
+/// ends.
+///
+/// Comparison (`==`, `<`, [`Ord`]) is exact: equality is decided by a gcd
+/// of the defining polynomials, order by refining the intervals.  Equal
+/// numbers hash equally whatever their defining polynomials, so real
+/// algebraic numbers can be sorted and used as keys.
+///
+/// ```
+/// use quadsect::{IntPoly, RealAlg, Rational};
+/// let r = "u^2 - 2".parse::<IntPoly>().unwrap().real_roots();
+/// let sqrt2 = &r[1];
+/// assert!(*sqrt2 > RealAlg::from(Rational::new(7.into(), 5.into())));
+/// assert_eq!(sqrt2.approx(10), "1.414213562");
+/// // the same number from another polynomial and interval
+/// let p: IntPoly = "u^4 - 4".parse().unwrap();
+/// let other = RealAlg::new(&p, &Rational::from_integer(1.into()), &Rational::from_integer(2.into())).unwrap();
+/// assert_eq!(sqrt2, &other);
+/// ```
+#[derive(Clone)]
+pub struct RealAlg {
+    repr: Repr,
+}
+
+/// The representation: the invariant of `Root` is that `poly` is
+/// square-free, primitive, with a positive leading coefficient, and has
+/// exactly one root in the open interval `(lo, hi)`, with neither end a
+/// root.
 #[derive(Clone, Debug)]
-pub enum RealAlg {
-    /// A rational number.
+enum Repr {
     Rational(Q),
-    /// The unique root of `poly` (square-free, primitive, positive leading
-    /// coefficient) in the open interval `(lo, hi)`; neither end is a root.
-    Root {
-        /// Defining polynomial.
-        poly: ZPoly,
-        /// Lower end of the isolating interval.
-        lo: Q,
-        /// Upper end.
-        hi: Q,
-    },
+    Root { poly: ZPoly, lo: Q, hi: Q },
 }
 
 impl RealAlg {
     /// A rational value.
     pub fn rational(q: Q) -> RealAlg {
-        RealAlg::Rational(q)
+        RealAlg {
+            repr: Repr::Rational(q),
+        }
     }
 
     /// The root of the square-free `poly` isolated by `iv`.  An exact
     /// interval gives a rational.
-    pub fn from_interval(poly: &ZPoly, iv: &RootInterval) -> RealAlg {
+    pub(crate) fn from_interval(poly: &ZPoly, iv: &RootInterval) -> RealAlg {
         Self::from_primitive(&poly.primitive_part(), iv)
     }
 
     /// [`RealAlg::from_interval`] for a `poly` already primitive with a
     /// positive leading coefficient (e.g. from
     /// [`ZPoly::squarefree_part`]): no content computed again.
-    pub fn from_primitive(poly: &ZPoly, iv: &RootInterval) -> RealAlg {
+    pub(crate) fn from_primitive(poly: &ZPoly, iv: &RootInterval) -> RealAlg {
         debug_assert!(poly.content().is_one() && poly.lc().is_positive());
         if iv.is_exact() {
-            RealAlg::Rational(iv.lo.clone())
+            RealAlg::rational(iv.lo.clone())
         } else {
-            RealAlg::Root {
-                poly: poly.clone(),
-                lo: iv.lo.clone(),
-                hi: iv.hi.clone(),
+            RealAlg {
+                repr: Repr::Root {
+                    poly: poly.clone(),
+                    lo: iv.lo.clone(),
+                    hi: iv.hi.clone(),
+                },
             }
         }
     }
 
     /// All real roots of `p` (any non-zero polynomial), increasing.
-    ///
-    /// ```
-    /// use quadsect::roots::RealAlg;
-    /// use quadsect::poly::ZPoly;
-    /// let r = RealAlg::roots_of(&ZPoly::from_i64s(&[-2, 0, 1]));
-    /// assert_eq!(r.len(), 2);
-    /// assert_eq!(r[0].approx(6), "-1.41421");
-    /// ```
-    pub fn roots_of(p: &ZPoly) -> Vec<RealAlg> {
+    pub(crate) fn roots_of(p: &ZPoly) -> Vec<RealAlg> {
         if p.degree().unwrap_or(0) == 0 {
             return vec![];
         }
@@ -84,7 +98,7 @@ impl RealAlg {
     /// 2^-2048) — at that width the test is complete, since a rational root
     /// `a/b` has `b | lc` and two such rationals are `1/lc²` apart.
     pub fn simplify(&self) -> RealAlg {
-        let RealAlg::Root { poly, .. } = self else {
+        let Repr::Root { poly, .. } = &self.repr else {
             return self.clone();
         };
         if super::rational::no_rational_root_sieve(poly) {
@@ -98,10 +112,10 @@ impl RealAlg {
             if c.as_rational().is_some() {
                 return c;
             }
-            if let RealAlg::Root { poly, lo, hi } = &c {
+            if let Repr::Root { poly, lo, hi } = &c.repr {
                 let cand = super::rational::simplest_rational_in(lo, hi);
                 if poly.sign_at(&cand) == 0 {
-                    return RealAlg::Rational(cand);
+                    return RealAlg::rational(cand);
                 }
             }
             if bits >= complete {
@@ -114,17 +128,17 @@ impl RealAlg {
 
     /// The isolating interval `(lo, hi)` (equal ends for a rational).
     pub fn interval(&self) -> (Q, Q) {
-        match self {
-            RealAlg::Rational(q) => (q.clone(), q.clone()),
-            RealAlg::Root { lo, hi, .. } => (lo.clone(), hi.clone()),
+        match &self.repr {
+            Repr::Rational(q) => (q.clone(), q.clone()),
+            Repr::Root { lo, hi, .. } => (lo.clone(), hi.clone()),
         }
     }
 
     /// The defining polynomial (`d·u - n` for a rational `n/d`).
     pub fn poly(&self) -> ZPoly {
-        match self {
-            RealAlg::Rational(q) => ZPoly::new(vec![-q.numer().clone(), q.denom().clone()]),
-            RealAlg::Root { poly, .. } => poly.clone(),
+        match &self.repr {
+            Repr::Rational(q) => ZPoly::new(vec![-q.numer().clone(), q.denom().clone()]),
+            Repr::Root { poly, .. } => poly.clone(),
         }
     }
 
@@ -135,8 +149,8 @@ impl RealAlg {
 
     /// True when the value is rational (known exactly).
     pub fn as_rational(&self) -> Option<&Q> {
-        match self {
-            RealAlg::Rational(q) => Some(q),
+        match &self.repr {
+            Repr::Rational(q) => Some(q),
             _ => None,
         }
     }
@@ -144,14 +158,14 @@ impl RealAlg {
     /// Bisects the isolating interval once (a rational stays as it is; a
     /// midpoint that is the root turns the number into a rational).
     pub fn bisect(&mut self) {
-        if let RealAlg::Root { poly, lo, hi } = self {
+        if let Repr::Root { poly, lo, hi } = &mut self.repr {
             let mut iv = RootInterval {
                 lo: lo.clone(),
                 hi: hi.clone(),
             };
             bisect_once(poly, &mut iv);
             if iv.is_exact() {
-                *self = RealAlg::Rational(iv.lo);
+                self.repr = Repr::Rational(iv.lo);
             } else {
                 *lo = iv.lo;
                 *hi = iv.hi;
@@ -161,14 +175,14 @@ impl RealAlg {
 
     /// Refines until the interval is at most `width` wide.
     pub fn refine_to(&mut self, width: &Q) {
-        if let RealAlg::Root { poly, lo, hi } = self {
+        if let Repr::Root { poly, lo, hi } = &mut self.repr {
             let mut iv = RootInterval {
                 lo: lo.clone(),
                 hi: hi.clone(),
             };
             refine(poly, &mut iv, width);
             if iv.is_exact() {
-                *self = RealAlg::Rational(iv.lo);
+                self.repr = Repr::Rational(iv.lo);
             } else {
                 *lo = iv.lo;
                 *hi = iv.hi;
@@ -187,9 +201,9 @@ impl RealAlg {
 
     /// Decimal approximation with `digits` significant digits.
     pub fn approx(&self, digits: usize) -> String {
-        match self {
-            RealAlg::Rational(q) => approx_decimal(q, digits),
-            RealAlg::Root { lo, hi, .. } => {
+        match &self.repr {
+            Repr::Rational(q) => approx_decimal(q, digits),
+            Repr::Root { lo, hi, .. } => {
                 // enough bits for the requested relative precision
                 let mag = lo.numer().bits().max(hi.numer().bits()) as i64
                     - lo.denom().bits().min(hi.denom().bits()) as i64;
@@ -200,15 +214,15 @@ impl RealAlg {
     }
 
     /// Exact sign of the number: -1, 0 or 1.
-    pub fn sign(&self) -> i32 {
+    pub fn signum(&self) -> i32 {
         self.cmp_rational(&Q::zero()) as i32
     }
 
     /// Exact comparison with a rational.
     pub fn cmp_rational(&self, r: &Q) -> Ordering {
-        match self {
-            RealAlg::Rational(q) => q.cmp(r),
-            RealAlg::Root { poly, lo, hi } => {
+        match &self.repr {
+            Repr::Rational(q) => q.cmp(r),
+            Repr::Root { poly, lo, hi } => {
                 if r <= lo {
                     return Ordering::Greater;
                 }
@@ -233,11 +247,11 @@ impl RealAlg {
     /// by the gcd of the defining polynomials; otherwise the intervals are
     /// refined until they separate.
     pub fn cmp_exact(&self, other: &RealAlg) -> Ordering {
-        match (self, other) {
-            (RealAlg::Rational(a), RealAlg::Rational(b)) => a.cmp(b),
-            (_, RealAlg::Rational(b)) => self.cmp_rational(b),
-            (RealAlg::Rational(a), _) => other.cmp_rational(a).reverse(),
-            (RealAlg::Root { poly: pa, .. }, RealAlg::Root { poly: pb, .. }) => {
+        match (&self.repr, &other.repr) {
+            (Repr::Rational(a), Repr::Rational(b)) => a.cmp(b),
+            (_, Repr::Rational(b)) => self.cmp_rational(b),
+            (Repr::Rational(a), _) => other.cmp_rational(a).reverse(),
+            (Repr::Root { poly: pa, .. }, Repr::Root { poly: pb, .. }) => {
                 let mut a = self.clone();
                 let mut b = other.clone();
                 let g = if pa == pb { pa.clone() } else { pa.gcd(pb) };
@@ -281,9 +295,9 @@ impl RealAlg {
     /// otherwise the interval is refined until `q` has no root in it
     /// (Descartes' test on the interval), and `q` is evaluated at an end.
     pub fn sign_of(&self, q: &ZPoly) -> i32 {
-        match self {
-            RealAlg::Rational(r) => q.sign_at(r),
-            RealAlg::Root { poly, lo, hi } => {
+        match &self.repr {
+            Repr::Rational(r) => q.sign_at(r),
+            Repr::Root { poly, lo, hi } => {
                 if q.is_zero() {
                     return 0;
                 }
@@ -325,6 +339,191 @@ impl RealAlg {
             [fmt_q(&lo), fmt_q(&hi)],
             self.approx(20),
         )
+    }
+}
+
+impl RealAlg {
+    /// The root of `poly` in the closed interval `[lo, hi]`, checked: `poly`
+    /// must be non-zero and have exactly one distinct real root there
+    /// (`lo = hi` asks for the rational `lo`, which must be a root).  The
+    /// polynomial need not be square-free: its square-free part is used.
+    ///
+    /// ```
+    /// use quadsect::{IntPoly, RealAlg, Rational, ErrorKind};
+    /// let p: IntPoly = "u^2 - 2".parse().unwrap();
+    /// let r = |n: i64| Rational::from_integer(n.into());
+    /// assert!(RealAlg::new(&p, &r(1), &r(2)).is_ok());
+    /// assert_eq!(RealAlg::new(&p, &r(0), &r(1)).unwrap_err().kind(), ErrorKind::Input); // no root
+    /// assert!(RealAlg::new(&p, &r(-2), &r(2)).is_err()); // two roots
+    /// let sq: IntPoly = "(u^2 - 2)^2".parse().unwrap(); // repeated roots are fine
+    /// assert_eq!(RealAlg::new(&sq, &r(1), &r(2)).unwrap().approx(5), "1.4142");
+    /// ```
+    pub fn new(poly: &crate::poly::IntPoly, lo: &Q, hi: &Q) -> Result<RealAlg, crate::Error> {
+        use crate::error::{Error, ErrorKind};
+        let p = poly.inner();
+        if p.is_zero() {
+            return Err(Error::new(
+                ErrorKind::ZeroPolynomial,
+                "the zero polynomial defines no number",
+            ));
+        }
+        if lo > hi {
+            return Err(Error::new(
+                ErrorKind::Input,
+                format!("the interval [{}, {}] is empty", fmt_q(lo), fmt_q(hi)),
+            ));
+        }
+        if lo == hi {
+            return if p.sign_at(lo) == 0 {
+                Ok(RealAlg::rational(lo.clone()))
+            } else {
+                Err(Error::new(
+                    ErrorKind::Input,
+                    format!("{} is not a root of the polynomial", fmt_q(lo)),
+                ))
+            };
+        }
+        let inside: Vec<RealAlg> = RealAlg::roots_of(p)
+            .into_iter()
+            .filter(|r| {
+                r.cmp_rational(lo) != Ordering::Less && r.cmp_rational(hi) != Ordering::Greater
+            })
+            .collect();
+        match inside.len() {
+            1 => Ok(inside.into_iter().next().expect("one root")),
+            n => Err(Error::new(
+                ErrorKind::Input,
+                format!(
+                    "the polynomial has {n} distinct real roots in [{}, {}]; an isolating interval holds exactly one",
+                    fmt_q(lo),
+                    fmt_q(hi)
+                ),
+            )),
+        }
+    }
+
+    /// The exact sign.
+    pub fn sign(&self) -> crate::number::Sign {
+        crate::number::Sign::from_i32(self.signum())
+    }
+
+    /// The defining polynomial as a public [`crate::IntPoly`] (square-free,
+    /// primitive, positive leading coefficient; `d·u − n` for a rational).
+    pub fn defining_poly(&self) -> crate::poly::IntPoly {
+        crate::poly::IntPoly::from_inner(self.poly())
+    }
+
+    /// `floor(2^k · self)`, exactly (used for hashing: equal numbers give
+    /// equal values whatever their representation).
+    fn floor_scaled(&self, k: usize) -> BigInt {
+        let scale = Q::from_integer(BigInt::one() << k);
+        let floor = |x: &Q| (x * &scale).floor().to_integer();
+        let mut c = self.clone();
+        loop {
+            let (poly, lo, hi) = match &c.repr {
+                Repr::Rational(q) => return floor(q),
+                Repr::Root { poly, lo, hi } => (poly, lo, hi),
+            };
+            let (a, b) = (floor(lo), floor(hi));
+            if a == b {
+                // k/2^s <= lo < x < hi < (k+1)/2^s
+                return a;
+            }
+            // the grid point just above lo lies in (lo, hi]
+            let g = Q::new(&a + BigInt::one(), BigInt::one() << k);
+            if &g < hi && poly.sign_at(&g) == 0 {
+                return a + BigInt::one();
+            }
+            c.bisect();
+        }
+    }
+}
+
+impl From<Q> for RealAlg {
+    fn from(q: Q) -> RealAlg {
+        RealAlg::rational(q)
+    }
+}
+
+impl From<i64> for RealAlg {
+    fn from(n: i64) -> RealAlg {
+        RealAlg::rational(Q::from_integer(n.into()))
+    }
+}
+
+impl PartialEq for RealAlg {
+    fn eq(&self, other: &RealAlg) -> bool {
+        self.cmp_exact(other) == Ordering::Equal
+    }
+}
+
+impl Eq for RealAlg {}
+
+impl PartialOrd for RealAlg {
+    fn partial_cmp(&self, other: &RealAlg) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for RealAlg {
+    /// Exact order (see [`RealAlg::cmp_exact`]).
+    fn cmp(&self, other: &RealAlg) -> Ordering {
+        self.cmp_exact(other)
+    }
+}
+
+impl PartialEq<Q> for RealAlg {
+    fn eq(&self, other: &Q) -> bool {
+        self.cmp_rational(other) == Ordering::Equal
+    }
+}
+
+impl PartialOrd<Q> for RealAlg {
+    fn partial_cmp(&self, other: &Q) -> Option<Ordering> {
+        Some(self.cmp_rational(other))
+    }
+}
+
+impl std::hash::Hash for RealAlg {
+    /// Hashes `floor(2^32 · x)`: consistent with the exact equality.
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.floor_scaled(32).hash(state);
+    }
+}
+
+impl std::fmt::Debug for RealAlg {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.repr {
+            Repr::Rational(q) => write!(f, "RealAlg({})", fmt_q(q)),
+            Repr::Root { poly, lo, hi } => write!(
+                f,
+                "RealAlg(root of {} in ({}, {}) ≈ {})",
+                MPoly::from_univariate(&poly.to_q(), U).to_string_canonical(),
+                fmt_q(lo),
+                fmt_q(hi),
+                self.approx(12)
+            ),
+        }
+    }
+}
+
+impl std::fmt::Display for RealAlg {
+    /// A rational as `p/q`; otherwise `root of P(u) in (lo, hi) ≈ 1.41421356237`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.repr {
+            Repr::Rational(q) => f.write_str(&fmt_q(q)),
+            Repr::Root { .. } => {
+                let (lo, hi) = self.interval();
+                write!(
+                    f,
+                    "root of {} in ({}, {}) ≈ {}",
+                    self.poly_string(),
+                    fmt_q(&lo),
+                    fmt_q(&hi),
+                    self.approx(12)
+                )
+            }
+        }
     }
 }
 

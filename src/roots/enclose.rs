@@ -12,39 +12,10 @@ use super::algebraic::RealAlg;
 use super::isolate::{RootInterval, bisect_once, isolate_squarefree};
 use crate::elim::resultant_mpoly;
 use crate::number::{Q, dyadic_floor};
-use crate::poly::mpoly::{MPoly, NVARS, T, U};
+use crate::poly::mpoly::{MPoly, T, U};
 use crate::poly::{QPoly, ZPoly};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
-
-/// The smallest and largest of four rationals (interval products).
-fn min_max(c: [Q; 4]) -> (Q, Q) {
-    let mut mn = c[0].clone();
-    let mut mx = c[0].clone();
-    for v in &c[1..] {
-        if *v < mn {
-            mn = v.clone();
-        }
-        if *v > mx {
-            mx = v.clone();
-        }
-    }
-    (mn, mx)
-}
-
-/// An enclosure `[lo, hi]` of `p(x)` for all `x ∈ [a, b]` (rational interval
-/// Horner scheme; exact rational arithmetic, so it is a true enclosure).
-pub fn eval_interval(p: &QPoly, a: &Q, b: &Q) -> (Q, Q) {
-    let mut lo = Q::zero();
-    let mut hi = Q::zero();
-    for c in p.coeffs().iter().rev() {
-        // [lo, hi] * [a, b]
-        let (mn, mx) = min_max([&lo * a, &lo * b, &hi * a, &hi * b]);
-        lo = mn + c;
-        hi = mx + c;
-    }
-    (lo, hi)
-}
 
 /// An unreduced rational `n / d` with `d > 0`: enclosures are built from
 /// products and sums only, and reduced (or rounded) once at the end.
@@ -135,17 +106,10 @@ fn round_outward(lo: &Frac, hi: &Frac) -> (Q, Q) {
 /// and `R = 2^e ≥ max(|a|, |b|)`.  One exact evaluation and one integer sum
 /// (no gcd: the endpoints are rounded outward to dyadic rationals), much
 /// cheaper than interval Horner, and as tight as the interval shrinks.
+#[cfg(test)]
 pub fn enclose_mean_value(p: &ZPoly, a: &Q, b: &Q) -> (Q, Q) {
     let (c, r) = mean_value_ball(p, a, b);
     round_outward(&c.add(&r.neg()), &c.add(&r))
-}
-
-/// Enclosure of `num(x)/den(x)` on `[a, b]`, or `None` when the enclosure of
-/// `den` contains 0.
-pub fn eval_ratio_interval(num: &QPoly, den: &QPoly, a: &Q, b: &Q) -> Option<(Q, Q)> {
-    let n = ZPoly::from_q(num);
-    let d = ZPoly::from_q(den);
-    ratio_enclosure(&n, &d, a, b)
 }
 
 /// `k·P` enclosed on `[a, b]` as unreduced endpoints (low, high).
@@ -218,17 +182,6 @@ pub fn value_polynomial(phi: &ZPoly, num: &QPoly, den: &QPoly) -> ZPoly {
 
 /// The exact value `num(α)/den(α)` as a real algebraic number, for a real
 /// algebraic `α` with `den(α) != 0`.  Returns `None` only if `den(α) = 0`.
-///
-/// ```
-/// use quadsect::roots::{RealAlg, value_at};
-/// use quadsect::poly::{QPoly, ZPoly};
-/// use quadsect::number::qi;
-/// // α = √2, value α² + 1 = 3
-/// let a = RealAlg::roots_of(&ZPoly::from_i64s(&[-2, 0, 1]))[1].clone();
-/// let num = QPoly::new(vec![qi(1), qi(0), qi(1)]);
-/// let v = value_at(&a, &num, &QPoly::constant(qi(1))).unwrap();
-/// assert_eq!(v.as_rational(), Some(&qi(3)));
-/// ```
 pub fn value_at(alpha: &RealAlg, num: &QPoly, den: &QPoly) -> Option<RealAlg> {
     values_at(&alpha.poly(), std::slice::from_ref(alpha), num, den).pop()?
 }
@@ -274,7 +227,7 @@ fn values_inner(
                 return None;
             }
             if let Some(a) = alpha.as_rational() {
-                return Some(RealAlg::Rational(eval_q(num, a) / eval_q(den, a)));
+                return Some(RealAlg::rational(eval_q(num, a) / eval_q(den, a)));
             }
             let (rp, ivs) = r.get_or_insert_with(|| {
                 let rp = match known {
@@ -289,7 +242,7 @@ fn values_inner(
             loop {
                 if let Some(x) = a.as_rational() {
                     let x = x.clone();
-                    return Some(RealAlg::Rational(eval_q(num, &x) / eval_q(den, &x)));
+                    return Some(RealAlg::rational(eval_q(num, &x) / eval_q(den, &x)));
                 }
                 let (lo, hi) = a.interval();
                 if let Some((vl, vh)) = ratio_enclosure(nzq, dzq, &lo, &hi) {
@@ -320,11 +273,19 @@ pub fn eval_q(p: &QPoly, x: &Q) -> Q {
     acc
 }
 
-/// Exact value of a multivariate polynomial with `x`, `y`, `z` given.
-pub fn eval_xyz(p: &crate::poly::QMPoly, x: &Q, y: &Q, z: &Q) -> Q {
-    let mut pt: [Q; NVARS] = std::array::from_fn(|_| Q::zero());
-    pt[0] = x.clone();
-    pt[1] = y.clone();
-    pt[2] = z.clone();
-    p.eval(&pt)
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_value_at() {
+        use crate::number::qi;
+        use crate::poly::{QPoly, ZPoly};
+        use crate::roots::{RealAlg, value_at};
+        // α = √2, value α² + 1 = 3
+        let a = RealAlg::roots_of(&ZPoly::from_i64s(&[-2, 0, 1]))[1].clone();
+        let num = QPoly::new(vec![qi(1), qi(0), qi(1)]);
+        let v = value_at(&a, &num, &QPoly::constant(qi(1))).unwrap();
+        assert_eq!(v.as_rational(), Some(&qi(3)));
+    }
 }

@@ -145,7 +145,11 @@ fn descartes_unit<T: TreeInt>(q: &[T]) -> usize {
     let mut c: Vec<T> = q.iter().rev().cloned().collect();
     let n = c.len();
     let mut v = SignChanges::default();
+    let long = n > crate::poly::zpoly::SHORT;
     for i in 0..n.saturating_sub(1) {
+        if long {
+            crate::budget::check();
+        }
         taylor_shift_stage(&mut c[i..]);
         v.push(c[i].sign_i8());
         if v.count >= 2 {
@@ -253,6 +257,12 @@ fn vca_step<T: TreeInt>(poly: &[T], node: Node, out: &mut Vec<Found>) -> Option<
 fn isolate_unit_bigint(poly: Vec<BigInt>, node: Node, out: &mut Vec<Found>) {
     let mut stack = vec![(poly, node)];
     while let Some((poly, node)) = stack.pop() {
+        let bits = poly.iter().map(|c| c.bits()).max().unwrap_or(0);
+        crate::budget::check_size(
+            "a polynomial of the root-isolation tree",
+            poly.len() * (stack.len() + 1),
+            bits,
+        );
         if let Some(halves) = vca_step(&poly, node, out) {
             stack.extend(halves);
         }
@@ -330,6 +340,7 @@ impl FixedTree {
             width,
         });
         while let Some(p) = tree.pending.pop() {
+            crate::budget::check();
             tree.step(p);
         }
         tree
@@ -625,15 +636,6 @@ fn fix_endpoints_rational(p: &ZPoly, iv: &mut RootInterval) {
 
 /// Isolating intervals of all distinct real roots of `p` (any non-zero
 /// integer polynomial; its square-free part is used), sorted and disjoint.
-///
-/// ```
-/// use quadsect::roots::isolate_real_roots;
-/// use quadsect::poly::ZPoly;
-/// let p = ZPoly::from_i64s(&[0, -2, 0, 1]); // x^3 - 2x
-/// let iv = isolate_real_roots(&p);
-/// assert_eq!(iv.len(), 3);
-/// assert!(iv[1].is_exact()); // the root 0
-/// ```
 pub fn isolate_real_roots(p: &ZPoly) -> Vec<RootInterval> {
     if p.degree().unwrap_or(0) == 0 {
         return vec![];
@@ -986,5 +988,20 @@ mod tests {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_isolate_real_roots() {
+        use crate::poly::ZPoly;
+        use crate::roots::isolate_real_roots;
+        let p = ZPoly::from_i64s(&[0, -2, 0, 1]); // x^3 - 2x
+        let iv = isolate_real_roots(&p);
+        assert_eq!(iv.len(), 3);
+        assert!(iv[1].is_exact()); // the root 0
     }
 }

@@ -19,16 +19,21 @@ pub mod rurcheck;
 mod sturm;
 mod zerodim;
 
-pub use algebraic::{RealAlg, has_root_in_open, separate};
-pub use enclose::{
-    enclose_mean_value, eval_interval, eval_q, eval_ratio_interval, eval_xyz, ratio_enclosure,
-    value_at, value_polynomial, values_at, values_with,
-};
-pub use isolate::{
-    RootInterval, bisect_once, descartes_bounds, isolate_real_roots, isolate_squarefree, refine,
-    sign_variations,
-};
-pub use rational::{no_rational_root_sieve, rational_roots, simplest_rational_in, split_cubic};
+pub use algebraic::{RealAlg, separate};
+pub use enclose::{eval_q, value_at, value_polynomial, values_at, values_with};
+pub use isolate::{RootInterval, bisect_once, isolate_real_roots, isolate_squarefree};
+pub use rational::{simplest_rational_in, split_cubic};
 pub use report::{RealRoot, RootReport, analyze_roots};
-pub use sturm::{Point, SturmSequence, count_real_roots_in};
+pub use sturm::SturmSequence;
 pub use zerodim::{GENERIC_FORMS, Rur, solve_zero_dim};
+
+// Used by the property tests (independent deciders checked against each
+// other: Sturm counts, Descartes bounds, interval enclosures).
+#[cfg(test)]
+pub use enclose::{enclose_mean_value, ratio_enclosure};
+#[cfg(test)]
+pub use isolate::refine;
+#[cfg(test)]
+pub use rational::{no_rational_root_sieve, rational_roots};
+#[cfg(test)]
+pub use sturm::count_real_roots_in;

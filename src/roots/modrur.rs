@@ -309,8 +309,8 @@ fn image_mod_p(
 fn qmpoly_mod(fp: &Fp, p: &QMPoly) -> Option<ModPoly> {
     let mut out: ModPoly = Vec::with_capacity(p.len());
     for (e, c) in p.terms() {
-        let d = fp.from_big(c.denom());
-        let n = fp.from_big(c.numer());
+        let d = fp.reduce_big(c.denom());
+        let n = fp.reduce_big(c.numer());
         out.push((mono(e[X], e[Y], e[Z]), fp.mul(n, fp.inv(d)?) as u32));
     }
     crate::elim::f4::normalize(&mut out);
@@ -383,13 +383,13 @@ fn candidate_of(values: &[BigInt], m: &BigInt, n: usize) -> Option<Candidate> {
 
 /// Does the candidate reduce to the residues modulo another prime?
 fn agrees_mod(fp: &Fp, cand: &Candidate, residues: &[u64]) -> bool {
-    let Some(di) = fp.inv(fp.from_big(&cand.den)) else {
+    let Some(di) = fp.inv(fp.reduce_big(&cand.den)) else {
         return false;
     };
     cand.nums
         .iter()
         .zip(residues)
-        .all(|(x, &r)| fp.mul(fp.from_big(x), di) == r)
+        .all(|(x, &r)| fp.mul(fp.reduce_big(x), di) == r)
 }
 
 /// The exact checks of a candidate: soundness of every zero, returned as
@@ -591,8 +591,8 @@ pub fn solve_modular(
         }
         // the probe (the constant coefficient of f) against this prime
         let probe_ok = probe.as_ref().is_some_and(|(pn, pd)| {
-            fp.inv(fp.from_big(pd))
-                .is_some_and(|di| fp.mul(fp.from_big(pn), di) == img.residues[0])
+            fp.inv(fp.reduce_big(pd))
+                .is_some_and(|di| fp.mul(fp.reduce_big(pn), di) == img.residues[0])
         });
         if !probe_ok {
             probe = None;

@@ -30,7 +30,11 @@ fn eval_with_derivative(p: &ZPoly, m: &BigInt, k: u64) -> (BigInt, BigInt) {
     let n = c.len() - 1;
     let mut v = c[n].clone();
     let mut dv = BigInt::zero();
+    crate::budget::check();
     for j in (0..n).rev() {
+        if n > crate::poly::zpoly::SHORT {
+            crate::budget::check();
+        }
         dv = &dv * m + &v;
         v *= m;
         if !c[j].is_zero() {

@@ -52,6 +52,7 @@ fn simplest_big(mut a: BigInt, mut b: BigInt, mut c: BigInt, mut d: BigInt) -> Q
     let (mut p0, mut p1) = (BigInt::zero(), BigInt::one());
     let (mut q0, mut q1) = (BigInt::one(), BigInt::zero());
     loop {
+        crate::budget::check();
         // floor of the lower end; the upper end may be ∞ (d = 0)
         let (fa, ra) = num_integer::Integer::div_rem(&a, &b);
         let candidate = &fa + 1u32;
@@ -116,13 +117,6 @@ fn simplest_u128(mut a: u128, mut b: u128, mut c: u128, mut d: u128) -> Option<(
 /// `p mod q`; if `p mod q` has no root in `F_q` for one such prime, `p` has
 /// no rational root.  `false` means "unknown" (then a complete test is
 /// needed).  Cost: at most a few thousand word operations.
-///
-/// ```
-/// use quadsect::roots::no_rational_root_sieve;
-/// use quadsect::poly::ZPoly;
-/// assert!(no_rational_root_sieve(&ZPoly::from_i64s(&[-2, 0, 1]))); // x^2 - 2
-/// assert!(!no_rational_root_sieve(&ZPoly::from_i64s(&[-1, 3, -1, 3]))); // (3x - 1)(x^2 + 1)
-/// ```
 pub fn no_rational_root_sieve(p: &ZPoly) -> bool {
     const PRIMES: [u64; 16] = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59];
     if p.degree().unwrap_or(0) == 0 {
@@ -155,15 +149,6 @@ fn small_mod(a: &BigInt, q: u64) -> u64 {
 }
 
 /// All rational roots of a non-zero integer polynomial, increasing.
-///
-/// ```
-/// use quadsect::roots::rational_roots;
-/// use quadsect::poly::ZPoly;
-/// use quadsect::number::q;
-/// // (3x - 1)(x^2 - 2)
-/// let p = ZPoly::from_i64s(&[2, -6, -1, 3]);
-/// assert_eq!(rational_roots(&p), vec![q(1, 3)]);
-/// ```
 pub fn rational_roots(p: &ZPoly) -> Vec<Q> {
     if p.degree().unwrap_or(0) == 0 {
         return vec![];
@@ -288,5 +273,28 @@ mod brute {
                 );
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_no_rational_root_sieve() {
+        use crate::poly::ZPoly;
+        use crate::roots::no_rational_root_sieve;
+        assert!(no_rational_root_sieve(&ZPoly::from_i64s(&[-2, 0, 1]))); // x^2 - 2
+        assert!(!no_rational_root_sieve(&ZPoly::from_i64s(&[-1, 3, -1, 3]))); // (3x - 1)(x^2 + 1)
+    }
+
+    #[test]
+    fn doc_rational_roots() {
+        use crate::number::q;
+        use crate::poly::ZPoly;
+        use crate::roots::rational_roots;
+        // (3x - 1)(x^2 - 2)
+        let p = ZPoly::from_i64s(&[2, -6, -1, 3]);
+        assert_eq!(rational_roots(&p), vec![q(1, 3)]);
     }
 }

@@ -56,13 +56,6 @@ fn overlap(a: &RootInterval, b: &RootInterval) -> bool {
 }
 
 /// Analyses the real roots of a non-zero integer polynomial.
-///
-/// ```
-/// use quadsect::roots::analyze_roots;
-/// use quadsect::poly::ZPoly;
-/// let r = analyze_roots(&ZPoly::from_i64s(&[0, -2, 0, 1])); // x^3 - 2x
-/// assert_eq!((r.positive, r.negative, r.zero_multiplicity), (1, 1, 1));
-/// ```
 pub fn analyze_roots(p: &ZPoly) -> RootReport {
     let mut roots: Vec<RealRoot> = Vec::new();
     for (f, mult) in p.squarefree_decomposition() {
@@ -134,5 +127,18 @@ pub fn analyze_roots(p: &ZPoly) -> RootReport {
         descartes_positive_bound: dp,
         descartes_negative_bound: dn,
         roots,
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_analyze_roots() {
+        use crate::poly::ZPoly;
+        use crate::roots::analyze_roots;
+        let r = analyze_roots(&ZPoly::from_i64s(&[0, -2, 0, 1])); // x^3 - 2x
+        assert_eq!((r.positive, r.negative, r.zero_multiplicity), (1, 1, 1));
     }
 }

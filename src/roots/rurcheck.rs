@@ -103,7 +103,7 @@ struct PrimeData {
 
 impl PrimeData {
     fn new(fp: Fp, g: &[ZPoly; 3], phi: &ZPoly, kmax: u32) -> PrimeData {
-        let red = |p: &ZPoly| -> Vec<u64> { p.coeffs().iter().map(|c| fp.from_big(c)).collect() };
+        let red = |p: &ZPoly| -> Vec<u64> { p.coeffs().iter().map(|c| fp.reduce_big(c)).collect() };
         let (z, w) = (red(&g[2]), red(phi));
         // zw[c][e] = Z^c W^e for c + e ≤ kmax
         let mut zw: Vec<Vec<Vec<u64>>> = Vec::with_capacity(kmax as usize + 1);
@@ -156,7 +156,7 @@ impl PrimeData {
                     {
                         for (c, coef) in cs {
                             let t = &self.zw[*c as usize][(k - a - b - c) as usize];
-                            add_scaled(fp, &mut inner, t, fp.from_big(coef));
+                            add_scaled(fp, &mut inner, t, fp.reduce_big(coef));
                         }
                         bi.next();
                     }
@@ -172,7 +172,7 @@ impl PrimeData {
         if !u_coef.is_zero() {
             // − c·u·W^k
             let wk = &self.zw[0][k as usize];
-            let c = fp.neg(fp.from_big(u_coef));
+            let c = fp.neg(fp.reduce_big(u_coef));
             if acc.len() < wk.len() + 1 {
                 acc.resize(wk.len() + 1, 0);
             }
@@ -280,7 +280,7 @@ pub fn vanish_on_roots(
         }
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
-        let dp: Vec<u64> = d.coeffs().iter().map(|c| fp.from_big(c)).collect();
+        let dp: Vec<u64> = d.coeffs().iter().map(|c| fp.reduce_big(c)).collect();
         if dp[dn] == 0 {
             continue;
         }

@@ -10,7 +10,9 @@
 use crate::number::Q;
 use crate::poly::ZPoly;
 use num_bigint::BigInt;
-use num_traits::{Signed, Zero};
+use num_traits::Signed;
+#[cfg(test)]
+use num_traits::Zero;
 
 /// The Sturm sequence of the square-free part of a polynomial.
 #[derive(Clone, Debug)]
@@ -23,7 +25,8 @@ pub struct SturmSequence {
 pub enum Point {
     /// −∞.
     NegInf,
-    /// A rational number.
+    /// A rational number (only the tests count roots in bounded intervals).
+    #[cfg_attr(not(test), allow(dead_code))]
     At(Q),
     /// +∞.
     PosInf,
@@ -83,11 +86,6 @@ impl SturmSequence {
         SturmSequence { seq }
     }
 
-    /// The polynomials of the sequence.
-    pub fn polys(&self) -> &[ZPoly] {
-        &self.seq
-    }
-
     /// Number of sign variations at a point.
     pub fn variations(&self, x: &Point) -> usize {
         let mut last = 0i32;
@@ -119,17 +117,20 @@ impl SturmSequence {
     }
 
     /// Number of distinct positive roots (in `(0, ∞)`).
+    #[cfg(test)]
     pub fn count_positive(&self) -> usize {
         self.count_in(&Point::At(Q::zero()), &Point::PosInf)
     }
 
     /// Number of distinct negative roots (in `(−∞, 0)`).
+    #[cfg(test)]
     pub fn count_negative(&self) -> usize {
         let c = self.count_in(&Point::NegInf, &Point::At(Q::zero()));
         if self.has_root_at_zero() { c - 1 } else { c }
     }
 
     /// True when 0 is a root.
+    #[cfg(test)]
     pub fn has_root_at_zero(&self) -> bool {
         self.seq
             .first()
@@ -154,14 +155,7 @@ fn sign_lc(p: &ZPoly, at_neg_inf: bool) -> i32 {
 }
 
 /// Number of distinct real roots of `p` in `(a, b]`, by a Sturm sequence.
-///
-/// ```
-/// use quadsect::roots::count_real_roots_in;
-/// use quadsect::poly::ZPoly;
-/// use quadsect::number::q;
-/// let p = ZPoly::from_i64s(&[0, -2, 0, 1]); // x^3 - 2x
-/// assert_eq!(count_real_roots_in(&p, &q(-2, 1), &q(0, 1)), 2); // -√2 and 0
-/// ```
+#[cfg(test)]
 pub fn count_real_roots_in(p: &ZPoly, a: &Q, b: &Q) -> usize {
     SturmSequence::new(p).count_in(&Point::At(a.clone()), &Point::At(b.clone()))
 }
@@ -191,5 +185,19 @@ mod tests {
         let m = ZPoly::from_i64s(&[0, 0, 1, -1]).scale(&BigInt::from(-3)); // -3x^2(1-x)... 
         let sm = SturmSequence::new(&m);
         assert_eq!(sm.count_all(), 2);
+    }
+}
+
+#[cfg(test)]
+mod doc_examples {
+    //! The examples that were doc comments of crate-private items.
+
+    #[test]
+    fn doc_count_real_roots_in() {
+        use crate::number::q;
+        use crate::poly::ZPoly;
+        use crate::roots::count_real_roots_in;
+        let p = ZPoly::from_i64s(&[0, -2, 0, 1]); // x^3 - 2x
+        assert_eq!(count_real_roots_in(&p, &q(-2, 1), &q(0, 1)), 2); // -√2 and 0
     }
 }

@@ -153,6 +153,7 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         if chosen.is_some() {
             break;
         }
+        crate::budget::check_now();
         let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
         if let (mp, Some(sol)) = krylov_shape(&mt, &one, &rhs)? {
             chosen = Some(([qi(1), qi(a), qi(b)], mp, sol));

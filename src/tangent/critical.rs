@@ -9,7 +9,7 @@
 //!   rational univariate representation `f(t) = 0, x = X(t), y = Y(t),
 //!   z = Z(t), S = U(t)`.  A critical point is real iff its `t` is a real
 //!   root of `f` (t separates conjugate points), so the real critical values
-//!   are exactly `U(α)` over the real roots α of `f` — the trap of SPEC §3
+//!   are exactly `U(α)` over the real roots α of `f` — the trap of contract §3
 //!   cannot occur.
 //! * **Curves of critical points** ([`LevelSetAnalysis`], symmetric inputs):
 //!   the critical values are the roots of the generator of
@@ -99,13 +99,7 @@ pub enum Outcome {
 
 /// `∇S × ∇E`.
 pub fn cross_gradients(s: &QMPoly, e: &QMPoly) -> [QMPoly; 3] {
-    let gs = [s.derivative(X), s.derivative(Y), s.derivative(Z)];
-    let ge = [e.derivative(X), e.derivative(Y), e.derivative(Z)];
-    [
-        &(&gs[1] * &ge[2]) - &(&gs[2] * &ge[1]),
-        &(&gs[2] * &ge[0]) - &(&gs[0] * &ge[2]),
-        &(&gs[0] * &ge[1]) - &(&gs[1] * &ge[0]),
-    ]
+    crate::geom::vec3::cross(&crate::geom::gradient(s), &crate::geom::gradient(e))
 }
 
 /// Runs the critical-point analysis of S on E.
@@ -127,7 +121,10 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
                 .into_iter()
                 .map(|v| v.expect("denominator 1"))
                 .collect();
-            let elimination = super::judging::eliminate(e, s);
+            // optional: an elimination too large for the size limits is
+            // skipped, like one beyond its own work budget
+            let elimination =
+                crate::budget::run_optional(|| super::judging::eliminate(e, s)).flatten();
             Ok(Outcome::Finite(CriticalAnalysis {
                 generators: gens,
                 rur,
@@ -175,6 +172,7 @@ fn level_has_real_point(e: &Ellipsoid, s: &QMPoly, q: &Q) -> Result<Option<(Rur,
     let cross = cross_gradients(s, &e.poly);
     let sq = s - &MPoly::constant(q.clone());
     for l in GENERIC_FORMS {
+        crate::budget::check_now();
         let det =
             &(&cross[0].scale(&qi(l[0])) + &cross[1].scale(&qi(l[1]))) + &cross[2].scale(&qi(l[2]));
         if let Some(rur) = solve_zero_dim(&[e.poly.clone(), sq.clone(), det], &[])? {
@@ -220,6 +218,7 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
     let mut levels = Vec::new();
     let mut form = [qi(1), qi(2), qi(3)];
     for q in &tests {
+        crate::budget::check_now();
         match level_has_real_point(e, s, q)? {
             Some((rur, f)) => {
                 form = f;
@@ -254,7 +253,7 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
                     None
                 }
             }) {
-                Some(v) => vec![RealAlg::Rational(v)],
+                Some(v) => vec![RealAlg::rational(v)],
                 None => {
                     return Err(Error::internal(
                         "S appears constant on E but its value is not rational",

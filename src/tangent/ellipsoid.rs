@@ -1,249 +1,131 @@
-//! Quadrics as matrices, and the validation of the ellipsoid E (SPEC §2):
-//! degree 2, definite quadratic part, non-empty and not a single point.
+//! The validation of the ellipsoid E (contract §2): degree 2, definite
+//! quadratic part, non-empty and not a single point.
 
 use crate::error::{Error, ErrorKind};
+use crate::geom::{Mat4, QuadricForm, adj3_int, common_denominator};
 use crate::number::Q;
-use crate::poly::QMPoly;
-use crate::poly::mpoly::{MPoly, NVARS};
+use crate::poly::mpoly::MPoly;
+use crate::poly::{Polynomial, QMPoly};
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
-
-/// A polynomial of degree ≤ 2 in x, y, z written as
-/// `q(p) = pᵀ A p + 2 bᵀ p + c` with `A` symmetric.
-#[derive(Clone, Debug, PartialEq)]
-pub struct QuadricForm {
-    /// Symmetric matrix of the quadratic part.
-    pub a: [[Q; 3]; 3],
-    /// Half the linear part.
-    pub b: [Q; 3],
-    /// Constant term.
-    pub c: Q,
-}
-
-/// `k/2` of a reduced rational, without a gcd.
-fn half(k: &Q) -> Q {
-    let n = k.numer();
-    if n.is_even() {
-        Q::new_raw(n >> 1usize, k.denom().clone())
-    } else {
-        Q::new_raw(n.clone(), k.denom() << 1usize)
-    }
-}
-
-fn zero3() -> [Q; 3] {
-    std::array::from_fn(|_| Q::zero())
-}
-
-impl QuadricForm {
-    /// Reads a polynomial of total degree ≤ 2 in x, y, z; `None` otherwise.
-    pub fn from_poly(p: &QMPoly) -> Option<QuadricForm> {
-        if p.total_degree().unwrap_or(0) > 2 || p.vars().iter().any(|&v| v > 2) {
-            return None;
-        }
-        let mut a: [[Q; 3]; 3] = std::array::from_fn(|_| zero3());
-        let mut b = zero3();
-        let mut c = Q::zero();
-        for (e, k) in p.terms() {
-            // the variables of the monomial, with multiplicity (at most two)
-            let mut idx = [0usize; 2];
-            let mut n = 0;
-            for v in 0..3 {
-                for _ in 0..e[v] {
-                    if n == 2 {
-                        return None;
-                    }
-                    idx[n] = v;
-                    n += 1;
-                }
-            }
-            match (n, idx[0], idx[1]) {
-                (0, _, _) => c = k.clone(),
-                (1, i, _) => b[i] = half(k),
-                (_, i, j) if i == j => a[i][i] = k.clone(),
-                (_, i, j) => {
-                    a[i][j] = half(k);
-                    a[j][i] = a[i][j].clone();
-                }
-            }
-        }
-        Some(QuadricForm { a, b, c })
-    }
-
-    /// Back to a polynomial.
-    pub fn to_poly(&self) -> QMPoly {
-        let mut terms = Vec::new();
-        let two = Q::from_integer(2.into());
-        for i in 0..3 {
-            for j in i..3 {
-                let mut e = [0u32; NVARS];
-                e[i] += 1;
-                e[j] += 1;
-                let k = if i == j {
-                    self.a[i][i].clone()
-                } else {
-                    &self.a[i][j] * &two
-                };
-                terms.push((e, k));
-            }
-            let mut e = [0u32; NVARS];
-            e[i] = 1;
-            terms.push((e, &self.b[i] * &two));
-        }
-        terms.push(([0; NVARS], self.c.clone()));
-        MPoly::from_terms(terms)
-    }
-
-    /// Exact value at a rational point.
-    pub fn eval(&self, p: &[Q; 3]) -> Q {
-        let mut s = self.c.clone();
-        for i in 0..3 {
-            s += &self.b[i] * &p[i] * Q::from_integer(2.into());
-            for j in 0..3 {
-                s += &self.a[i][j] * &p[i] * &p[j];
-            }
-        }
-        s
-    }
-
-    /// `A p + b` (half the gradient).
-    pub fn half_gradient(&self, p: &[Q; 3]) -> [Q; 3] {
-        std::array::from_fn(|i| {
-            let mut s = self.b[i].clone();
-            for j in 0..3 {
-                s += &self.a[i][j] * &p[j];
-            }
-            s
-        })
-    }
-
-    /// Leading principal minors `(a00, a00 a11 - a01², det A)`.
-    pub fn principal_minors(&self) -> (Q, Q, Q) {
-        let a = &self.a;
-        let m1 = a[0][0].clone();
-        let m2 = &a[0][0] * &a[1][1] - &a[0][1] * &a[1][0];
-        (m1, m2, det3(a))
-    }
-
-    /// The negated form.
-    pub fn neg(&self) -> QuadricForm {
-        QuadricForm {
-            a: std::array::from_fn(|i| std::array::from_fn(|j| -&self.a[i][j])),
-            b: std::array::from_fn(|i| -&self.b[i]),
-            c: -&self.c,
-        }
-    }
-
-    /// The quadratic part is positive definite.
-    pub fn is_positive_definite(&self) -> bool {
-        let (m1, m2, m3) = self.principal_minors();
-        m1.is_positive() && m2.is_positive() && m3.is_positive()
-    }
-}
-
-/// A 4×4 integer matrix `[[A, b], [bᵀ, c]]`.
-pub type Mat4 = [[BigInt; 4]; 4];
-
-/// lcm of the denominators of every matrix entry of the forms: the
-/// smallest positive integer `L` with `L·q` integral for each form `q`.
-pub fn common_denominator(forms: &[&QuadricForm]) -> BigInt {
-    let mut l = BigInt::one();
-    for f in forms {
-        let entries = f.a.iter().flatten().chain(f.b.iter()).chain([&f.c]);
-        for q in entries {
-            crate::number::lcm_assign(&mut l, q.denom());
-        }
-    }
-    l
-}
-
-impl QuadricForm {
-    /// The 4×4 matrix of `l·q`; `l` must clear every denominator (see
-    /// [`common_denominator`]).
-    pub fn int_matrix(&self, l: &BigInt) -> Mat4 {
-        let z = |q: &Q| -> BigInt {
-            if q.denom().is_one() {
-                q.numer() * l
-            } else {
-                q.numer() * (l / q.denom())
-            }
-        };
-        std::array::from_fn(|i| {
-            std::array::from_fn(|j| match (i, j) {
-                (3, 3) => z(&self.c),
-                (3, k) | (k, 3) => z(&self.b[k]),
-                (i, j) => z(&self.a[i][j]),
-            })
-        })
-    }
-}
-
-/// Adjugate and determinant of the leading 3×3 block of an integer matrix.
-pub fn adj3_int(m: &Mat4) -> ([[BigInt; 3]; 3], BigInt) {
-    let cof = |i: usize, j: usize| -> BigInt {
-        let (r0, r1) = ((i + 1) % 3, (i + 2) % 3);
-        let (c0, c1) = ((j + 1) % 3, (j + 2) % 3);
-        &m[r0][c0] * &m[r1][c1] - &m[r0][c1] * &m[r1][c0]
-    };
-    // adj[i][j] = cofactor(j, i); the cyclic index choice carries the sign
-    let adj: [[BigInt; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i)));
-    let det: BigInt = (0..3).map(|j| &m[0][j] * &adj[j][0]).sum();
-    (adj, det)
-}
-
-/// Determinant of a 3×3 rational matrix.
-pub fn det3(a: &[[Q; 3]; 3]) -> Q {
-    &a[0][0] * (&a[1][1] * &a[2][2] - &a[1][2] * &a[2][1])
-        - &a[0][1] * (&a[1][0] * &a[2][2] - &a[1][2] * &a[2][0])
-        + &a[0][2] * (&a[1][0] * &a[2][1] - &a[1][1] * &a[2][0])
-}
-
-/// Inverse of an invertible 3×3 rational matrix.
-pub fn inv3(a: &[[Q; 3]; 3]) -> Option<[[Q; 3]; 3]> {
-    let d = det3(a);
-    if d.is_zero() {
-        return None;
-    }
-    let cof = |i: usize, j: usize| -> Q {
-        let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
-        let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
-        let m = &a[r[0]][c[0]] * &a[r[1]][c[1]] - &a[r[0]][c[1]] * &a[r[1]][c[0]];
-        if (i + j).is_multiple_of(2) { m } else { -m }
-    };
-    // inverse = adj / det, adj[i][j] = cof(j, i)
-    Some(std::array::from_fn(|i| {
-        std::array::from_fn(|j| cof(j, i) / &d)
-    }))
-}
 
 /// A validated ellipsoid `E(p) = pᵀ A p + 2 bᵀ p + c` with `A` positive
 /// definite and `E(centre) < 0` (the input is negated when its quadratic
-/// part is negative definite; the zero set is the same).
+/// part is negative definite; the zero set is the same).  It cannot hold a
+/// hyperboloid, an empty "imaginary ellipsoid" or a single point: every
+/// constructor checks.
+///
+/// ```
+/// use quadsect::{Ellipsoid, Polynomial, ErrorKind};
+/// let e: Ellipsoid = "x^2 + y^2 + z^2 - 25".parse().unwrap();
+/// assert!(e.center().iter().all(|c| *c == quadsect::Rational::from_integer(0.into())));
+/// let bad = "x^2 + y^2 - z^2 - 1".parse::<Ellipsoid>().unwrap_err();
+/// assert_eq!(bad.kind(), ErrorKind::NotAnEllipsoid);
+/// assert!(bad.to_string().contains("not definite"));
+/// assert!("x^2 + y^2 + z^2 + 1".parse::<Ellipsoid>().is_err()); // empty
+/// ```
 #[derive(Clone, Debug)]
 pub struct Ellipsoid {
     /// The equation, oriented so that E < 0 inside.
-    pub poly: QMPoly,
+    pub(crate) poly: QMPoly,
     /// Its matrices.
-    pub form: QuadricForm,
+    pub(crate) form: QuadricForm,
     /// Centre `-A⁻¹ b`.
-    pub center: [Q; 3],
+    pub(crate) center: [Q; 3],
     /// `E(centre) < 0`.
-    pub center_value: Q,
+    pub(crate) center_value: Q,
     /// True when the input was negated.
-    pub negated: bool,
+    pub(crate) negated: bool,
 }
 
 impl Ellipsoid {
-    /// Validates `p` as an ellipsoid, with a clear error otherwise.
+    /// Validates a polynomial as an ellipsoid (degree 2 in x, y, z, definite
+    /// quadratic part, a real ellipsoid: not empty, not a point), with a
+    /// clear error otherwise.
+    pub fn new(p: &Polynomial) -> Result<Ellipsoid, Error> {
+        Ellipsoid::from_poly(p.inner())
+    }
+
+    /// The ellipsoid with centre `center`, semi-axes `semi_axes` (> 0) along
+    /// the columns of the rotation `rotation` (an exact rational rotation,
+    /// e.g. a Cayley rotation; checked: `R Rᵀ = I`, `det R = 1`):
+    /// `Σᵢ ((Rᵀ (p − center))ᵢ / aᵢ)² − 1`.
     ///
     /// ```
-    /// use quadsect::poly::parse_poly;
-    /// use quadsect::tangent::Ellipsoid;
-    /// assert!(Ellipsoid::new(&parse_poly("x^2 + y^2 + z^2 - 25").unwrap()).is_ok());
-    /// let e = Ellipsoid::new(&parse_poly("x^2 + y^2 - z^2 - 1").unwrap()).unwrap_err();
-    /// assert!(e.to_string().contains("not definite"));
+    /// use quadsect::{Ellipsoid, Rational};
+    /// let r = |n: i64| Rational::from_integer(n.into());
+    /// let id = [[r(1), r(0), r(0)], [r(0), r(1), r(0)], [r(0), r(0), r(1)]];
+    /// let e = Ellipsoid::from_axes([r(1), r(0), r(0)], [r(2), r(3), r(4)], id).unwrap();
+    /// assert_eq!(e.polynomial().to_string(), "1/4*x^2 + 1/9*y^2 + 1/16*z^2 - 1/2*x - 3/4");
     /// ```
-    pub fn new(p: &QMPoly) -> Result<Ellipsoid, Error> {
+    pub fn from_axes(
+        center: [Q; 3],
+        semi_axes: [Q; 3],
+        rotation: [[Q; 3]; 3],
+    ) -> Result<Ellipsoid, Error> {
+        if !crate::geom::is_rotation(&rotation) {
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
+                "the rotation must be an exact rotation matrix (R Rᵀ = I, det R = 1); use Ellipsoid::from_frame for any invertible matrix",
+            ));
+        }
+        Ellipsoid::from_frame(center, semi_axes, rotation)
+    }
+
+    /// The ellipsoid `Σᵢ ((Mᵀ (p − center))ᵢ / aᵢ)² − 1` for any invertible
+    /// matrix `M` taken exactly as given (e.g. a rotation stored in doubles,
+    /// which is orthogonal only up to rounding: the ellipsoid is then the
+    /// one those exact numbers define).  Checked: `aᵢ > 0` and `M`
+    /// invertible.
+    pub fn from_frame(
+        center: [Q; 3],
+        semi_axes: [Q; 3],
+        m: [[Q; 3]; 3],
+    ) -> Result<Ellipsoid, Error> {
+        if let Some(a) = semi_axes.iter().find(|a| !a.is_positive()) {
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
+                format!("semi-axes must be > 0, got {}", crate::number::fmt_q(a)),
+            ));
+        }
+        if crate::geom::det3(&m).is_zero() {
+            return Err(Error::new(
+                ErrorKind::NotAnEllipsoid,
+                "the axis matrix is singular (its columns must be independent)",
+            ));
+        }
+        // local coordinate i: (column i of M) · (p − center)
+        let mut e = QMPoly::constant(-Q::one());
+        for i in 0..3 {
+            let mut w = QMPoly::zero();
+            for (j, c) in center.iter().enumerate() {
+                let xj = &MPoly::var(j) - &MPoly::constant(c.clone());
+                w = &w + &xj.scale(&m[j][i]);
+            }
+            let a2 = &semi_axes[i] * &semi_axes[i];
+            e = &e + &(&w * &w).scale(&(Q::one() / a2));
+        }
+        Ellipsoid::from_poly(&e)
+    }
+
+    /// The equation, oriented so that E < 0 inside.
+    pub fn polynomial(&self) -> Polynomial {
+        Polynomial::from_inner(self.poly.clone())
+    }
+
+    /// The centre.
+    pub fn center(&self) -> &[Q; 3] {
+        &self.center
+    }
+
+    /// True when the given polynomial was negated to orient E < 0 inside
+    /// (its quadratic part was negative definite).
+    pub fn is_negated(&self) -> bool {
+        self.negated
+    }
+
+    /// Validates an internal polynomial (see [`Ellipsoid::new`]).
+    pub(crate) fn from_poly(p: &QMPoly) -> Result<Ellipsoid, Error> {
         if p.vars().iter().any(|&v| v > 2) {
             return Err(Error::new(
                 ErrorKind::NotAnEllipsoid,
@@ -397,4 +279,19 @@ pub(crate) fn sign_at_int(m: &Mat4, n: &[BigInt; 3], d: &BigInt) -> i32 {
         acc += row * &n[i];
     }
     crate::number::sign_z(&acc)
+}
+
+impl std::str::FromStr for Ellipsoid {
+    type Err = Error;
+    /// Parses and validates (see [`Ellipsoid::new`]).
+    fn from_str(s: &str) -> Result<Ellipsoid, Error> {
+        Ellipsoid::new(&s.parse()?)
+    }
+}
+
+impl std::fmt::Display for Ellipsoid {
+    /// The equation (oriented, E < 0 inside).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.poly.to_string_canonical())
+    }
 }

@@ -1,5 +1,5 @@
 //! The judging polynomial D(u) by resultant elimination with branch
-//! splitting (paper 004, SPEC §3) — the paper's own route, made sound.
+//! splitting (paper 004, contract §3) — the paper's own route, made sound.
 //!
 //! The Lagrange system `S_x − λE_x, S_y − λE_y, S_z − λE_z, E, S − u` is
 //! eliminated one variable at a time with resultants.  A plain chain of
@@ -49,6 +49,25 @@ thread_local! {
 
 /// Work budget of one elimination, in term operations.
 pub const WORK_BUDGET: i64 = 3_000_000;
+
+/// The work budget of one elimination while it runs: filled on creation,
+/// emptied (back to unlimited) on drop — also when an exhausted compute
+/// budget unwinds through the elimination, so that no later [`mpoly_gcd`]
+/// on this thread inherits a spent budget.
+struct Fuel;
+
+impl Fuel {
+    fn fill() -> Fuel {
+        FUEL.with(|f| f.set(WORK_BUDGET));
+        Fuel
+    }
+}
+
+impl Drop for Fuel {
+    fn drop(&mut self) {
+        FUEL.with(|f| f.set(i64::MAX));
+    }
+}
 
 fn burn(n: usize) -> bool {
     FUEL.with(|f| {
@@ -205,6 +224,7 @@ pub fn easy_factors(p: &ZMPoly) -> Vec<ZMPoly> {
     let mut out = Vec::new();
     let mut todo = vec![p.primitive().0];
     while let Some(f) = todo.pop() {
+        crate::budget::check();
         if f.is_constant() {
             continue;
         }
@@ -250,6 +270,7 @@ struct Ctx {
 /// Eliminates `order` from `system`; returns the product of the branch
 /// polynomials in u (or a failure).
 fn eliminate_rec(system: Vec<ZMPoly>, order: &[usize], ctx: &mut Ctx) -> Result<ZPoly, Fail> {
+    crate::budget::check_now();
     ctx.branches += 1;
     if ctx.branches > BRANCH_BUDGET || exhausted() {
         return Err(Fail::Budget);
@@ -370,10 +391,10 @@ pub fn eliminate_in_order(e: &QMPoly, s: &QMPoly, order: &[usize]) -> Option<(ZP
         branches: 0,
         with_solutions: 0,
     };
-    FUEL.with(|f| f.set(WORK_BUDGET));
+    let fuel = Fuel::fill();
     let d = eliminate_rec(lagrange_system(e, s), order, &mut ctx).ok();
     let spent = exhausted();
-    FUEL.with(|f| f.set(i64::MAX));
+    drop(fuel);
     let d = d?;
     if spent {
         return None;

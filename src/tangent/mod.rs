@@ -2,18 +2,18 @@
 //! algebraic surface S, touch it, or stay on one side — decided exactly,
 //! with a certificate.
 //!
-//! Key idea (SPEC §3): with ν = min and μ = max of S on E, E and S
+//! Key idea (contract §3): with ν = min and μ = max of S on E, E and S
 //! intersect iff ν ≤ 0 ≤ μ, touch iff ν = 0 or μ = 0.  ν and μ are real
 //! critical values of S on E, computed exactly as real algebraic numbers:
 //!
-//! * deg S ≤ 2: the λ-parametrisation ([`quadric`]), exact and complete,
+//! * deg S ≤ 2: the λ-parametrisation (`quadric.rs`), exact and complete,
 //!   including the singular multipliers where `det(A_S − λA_E) = 0`;
 //! * deg S ≥ 3, separable S (`f(x) + g(y) + h(z)` with one coordinate not
 //!   proportional to E's square) against an axis-parallel E: the Lagrange
-//!   system splits into univariate branches ([`separable`]);
+//!   system splits into univariate branches (`separable.rs`);
 //! * deg S ≥ 3 otherwise: the critical points as the zero set of
 //!   `E = 0, ∇S × ∇E = 0` (no λ), solved by a Gröbner basis and a rational
-//!   univariate representation ([`critical`]); real critical points are
+//!   univariate representation (`critical.rs`); real critical points are
 //!   exactly the real roots of the RUR's univariate polynomial.
 //!
 //! The judging polynomial D(u) is reported too (the paper's object), and the
@@ -21,26 +21,30 @@
 //! when a real critical point attains it.  Verdicts come with witnesses:
 //! exact points of E (Q(√d) coordinates) where S has the stated sign.
 
-pub mod critical;
-pub mod ellipsoid;
-pub mod examples;
-pub mod judging;
-pub mod modular;
-pub mod pencil;
-pub mod quadric;
-pub mod separable;
-pub mod witness;
+pub(crate) mod critical;
+pub(crate) mod ellipsoid;
+pub(crate) mod judging;
+pub(crate) mod modular;
+pub(crate) mod pencil;
+pub(crate) mod quadric;
+pub(crate) mod separable;
+pub(crate) mod witness;
 
-pub use ellipsoid::{Ellipsoid, QuadricForm};
+pub use ellipsoid::Ellipsoid;
 pub use witness::WitnessPoint;
 
+pub(crate) use crate::geom::QuadricForm;
+
+use crate::budget::{Budget, Exhausted};
 use crate::error::{Error, ErrorKind};
-use crate::poly::{QMPoly, ZPoly, parse_poly};
+use crate::poly::{IntPoly, Polynomial, QMPoly, ZPoly};
 use crate::roots::RealAlg;
 use std::cmp::Ordering;
+use std::fmt;
 
 /// The overall answer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Verdict {
     /// S takes both signs on E (ν < 0 < μ).
     Intersecting,
@@ -53,7 +57,7 @@ pub enum Verdict {
 }
 
 impl Verdict {
-    /// The SPEC spelling.
+    /// `intersecting`, `touching`, `separated` or `undecided`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Verdict::Intersecting => "intersecting",
@@ -64,8 +68,48 @@ impl Verdict {
     }
 }
 
+impl fmt::Display for Verdict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// The side of S on which E lies, when S does not change sign on E.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Side {
+    /// S ≥ 0 on E (printed `+`).
+    Positive,
+    /// S ≤ 0 on E (printed `-`).
+    Negative,
+}
+
+impl Side {
+    pub(crate) fn from_i32(s: i32) -> Option<Side> {
+        match s {
+            1 => Some(Side::Positive),
+            -1 => Some(Side::Negative),
+            _ => None,
+        }
+    }
+
+    /// `+` or `-`.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Side::Positive => "+",
+            Side::Negative => "-",
+        }
+    }
+}
+
+impl fmt::Display for Side {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
 /// Where E lies relative to a closed surface S (an ellipsoid).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Containment {
     /// E is inside the solid bounded by S.
     EInsideS,
@@ -76,7 +120,7 @@ pub enum Containment {
 }
 
 impl Containment {
-    /// The SPEC spelling.
+    /// `E-inside-S`, `S-inside-E` or `apart`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Containment::EInsideS => "E-inside-S",
@@ -86,9 +130,97 @@ impl Containment {
     }
 }
 
-/// How the critical values were obtained.
-#[derive(Clone, Debug)]
+impl fmt::Display for Containment {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// Which computation produced the critical values (the certificate's
+/// `method`; the details are in the JSON certificate).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Method {
+    /// deg S ≤ 2, generic pair: the pencil discriminant.
+    PencilDiscriminant,
+    /// deg S ≤ 2: the complete λ-parametrisation (singular multipliers
+    /// solved exactly).
+    LambdaParametrisation,
+    /// Separable S against an axis-parallel E: univariate branches.
+    SeparableBranches,
+    /// deg S ≥ 3, finitely many critical points: Gröbner basis and RUR.
+    CriticalIdeal,
+    /// deg S ≥ 3 in general position: a Gröbner basis and RUR modulo word-size
+    /// primes, lifted by CRT and rational reconstruction, verified exactly.
+    ModularRur,
+    /// deg S ≥ 3 with curves of critical points: exact level-set tests.
+    LevelSets,
+    /// S is a constant.
+    Constant,
+    /// No computation finished (undecided).
+    None,
+}
+
+impl Method {
+    /// The JSON spelling (`pencil-discriminant`, `lambda-parametrisation`, …).
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Method::PencilDiscriminant => "pencil-discriminant",
+            Method::LambdaParametrisation => "lambda-parametrisation",
+            Method::SeparableBranches => "separable-branches",
+            Method::CriticalIdeal => "critical-ideal-rur",
+            Method::ModularRur => "critical-ideal-modular-rur",
+            Method::LevelSets => "level-sets",
+            Method::Constant => "constant",
+            Method::None => "none",
+        }
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// Why no verdict was given.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Undecided {
+    /// The computation finished but no certificate could be produced.
+    NoCertificate(String),
+    /// A budget ran out (time, memory, size or cancellation).
+    Budget(Exhausted),
+}
+
+impl fmt::Display for Undecided {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Undecided::NoCertificate(why) => f.write_str(why),
+            Undecided::Budget(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+/// Options of [`decide_with`].
+#[derive(Clone, Debug, Default)]
+#[non_exhaustive]
+pub struct TangentOptions {
+    /// The compute budget (default: [`Budget::default`]).  When it runs out
+    /// the answer is [`Verdict::Undecided`] with [`Undecided::Budget`].
+    pub budget: Budget,
+}
+
+impl TangentOptions {
+    /// Options with the given budget.
+    pub fn with_budget(budget: Budget) -> TangentOptions {
+        TangentOptions { budget }
+    }
+}
+
+/// How the critical values were obtained (the data behind [`Method`]).
+#[derive(Clone, Debug)]
+pub(crate) enum Analysis {
     /// deg S ≤ 2, generic case: the pencil discriminant.
     Pencil(pencil::PencilAnalysis),
     /// deg S ≤ 2: the complete λ-parametrisation.
@@ -105,84 +237,239 @@ pub enum Method {
     LevelSets(critical::LevelSetAnalysis),
     /// S is a non-zero constant.
     Constant,
+    /// No computation finished.
+    Undecided,
 }
 
-/// The certificate of a verdict.
+/// The certificate of a verdict: everything needed to re-check it.
 #[derive(Clone, Debug)]
 pub struct Certificate {
-    /// The distinct critical values attained by real points, increasing.
-    pub critical_values: Vec<RealAlg>,
-    /// Real roots of D(u) that no real critical point attains (values at
-    /// non-real critical points: the paper's trap).
-    pub nonreal_point_values: Vec<RealAlg>,
-    /// A point of E with S < 0.
-    pub negative_witness: Option<WitnessPoint>,
-    /// A point of E with S > 0.
-    pub positive_witness: Option<WitnessPoint>,
-    /// The computation behind the values.
-    pub method: Method,
-    /// Remarks (e.g. "S vanishes on all of E").
-    pub notes: Vec<String>,
+    pub(crate) critical_values: Vec<RealAlg>,
+    pub(crate) nonreal_point_values: Vec<RealAlg>,
+    pub(crate) negative_witness: Option<WitnessPoint>,
+    pub(crate) positive_witness: Option<WitnessPoint>,
+    pub(crate) method: Analysis,
+    pub(crate) notes: Vec<String>,
 }
 
-/// The full answer of `quadsect tangent`.
+impl Certificate {
+    /// The distinct critical values of S on E attained by real critical
+    /// points, increasing (ν is the first, μ the last; with curves of
+    /// critical points only ν and μ are listed).
+    pub fn critical_values(&self) -> &[RealAlg] {
+        &self.critical_values
+    }
+
+    /// Real roots of D(u) that no real critical point attains: values of S
+    /// at non-real critical points (the paper's trap), never counted.
+    pub fn nonreal_point_values(&self) -> &[RealAlg] {
+        &self.nonreal_point_values
+    }
+
+    /// An exact point of E where S < 0.
+    pub fn negative_witness(&self) -> Option<&WitnessPoint> {
+        self.negative_witness.as_ref()
+    }
+
+    /// An exact point of E where S > 0.
+    pub fn positive_witness(&self) -> Option<&WitnessPoint> {
+        self.positive_witness.as_ref()
+    }
+
+    /// The computation behind the critical values (its data is in the JSON
+    /// certificate, feature `serde`).
+    pub fn method(&self) -> Method {
+        match &self.method {
+            Analysis::Pencil(_) => Method::PencilDiscriminant,
+            Analysis::Lambda(_) => Method::LambdaParametrisation,
+            Analysis::Separable(_) => Method::SeparableBranches,
+            Analysis::CriticalIdeal(_) => Method::CriticalIdeal,
+            Analysis::ModularRur(_) => Method::ModularRur,
+            Analysis::LevelSets(_) => Method::LevelSets,
+            Analysis::Constant => Method::Constant,
+            Analysis::Undecided => Method::None,
+        }
+    }
+
+    /// Remarks (e.g. "S vanishes on all of E").
+    pub fn notes(&self) -> &[String] {
+        &self.notes
+    }
+}
+
+/// The answer of the tangent point method for an ellipsoid E and a
+/// surface S: the verdict, the exact minimum ν and maximum μ of S on E, the
+/// judging polynomial D(u) and a certificate.  `Display` prints the human
+/// summary; with the feature `serde` it serializes to the JSON of
+/// `quadsect tangent --json`.
 #[derive(Clone, Debug)]
 pub struct TangentReport {
-    /// E as validated (oriented with E < 0 inside).
-    pub ellipsoid: QMPoly,
-    /// S as given.
-    pub surface: QMPoly,
-    /// The verdict.
-    pub verdict: Verdict,
-    /// ν ≤ 0 ≤ μ.
-    pub intersect: Option<bool>,
-    /// ν = 0 or μ = 0.
-    pub touching: Option<bool>,
-    /// The sign of S on E when it does not change sign (+1 / -1).
-    pub side: Option<i32>,
-    /// Filled when S is an ellipsoid and they do not intersect.
-    pub containment: Option<Containment>,
-    /// ν, exactly.
-    pub min: Option<RealAlg>,
-    /// μ, exactly.
-    pub max: Option<RealAlg>,
-    /// The judging polynomial D(u) (square-free, primitive).
-    pub judging_poly: ZPoly,
-    /// Why the verdict holds.
-    pub certificate: Certificate,
-    /// Why no verdict could be given (only for `Undecided`).
-    pub reason: Option<String>,
+    pub(crate) ellipsoid: QMPoly,
+    pub(crate) surface: QMPoly,
+    pub(crate) verdict: Verdict,
+    pub(crate) intersect: Option<bool>,
+    pub(crate) touching: Option<bool>,
+    pub(crate) side: Option<i32>,
+    pub(crate) containment: Option<Containment>,
+    pub(crate) min: Option<RealAlg>,
+    pub(crate) max: Option<RealAlg>,
+    pub(crate) judging_poly: ZPoly,
+    pub(crate) certificate: Certificate,
+    pub(crate) reason: Option<Undecided>,
 }
 
-/// Decides E against S given as text.
+impl TangentReport {
+    /// The verdict.
+    pub fn verdict(&self) -> Verdict {
+        self.verdict
+    }
+
+    /// E and S meet: ν ≤ 0 ≤ μ (`None` when undecided).
+    pub fn intersect(&self) -> Option<bool> {
+        self.intersect
+    }
+
+    /// E and S touch: ν = 0 or μ = 0 (`None` when undecided).
+    pub fn touching(&self) -> Option<bool> {
+        self.touching
+    }
+
+    /// The side of S on which E lies, when S does not change sign on E.
+    pub fn side(&self) -> Option<Side> {
+        self.side.and_then(Side::from_i32)
+    }
+
+    /// Containment, when S is an ellipsoid and they do not intersect.
+    pub fn containment(&self) -> Option<Containment> {
+        self.containment
+    }
+
+    /// ν = min of S on E, exactly.
+    pub fn min(&self) -> Option<&RealAlg> {
+        self.min.as_ref()
+    }
+
+    /// μ = max of S on E, exactly.
+    pub fn max(&self) -> Option<&RealAlg> {
+        self.max.as_ref()
+    }
+
+    /// The judging polynomial D(u): square-free, primitive; its real roots
+    /// include every critical value (and possibly values at non-real
+    /// critical points, listed in the certificate).
+    pub fn judging_poly(&self) -> IntPoly {
+        IntPoly::from_inner(self.judging_poly.clone())
+    }
+
+    /// E as validated, oriented so that E < 0 inside.
+    pub fn ellipsoid(&self) -> Polynomial {
+        Polynomial::from_inner(self.ellipsoid.clone())
+    }
+
+    /// S as given.
+    pub fn surface(&self) -> Polynomial {
+        Polynomial::from_inner(self.surface.clone())
+    }
+
+    /// The certificate.
+    pub fn certificate(&self) -> &Certificate {
+        &self.certificate
+    }
+
+    /// Why no verdict was given (only for [`Verdict::Undecided`]).
+    pub fn undecided(&self) -> Option<&Undecided> {
+        self.reason.as_ref()
+    }
+}
+
+/// Decides E against S given in the input syntax (a convenience for
+/// [`Ellipsoid::from_str`](std::str::FromStr) and [`decide`]).
 ///
 /// ```
-/// let r = quadsect::tangent::decide_str(
-///     "x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1").unwrap();
-/// assert_eq!(r.verdict, quadsect::tangent::Verdict::Separated);
-/// assert_eq!(quadsect::number::fmt_q(r.min.unwrap().as_rational().unwrap()), "7/9");
+/// use quadsect::tangent::{decide_str, Verdict};
+/// let r = decide_str("x^2+y^2+z^2-25", "(x-9)^2/9+y^2/4+z^2/16-1").unwrap();
+/// assert_eq!(r.verdict(), Verdict::Separated);
+/// assert_eq!(r.min().unwrap().to_string(), "7/9");
+/// assert_eq!(r.max().unwrap().to_string(), "187/9");
 /// ```
 pub fn decide_str(ellipsoid: &str, surface: &str) -> Result<TangentReport, Error> {
-    let e = parse_poly(ellipsoid).map_err(|x| Error::from(x).context("in --ellipsoid"))?;
-    let s = parse_poly(surface).map_err(|x| Error::from(x).context("in --surface"))?;
-    decide(&e, &s)
+    decide_str_in(ellipsoid, surface, crate::number::NumberMode::Exact)
 }
 
-/// Decides E against S.
-pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Error> {
-    let e = Ellipsoid::new(ellipsoid).map_err(|x| x.context("in --ellipsoid"))?;
+/// [`decide_str`] with the number literals read in the given mode
+/// ([`NumberMode::Float`](crate::NumberMode::Float): each decimal literal
+/// becomes its nearest double, as a program reading it would see it).
+pub fn decide_str_in(
+    ellipsoid: &str,
+    surface: &str,
+    mode: crate::number::NumberMode,
+) -> Result<TangentReport, Error> {
+    let parse = |t: &str| crate::poly::parse_poly_in(t, &crate::poly::Limits::default(), mode);
+    let e = parse(ellipsoid).map_err(|x| Error::from(x).context("in the ellipsoid"))?;
+    let s = parse(surface).map_err(|x| Error::from(x).context("in the surface"))?;
+    decide_poly(&e, &s)
+}
+
+/// Decides how the ellipsoid `e` and the surface `s` meet, under the
+/// default budget ([`Budget::default`]).
+///
+/// Cost: for deg S ≤ 2 a handful of exact operations on degree-6
+/// polynomials (tens of µs); for higher degrees a Gröbner basis of the
+/// critical system `E = 0, ∇S × ∇E = 0` (up to `2(d² − d + 1)` points for
+/// degree d), whose cost grows steeply with d and the coefficient size —
+/// bounded by the budget.
+///
+/// ```
+/// use quadsect::{Ellipsoid, Polynomial};
+/// use quadsect::tangent::{decide, Verdict};
+/// let e: Ellipsoid = "x^2+y^2+z^2-25".parse().unwrap();
+/// let s: Polynomial = "(x-6)^2/9+y^2/4+z^2/16-1".parse().unwrap();
+/// let r = decide(&e, &s).unwrap();
+/// assert_eq!(r.verdict(), Verdict::Intersecting);
+/// assert!(r.certificate().negative_witness().is_some());
+/// ```
+pub fn decide(e: &Ellipsoid, s: &Polynomial) -> Result<TangentReport, Error> {
+    decide_with(e, s, &TangentOptions::default())
+}
+
+/// [`decide`] with options (the budget).  An exhausted budget is an answer:
+/// [`Verdict::Undecided`] with [`Undecided::Budget`].
+pub fn decide_with(
+    e: &Ellipsoid,
+    s: &Polynomial,
+    options: &TangentOptions,
+) -> Result<TangentReport, Error> {
+    match crate::budget::run(&options.budget, || decide_validated(e, s.inner())) {
+        Ok(r) => r,
+        Err(exhausted) => Ok(undecided_report(
+            e.poly.clone(),
+            s.inner().clone(),
+            Undecided::Budget(exhausted),
+        )),
+    }
+}
+
+/// Decides E against S given as internal polynomials (E is validated).
+pub(crate) fn decide_poly(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Error> {
+    let e = Ellipsoid::from_poly(ellipsoid).map_err(|x| x.context("in the ellipsoid"))?;
+    decide_validated(&e, surface)
+}
+
+fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Error> {
+    crate::budget::check_now();
     if surface.vars().iter().any(|&v| v > 2) {
         return Err(Error::new(
             ErrorKind::Input,
-            "in --surface: the surface must be a polynomial in x, y, z only",
+            "the surface must be a polynomial in x, y, z only",
         ));
     }
     if surface.is_zero() {
         return Err(Error::new(
             ErrorKind::Input,
-            "in --surface: the zero polynomial is not a surface (every point satisfies S = 0)",
+            "the zero polynomial is not a surface (every point satisfies S = 0)",
         ));
     }
+    let e = e.clone();
     let deg = surface.total_degree().unwrap_or(0);
     // deg S ≤ 2: the pencil discriminant decides generic pairs; the others
     // go to the separable route when it applies, else the λ-parametrisation
@@ -204,7 +491,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
             vals,
             vec![],
             j,
-            Method::Pencil(pa),
+            Analysis::Pencil(pa),
             WitnessFinder::Pencil,
         ));
     }
@@ -212,15 +499,15 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
         Vec<RealAlg>,
         Vec<RealAlg>,
         ZPoly,
-        Method,
+        Analysis,
         WitnessFinder,
     ) = if deg == 0 {
         let c = surface.constant_term();
         (
-            vec![RealAlg::Rational(c.clone())],
+            vec![RealAlg::rational(c.clone())],
             vec![],
-            RealAlg::Rational(c).poly(),
-            Method::Constant,
+            RealAlg::rational(c).poly(),
+            Analysis::Constant,
             WitnessFinder::None,
         )
     } else if let Some(sa) = separable::analyze(&e, surface) {
@@ -230,7 +517,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
             vals,
             nonreal,
             j,
-            Method::Separable(sa),
+            Analysis::Separable(sa),
             WitnessFinder::Separable,
         )
     } else if let Some(form) = &quadric_form {
@@ -243,7 +530,13 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
             .collect();
         let (vals, nonreal) = split_values(&real, &an.judging);
         let j = an.judging.clone();
-        (vals, nonreal, j, Method::Lambda(an), WitnessFinder::Lambda)
+        (
+            vals,
+            nonreal,
+            j,
+            Analysis::Lambda(an),
+            WitnessFinder::Lambda,
+        )
     } else if let Ok(an) = modular::analyze(&e, surface) {
         let (vals, nonreal) = split_values(&an.real_values(), &an.judging);
         let j = an.judging.clone();
@@ -251,7 +544,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
             vals,
             nonreal,
             j,
-            Method::ModularRur(an),
+            Analysis::ModularRur(an),
             WitnessFinder::Modular,
         )
     } else {
@@ -271,7 +564,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
                     vals,
                     nonreal,
                     j,
-                    Method::CriticalIdeal(an),
+                    Analysis::CriticalIdeal(an),
                     WitnessFinder::Critical,
                 )
             }
@@ -283,7 +576,7 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
                     vals,
                     nonreal,
                     j,
-                    Method::LevelSets(ls),
+                    Analysis::LevelSets(ls),
                     WitnessFinder::Level,
                 )
             }
@@ -296,9 +589,17 @@ pub fn decide(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Err
 
 /// The answer when no certificate could be produced (never a guess).
 fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
+    undecided_report(
+        e.poly.clone(),
+        surface.clone(),
+        Undecided::NoCertificate(why),
+    )
+}
+
+fn undecided_report(ellipsoid: QMPoly, surface: QMPoly, why: Undecided) -> TangentReport {
     TangentReport {
-        ellipsoid: e.poly.clone(),
-        surface: surface.clone(),
+        ellipsoid,
+        surface,
         verdict: Verdict::Undecided,
         intersect: None,
         touching: None,
@@ -312,10 +613,18 @@ fn undecided(e: &Ellipsoid, surface: &QMPoly, why: String) -> TangentReport {
             nonreal_point_values: vec![],
             negative_witness: None,
             positive_witness: None,
-            method: Method::Constant,
+            method: Analysis::Undecided,
             notes: vec![],
         },
         reason: Some(why),
+    }
+}
+
+impl TangentReport {
+    /// The answer when the budget ran out before E and S were even read
+    /// (their polynomials are then zero).
+    pub(crate) fn budget_exhausted(e: Exhausted) -> TangentReport {
+        undecided_report(QMPoly::zero(), QMPoly::zero(), Undecided::Budget(e))
     }
 }
 
@@ -355,14 +664,14 @@ fn finish(
     values: Vec<RealAlg>,
     nonreal: Vec<RealAlg>,
     judging: ZPoly,
-    method: Method,
+    method: Analysis,
     wf: WitnessFinder,
 ) -> TangentReport {
     let mut notes = Vec::new();
-    if matches!(method, Method::LevelSets(_)) {
+    if matches!(method, Analysis::LevelSets(_)) {
         notes.push("curves of critical points: ν and μ are exact; critical values strictly between them are not classified".into());
     }
-    if let Method::Separable(sa) = &method
+    if let Analysis::Separable(sa) = &method
         && sa.has_curves()
     {
         notes.push("curves of critical points on a branch with two free coordinates; every critical value is exact".into());
@@ -377,8 +686,8 @@ fn finish(
             );
         }
     };
-    let sn = min.sign();
-    let sm = max.sign();
+    let sn = min.signum();
+    let sm = max.signum();
     let (verdict, intersect, touching, side) = if sn > 0 {
         (Verdict::Separated, false, false, Some(1))
     } else if sm < 0 {
@@ -440,7 +749,7 @@ fn finish(
 }
 
 fn witness_for(
-    method: &Method,
+    method: &Analysis,
     wf: WitnessFinder,
     e: &Ellipsoid,
     s: &QMPoly,
@@ -448,19 +757,19 @@ fn witness_for(
     want: i32,
 ) -> Option<WitnessPoint> {
     match (method, wf) {
-        (Method::Lambda(an), WitnessFinder::Lambda) => {
+        (Analysis::Lambda(an), WitnessFinder::Lambda) => {
             let i = an
                 .critical
                 .iter()
                 .position(|c| c.real && c.value.cmp_exact(value) == Ordering::Equal)?;
             an.witness(i, e, s, want)
         }
-        (Method::Pencil(an), WitnessFinder::Pencil) => an.witness(e, s, want),
-        (Method::Separable(an), WitnessFinder::Separable) => an.witness(value, e, s, want),
-        (Method::CriticalIdeal(an), WitnessFinder::Critical) => an.witness(value, e, s, want),
-        (Method::ModularRur(an), WitnessFinder::Modular) => an.witness(value, e, s, want),
-        (Method::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
-        (Method::Constant, _) => {
+        (Analysis::Pencil(an), WitnessFinder::Pencil) => an.witness(e, s, want),
+        (Analysis::Separable(an), WitnessFinder::Separable) => an.witness(value, e, s, want),
+        (Analysis::CriticalIdeal(an), WitnessFinder::Critical) => an.witness(value, e, s, want),
+        (Analysis::ModularRur(an), WitnessFinder::Modular) => an.witness(value, e, s, want),
+        (Analysis::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
+        (Analysis::Constant, _) => {
             let c = e.center.clone();
             let mut p = c.clone();
             p[0] += crate::number::qi(1);
@@ -472,7 +781,8 @@ fn witness_for(
 
 /// Containment when S is an ellipsoid and does not meet E.
 fn containment_of(e: &Ellipsoid, s: &QMPoly, side: i32) -> Option<Containment> {
-    use ellipsoid::{IntEllipsoid, common_denominator, sign_at_int};
+    use crate::geom::common_denominator;
+    use ellipsoid::{IntEllipsoid, sign_at_int};
     let form = QuadricForm::from_poly(s)?;
     let se = IntEllipsoid::of(&form.int_matrix(&common_denominator(&[&form]))).ok()?;
     // S oriented negative inside: the sign of the oriented S on E

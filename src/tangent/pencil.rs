@@ -33,8 +33,9 @@
 //! singular multipliers, degenerate critical points) the complete
 //! λ-parametrisation of [`super::quadric`] answers instead.
 
-use super::ellipsoid::{Ellipsoid, Mat4, QuadricForm, adj3_int, common_denominator};
+use super::ellipsoid::Ellipsoid;
 use super::witness::{WitnessPoint, find_witness};
+use crate::geom::{Mat4, QuadricForm, adj3_int, common_denominator};
 use crate::number::Q;
 use crate::poly::{QMPoly, ZPoly};
 use crate::roots::{RealAlg, isolate_squarefree};
@@ -381,7 +382,7 @@ mod tests {
     use crate::poly::parse_poly;
 
     fn run(e: &str, s: &str) -> Option<PencilAnalysis> {
-        let e = Ellipsoid::new(&parse_poly(e).unwrap()).unwrap();
+        let e = Ellipsoid::from_poly(&parse_poly(e).unwrap()).unwrap();
         let s = QuadricForm::from_poly(&parse_poly(s).unwrap()).unwrap();
         analyze(&e, &s)
     }
@@ -419,7 +420,8 @@ mod tests {
 
     #[test]
     fn machine_determinants_match_the_cofactor_expansion() {
-        let e = Ellipsoid::new(&parse_poly("3x^2+2xy+4y^2-2yz+5z^2+x-7z-30").unwrap()).unwrap();
+        let e =
+            Ellipsoid::from_poly(&parse_poly("3x^2+2xy+4y^2-2yz+5z^2+x-7z-30").unwrap()).unwrap();
         let s =
             QuadricForm::from_poly(&parse_poly("x^2/3-4xz+2y^2+yz/5-z^2+6x-y+2z-11/7").unwrap())
                 .unwrap();
@@ -439,7 +441,8 @@ mod tests {
     fn discriminant_from_invariants_matches_the_resultant() {
         // 27·disc(G) = 4I³ − J² and a·disc(G) = Res(G, G') for the quartic
         // G = F − u₀δ (leading coefficient a): check at several u₀
-        let e = Ellipsoid::new(&parse_poly("3x^2+2xy+4y^2-2yz+5z^2+x-7z-30").unwrap()).unwrap();
+        let e =
+            Ellipsoid::from_poly(&parse_poly("3x^2+2xy+4y^2-2yz+5z^2+x-7z-30").unwrap()).unwrap();
         let s =
             QuadricForm::from_poly(&parse_poly("x^2-4xz+2y^2+yz-z^2+6x-y+2z-11").unwrap()).unwrap();
         let l = common_denominator(&[&e.form, &s]);
@@ -458,7 +461,7 @@ mod tests {
     #[test]
     fn centre_by_cramer() {
         // S − λE = (x−1)² + 2(y+2)² + 3z² − λ(x² + y² + z² − 4) at λ = 1/2
-        let e = Ellipsoid::new(&parse_poly("x^2+y^2+z^2-4").unwrap()).unwrap();
+        let e = Ellipsoid::from_poly(&parse_poly("x^2+y^2+z^2-4").unwrap()).unwrap();
         let s = QuadricForm::from_poly(&parse_poly("(x-1)^2+2(y+2)^2+3z^2").unwrap()).unwrap();
         let l = common_denominator(&[&e.form, &s]);
         let c = centre_at(

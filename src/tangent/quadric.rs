@@ -1,4 +1,4 @@
-//! S of degree ≤ 2: the exact and complete λ-parametrisation (SPEC §3).
+//! S of degree ≤ 2: the exact and complete λ-parametrisation (contract §3).
 //!
 //! `∇S = λ∇E` is linear in the point: `(B − λA) p = λb − β`.  Where
 //! `δ(λ) = det(B − λA) ≠ 0` the unique solution is `p(λ) = N(λ)/δ(λ)` with
@@ -15,10 +15,10 @@
 //! be irrational (a root of an irreducible quadratic or cubic factor of δ):
 //! the linear algebra then runs in the number field Q(λ₀).
 
-use super::ellipsoid::Mat4;
-use super::ellipsoid::{Ellipsoid, QuadricForm, common_denominator};
+use super::ellipsoid::Ellipsoid;
 use super::pencil::{CentreApprox, pencil_polys};
 use super::witness::{WitnessPoint, find_witness};
+use crate::geom::{Mat4, QuadricForm, common_denominator};
 use crate::number::{Q, QSqrt};
 use crate::poly::extension::{NfElem, NumberField};
 use crate::poly::{QMPoly, QPoly, ZPoly};
@@ -492,7 +492,7 @@ mod tests {
             ),
             ("2x^2+3y^2+4z^2-25", "x+2y-z/3-1"),
         ] {
-            let e = Ellipsoid::new(&parse_poly(e).unwrap()).unwrap();
+            let e = Ellipsoid::from_poly(&parse_poly(e).unwrap()).unwrap();
             let s = QuadricForm::from_poly(&parse_poly(s).unwrap()).unwrap();
             let a = &e.form.a;
             let m: [[QPoly; 3]; 3] =
@@ -517,7 +517,7 @@ mod tests {
     use crate::poly::parse_poly;
 
     fn run(e: &str, s: &str) -> LambdaAnalysis {
-        let e = Ellipsoid::new(&parse_poly(e).unwrap()).unwrap();
+        let e = Ellipsoid::from_poly(&parse_poly(e).unwrap()).unwrap();
         let s = QuadricForm::from_poly(&parse_poly(s).unwrap()).unwrap();
         analyze(&e, &s)
     }

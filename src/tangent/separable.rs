@@ -249,7 +249,7 @@ mod tests {
     use crate::poly::parse_poly;
 
     fn run(e: &str, s: &str) -> Option<SeparableAnalysis> {
-        let e = Ellipsoid::new(&parse_poly(e).unwrap()).unwrap();
+        let e = Ellipsoid::from_poly(&parse_poly(e).unwrap()).unwrap();
         analyze(&e, &parse_poly(s).unwrap())
     }
 

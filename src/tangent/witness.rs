@@ -6,10 +6,10 @@
 //! approximation of a point of E by solving E = 0 for the coordinate along
 //! which E's gradient is largest (so the discriminant stays positive).
 
-use super::ellipsoid::{Ellipsoid, Mat4, common_denominator};
+use super::ellipsoid::Ellipsoid;
+use crate::geom::{Mat4, common_denominator};
 use crate::number::{Q, QSqrt};
 use crate::poly::QMPoly;
-use crate::poly::mpoly::NVARS;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -17,81 +17,33 @@ use num_traits::{One, Signed, Zero};
 #[derive(Clone, Debug)]
 pub struct WitnessPoint {
     /// The coordinates x, y, z.
-    pub coords: [QSqrt; 3],
+    pub(crate) coords: [QSqrt; 3],
     /// S at the point, exactly.
-    pub value: QSqrt,
+    pub(crate) value: QSqrt,
     /// Its sign (-1, 0, 1).
-    pub sign: i32,
+    pub(crate) sign: i32,
 }
 
-/// Exact value of a polynomial in x, y, z at a point of Q(√d)³.
-///
-/// With at most one irrational coordinate `x_k` (the witnesses' shape) the
-/// rational coordinates are substituted first and the univariate rest is
-/// evaluated by Horner's rule in Q(√d): a handful of Q(√d) products instead
-/// of one per monomial factor.
-pub fn eval_qsqrt(p: &QMPoly, pt: &[QSqrt; 3]) -> QSqrt {
-    let irrational: Vec<usize> = (0..3).filter(|&i| !pt[i].is_rational()).collect();
-    let d = irrational
-        .first()
-        .map(|&i| pt[i].d.clone())
-        .unwrap_or_else(Q::zero);
-    if irrational.len() > 1 {
-        return eval_qsqrt_terms(p, pt, &d);
+impl WitnessPoint {
+    /// The coordinates x, y, z (exact, in Q(√d)); E vanishes there exactly.
+    pub fn coords(&self) -> &[QSqrt; 3] {
+        &self.coords
     }
-    let k = irrational.first().copied().unwrap_or(0);
-    // coefficients of p restricted to the line, as a polynomial in x_k
-    let deg = p
-        .terms()
-        .iter()
-        .map(|(e, _)| e[k] as usize)
-        .max()
-        .unwrap_or(0);
-    let mut coef = vec![Q::zero(); deg + 1];
-    let mut powers: [Vec<Q>; 3] = Default::default();
-    for (e, c) in p.terms() {
-        let mut t = c.clone();
-        for v in (0..3).filter(|&v| v != k) {
-            let ev = e[v] as usize;
-            if ev == 0 {
-                continue;
-            }
-            let pw = &mut powers[v];
-            if pw.is_empty() {
-                pw.push(Q::one());
-            }
-            while pw.len() <= ev {
-                let next = pw.last().expect("non-empty") * &pt[v].a;
-                pw.push(next);
-            }
-            t *= &pw[ev];
-        }
-        coef[e[k] as usize] += t;
-    }
-    let x = &pt[k];
-    let mut acc = QSqrt::new(Q::zero(), Q::zero(), d.clone());
-    for c in coef.iter().rev() {
-        acc = acc.mul(x).add(&QSqrt::new(c.clone(), Q::zero(), d.clone()));
-    }
-    acc
-}
 
-fn eval_qsqrt_terms(p: &QMPoly, pt: &[QSqrt; 3], d: &Q) -> QSqrt {
-    let mut acc = QSqrt::new(Q::zero(), Q::zero(), d.clone());
-    for (e, c) in p.terms() {
-        let mut t = QSqrt::new(c.clone(), Q::zero(), d.clone());
-        for v in 0..3.min(NVARS) {
-            for _ in 0..e[v] {
-                t = t.mul(&pt[v]);
-            }
-        }
-        acc = acc.add(&t);
+    /// The value of S at the point, exactly.
+    pub fn value(&self) -> &QSqrt {
+        &self.value
     }
-    acc
+
+    /// The sign of S at the point.
+    pub fn sign(&self) -> crate::number::Sign {
+        crate::number::Sign::from_i32(self.sign)
+    }
 }
 
 /// Projects a rational point near E onto E along the coordinate axis of the
 /// largest gradient component; `None` if that line misses E.
+#[cfg(test)]
 pub fn snap_to_ellipsoid(e: &Ellipsoid, p: &[Q; 3]) -> Option<[QSqrt; 3]> {
     let g = e.form.half_gradient(p);
     let mut k = 0;
@@ -158,6 +110,7 @@ pub fn find_witness(
     }
     let mut bits = 8;
     while bits <= 1024 {
+        crate::budget::check_now();
         if let Some(p) = approx(bits + 16)
             && let Some(w) = fast.witness(&round_point(&p, bits), Some(want))
         {
@@ -274,6 +227,7 @@ impl IntegerData {
         let n = self.s_terms.iter().map(|(ex, _)| ex[k]).max().unwrap_or(0) as usize;
         let mut cs = vec![BigInt::zero(); n + 1];
         for (ex, c) in &self.s_terms {
+            crate::budget::check();
             let mut t = c.clone();
             for &j in &others {
                 if ex[j] > 0 {
@@ -291,6 +245,7 @@ impl IntegerData {
         let (mut hr, mut hi) = (cs[n].clone(), BigInt::zero());
         let mut apow = BigInt::one();
         for j in (0..n).rev() {
+            crate::budget::check();
             apow *= &alpha;
             let r = &hr * &nr + &hi * &ni * &disc;
             let i = &hr * &ni + &hi * &nr;
@@ -318,7 +273,7 @@ impl IntegerData {
             Q::from_integer(disc),
         )
         .normalized();
-        debug_assert_eq!(value.sign(), sign);
+        debug_assert_eq!(value.signum(), sign);
         Some(WitnessPoint {
             coords,
             value,

@@ -1,0 +1,290 @@
+//! The `quadsect` command line (feature `cli`): argument parsing, output
+//! and the CLI-only jobs (the papers' examples, the benchmarks).
+
+use crate::request::Request;
+use crate::{Error, ErrorKind};
+use clap::{Parser, Subcommand};
+use std::io::{IsTerminal, Write};
+use std::process::ExitCode;
+
+pub mod alloc;
+pub mod bench;
+mod bench_cases;
+pub mod examples;
+mod limits;
+
+use limits::LimitArgs;
+
+#[derive(Parser)]
+#[command(
+    name = "quadsect",
+    version,
+    about = "Exact decisions on how two surfaces meet: ellipsoid vs algebraic surface, and natural quadrics",
+    long_about = None
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Reproduce the papers' examples side by side with what they printed.
+    Examples {
+        /// Machine-readable output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Real roots of a univariate polynomial: counts and isolating intervals.
+    Roots {
+        /// The polynomial, e.g. "x^3 - 2x".
+        #[arg(allow_hyphen_values = true)]
+        expr: String,
+        /// JSON output (the fields of docs/contract.md §5).
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
+    },
+    /// The resultant of two polynomials with respect to a variable.
+    Resultant {
+        /// First polynomial.
+        #[arg(allow_hyphen_values = true)]
+        f: String,
+        /// Second polynomial.
+        #[arg(allow_hyphen_values = true)]
+        g: String,
+        /// Variable to eliminate (x, y, z or u).
+        #[arg(long)]
+        var: String,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
+    },
+    /// Ellipsoid vs algebraic surface: intersect, touch or separated (exact, with certificate).
+    Tangent {
+        /// The ellipsoid E, e.g. "x^2+y^2+z^2-25".
+        #[arg(long, allow_hyphen_values = true)]
+        ellipsoid: String,
+        /// The surface S, e.g. "(x-9)^2/9+y^2/4+z^2/16-1".
+        #[arg(long, allow_hyphen_values = true)]
+        surface: String,
+        /// JSON output (the fields of docs/contract.md §3).
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
+        /// Read every decimal literal as the nearest double (round to nearest,
+        /// ties to even), i.e. the numbers a program reading them would use.
+        #[arg(long)]
+        float: bool,
+    },
+    /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
+    Natural {
+        /// First quadric: JSON or short syntax, e.g. "cone vertex=0,0,0 axis=1,0,0 tan2=1/3".
+        a: String,
+        /// Second quadric.
+        b: String,
+        /// JSON output (the fields of docs/contract.md §4).
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
+        /// Compute the exact components (the default).
+        #[arg(long, overrides_with = "no_components")]
+        components: bool,
+        /// Class and counts only, by the fast route (no components).
+        #[arg(long, overrides_with = "components")]
+        no_components: bool,
+        /// Read every decimal literal as the nearest double (round to nearest,
+        /// ties to even).
+        #[arg(long)]
+        float: bool,
+    },
+    /// Median timings of the kernel (resultants, isolation, Sturm), the tangent
+    /// point method and the natural-quadric deciders.
+    Bench {
+        /// kernel, tangent, natural or all.
+        #[arg(default_value = "all")]
+        suite: String,
+        /// Kernel inputs (JSON; default: the copy shipped in the binary,
+        /// benches/data/kernel_inputs.json).
+        #[arg(long)]
+        inputs: Option<String>,
+        /// Natural-quadric pair file (default: the copy shipped in the
+        /// binary, benches/data/natural_pairs.json).
+        #[arg(long)]
+        pairs: Option<String>,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// JSON lines in (file or - for stdin), one JSON answer line out per input line.
+    Batch {
+        /// Input file; standard input when absent or "-".
+        file: Option<String>,
+        /// Worker threads (default: all cores).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+        #[command(flatten)]
+        limits: LimitArgs,
+    },
+}
+
+/// Prints the JSON or the human form (only the one asked for is built).
+fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() -> String) {
+    let mut out = std::io::stdout().lock();
+    let _ = if json {
+        writeln!(out, "{}", v())
+    } else {
+        write!(out, "{}", human())
+    };
+}
+
+fn number_mode(float: bool) -> crate::number::NumberMode {
+    if float {
+        crate::number::NumberMode::Float
+    } else {
+        crate::number::NumberMode::Exact
+    }
+}
+
+/// Runs one request of the dispatch table under the budget of `limits`
+/// and prints its answer.  When the budget ran out, the `undecided`
+/// answer (tangent, natural) is printed and the command fails with the
+/// budget error (exit status 3); for roots and resultant the error alone
+/// is reported.
+fn answer(json: bool, limits: &LimitArgs, request: Request) -> Result<(), Error> {
+    let a = request.execute(&limits.budget())?;
+    emit(
+        json,
+        || serde_json::to_value(&a).unwrap_or(serde_json::Value::Null),
+        || a.to_string(),
+    );
+    match a.exhausted() {
+        Some(e) => Err(e.clone().into()),
+        None => Ok(()),
+    }
+}
+
+fn run(cli: Cli) -> Result<(), Error> {
+    match cli.command {
+        Command::Examples { json } => {
+            let r = examples::run_all();
+            emit(json, || examples::to_json(&r), || examples::to_human(&r));
+        }
+        Command::Roots { expr, json, limits } => {
+            answer(json, &limits, Request::Roots { poly: expr })?
+        }
+        Command::Resultant {
+            f,
+            g,
+            var,
+            json,
+            limits,
+        } => answer(json, &limits, Request::Resultant { f, g, var })?,
+        Command::Tangent {
+            ellipsoid,
+            surface,
+            json,
+            float,
+            limits,
+        } => answer(
+            json,
+            &limits,
+            Request::Tangent {
+                ellipsoid,
+                surface,
+                mode: number_mode(float),
+            },
+        )?,
+        Command::Natural {
+            a,
+            b,
+            json,
+            components: _,
+            no_components,
+            float,
+            limits,
+        } => {
+            let mode = number_mode(float);
+            let parse = |t: &str, what: &str| {
+                crate::natural::types::parse_natural_in(t, mode).map_err(|e| e.context(what))
+            };
+            let (a, b) = (parse(&a, "in A")?, parse(&b, "in B")?);
+            answer(
+                json,
+                &limits,
+                Request::Natural {
+                    a,
+                    b,
+                    components: !no_components,
+                },
+            )?
+        }
+        Command::Bench {
+            suite,
+            inputs,
+            pairs,
+            json,
+        } => {
+            let rows = bench::run(&suite, inputs.as_deref(), pairs.as_deref())?;
+            emit(json, || bench::to_json(&rows), || bench::to_markdown(&rows));
+        }
+        Command::Batch {
+            file,
+            threads,
+            limits,
+        } => {
+            let mut opts = crate::batch::BatchOptions {
+                budget: limits.budget(),
+                progress: std::io::stderr().is_terminal(),
+                ..Default::default()
+            };
+            if let Some(n) = threads {
+                opts.threads = n.max(1);
+                opts.lookahead = crate::batch::DEFAULT_LOOKAHEAD * opts.threads;
+            }
+            let out = std::io::BufWriter::new(std::io::stdout().lock());
+            let res = match file.as_deref() {
+                None | Some("-") => crate::batch::run_batch_with(
+                    std::io::BufReader::new(std::io::stdin()),
+                    out,
+                    &opts,
+                ),
+                Some(path) => {
+                    let f = std::fs::File::open(path).map_err(|e| {
+                        Error::new(ErrorKind::Io, format!("cannot open batch file {path}: {e}"))
+                    })?;
+                    opts.input_bytes = f.metadata().ok().filter(|m| m.is_file()).map(|m| m.len());
+                    crate::batch::run_batch_with(std::io::BufReader::new(f), out, &opts)
+                }
+            };
+            // a closed output pipe ends the run quietly (exit status 0)
+            res.map_err(|e| Error::new(ErrorKind::Io, format!("batch I/O error: {e}")))?;
+        }
+    }
+    Ok(())
+}
+
+/// Runs the command line: parses the arguments, runs the command, prints
+/// its answer, and returns the exit status (0 success, 2 bad input, 3
+/// budget exhausted, 1 internal failure).
+pub fn main() -> ExitCode {
+    // panics are internal failures: report them in one line, exit status 1
+    std::panic::set_hook(Box::new(|info| {
+        eprintln!("internal error: {info}");
+    }));
+    crate::budget::set_memory_probe(alloc::thread_net_bytes);
+    let cli = Cli::parse();
+    match std::panic::catch_unwind(|| run(cli)) {
+        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(Err(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code() as u8)
+        }
+        Err(_) => ExitCode::from(1),
+    }
+}

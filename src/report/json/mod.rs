@@ -1,0 +1,10 @@
+//! The JSON of `--json` and of the batch protocol (contract field names, keys in
+//! the documented order).
+
+mod kernel;
+mod natural;
+mod tangent;
+
+pub use kernel::{alg_json, resultant_json, roots_json};
+pub use natural::{natural_input_json, natural_json};
+pub use tangent::tangent_json;

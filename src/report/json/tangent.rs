@@ -1,0 +1,260 @@
+//! JSON of `quadsect tangent` (contract §3 JSON and the human summary).
+
+use crate::number::QSqrt;
+use crate::poly::ZPoly;
+use crate::poly::mpoly::{L, MPoly, T, U};
+use crate::report::upoly_string;
+use crate::roots::RealAlg;
+use crate::tangent::quadric::Branch;
+use crate::tangent::{Analysis, TangentReport, Undecided, WitnessPoint};
+use serde_json::{Value, json};
+
+/// A real algebraic number as the contract's ALG object, its polynomial printed in
+/// the variable `v`.
+pub fn alg_json_in(a: &RealAlg, v: usize) -> Value {
+    let (lo, hi) = a.interval();
+    json!({
+        "poly": upoly_string(&a.poly(), v),
+        "interval": [crate::number::fmt_q(&lo), crate::number::fmt_q(&hi)],
+        "approx": a.approx(20),
+    })
+}
+
+/// Why a verdict is undecided: `{"kind": "budget"|"no-certificate",
+/// "limit": "time"|"memory"|"size"|"cancelled"|null, "message"}`.
+pub fn undecided_json(u: &Undecided) -> Value {
+    match u {
+        Undecided::Budget(e) => {
+            json!({"kind": "budget", "limit": e.limit().as_str(), "message": e.to_string()})
+        }
+        Undecided::NoCertificate(why) => {
+            json!({"kind": "no-certificate", "limit": null, "message": why})
+        }
+    }
+}
+
+/// An element of Q(√d) as `{"a", "b", "d", "approx"}`.
+pub fn qsqrt_json(x: &QSqrt) -> Value {
+    json!({
+        "a": crate::number::fmt_q(&x.a),
+        "b": crate::number::fmt_q(&x.b),
+        "d": crate::number::fmt_q(&x.d),
+        "approx": x.approx(20),
+    })
+}
+
+fn witness_json(w: &Option<WitnessPoint>) -> Value {
+    match w {
+        None => Value::Null,
+        Some(w) => json!({
+            "point": w.coords.iter().map(qsqrt_json).collect::<Vec<_>>(),
+            "value": qsqrt_json(&w.value),
+            "sign": w.sign,
+        }),
+    }
+}
+
+fn side_str(s: Option<i32>) -> Value {
+    match s {
+        Some(1) => json!("+"),
+        Some(-1) => json!("-"),
+        _ => Value::Null,
+    }
+}
+
+fn method_json(m: &Analysis) -> Value {
+    match m {
+        Analysis::Constant => json!({"method": "constant"}),
+        Analysis::Undecided => json!({"method": "none"}),
+        Analysis::Pencil(an) => json!({
+            "method": "pencil-discriminant",
+            "scale": an.scale.to_string(),
+            "char_poly": upoly_string(&an.char_poly, L),
+            "delta": upoly_string(&an.delta, L),
+            "secular_poly": upoly_string(&an.secular, L),
+            "test": "gcd(P, delta) = 1 and D(u) = disc_l(F - u delta) of degree 6 and square-free: every real root of D is S at a real critical point",
+            "extreme_multipliers": an.extreme_multipliers.as_ref().map(|(a, b)| vec![alg_json_in(a, L), alg_json_in(b, L)]),
+        }),
+        Analysis::Lambda(an) => {
+            let mults: Vec<Value> = an
+                .critical
+                .iter()
+                .map(|c| {
+                    let branch = match &c.branch {
+                        Branch::Generic => json!({"kind": "generic"}),
+                        Branch::Singular { dim, single_point } => {
+                            json!({"kind": "singular", "solution_dim": dim, "single_point": single_point})
+                        }
+                    };
+                    json!({
+                        "lambda": alg_json_in(&c.lambda, L),
+                        "value": crate::report::alg_json(&c.value),
+                        "real_points": c.real,
+                        "branch": branch,
+                    })
+                })
+                .collect();
+            json!({
+                "method": "lambda-parametrisation",
+                "delta": upoly_string(&ZPoly::from_q(&an.delta).0, L),
+                "secular_poly": upoly_string(&ZPoly::from_q(&an.secular).0, L),
+                "secular_generic": upoly_string(&ZPoly::from_q(&an.secular_generic).0, L),
+                "multipliers": mults,
+            })
+        }
+        Analysis::Separable(sa) => {
+            let names = ["x", "y", "z"];
+            let branches: Vec<Value> = sa
+                .branches
+                .iter()
+                .map(|b| {
+                    json!({
+                        "lambda": b.lambda.as_ref().map(crate::number::fmt_q),
+                        "free": b.free.iter().map(|&j| names[j]).collect::<Vec<_>>(),
+                        "coordinate_poly": upoly_string(&b.coordinate_poly, sa.general),
+                        "value_map": MPoly::from_univariate(&b.value_map, sa.general).to_string_canonical(),
+                        "value_poly": upoly_string(&b.value_poly, U),
+                        "real_points": b.real_points.iter().map(|(x, v)| json!({
+                            "coordinate": alg_json_in(x, sa.general),
+                            "value": crate::report::alg_json(v),
+                        })).collect::<Vec<_>>(),
+                        "roots_with_nonreal_points": b.nonreal_roots,
+                        "curves": b.curves,
+                    })
+                })
+                .collect();
+            json!({
+                "method": "separable-branches",
+                "general_coordinate": names[sa.general],
+                "kappa": sa.kappa.iter().map(|k| k.as_ref().map(crate::number::fmt_q)).collect::<Vec<_>>(),
+                "rho": MPoly::from_univariate(&sa.rho, sa.general).to_string_canonical(),
+                "branches": branches,
+            })
+        }
+        Analysis::CriticalIdeal(an) => {
+            let elim = an.elimination.as_ref().map(|e| {
+                json!({
+                    "order_l_x_y_z": upoly_string(&e.first, U),
+                    "order_l_z_y_x": upoly_string(&e.second, U),
+                    "gcd": upoly_string(&e.gcd, U),
+                    "branches_with_solutions": e.branches,
+                })
+            });
+            let coords: Vec<String> = an
+                .rur
+                .coords
+                .iter()
+                .map(|c| MPoly::from_univariate(c, T).to_string_canonical())
+                .collect();
+            json!({
+                "method": "critical-ideal-rur",
+                "system": an.generators.iter().map(|g| g.to_string_canonical()).collect::<Vec<_>>(),
+                "critical_points": an.rur.points,
+                "with_multiplicity": an.rur.multiplicity_dim,
+                "made_radical": an.rur.made_radical,
+                "separating_form": an.rur.form.iter().map(crate::number::fmt_q).collect::<Vec<_>>(),
+                "rur_poly": upoly_string(&an.rur.f, T),
+                "rur_coordinates": coords,
+                "rur_value": MPoly::from_univariate(&an.value_poly, T).to_string_canonical(),
+                "real_critical_points": an.rur.real_roots.iter().map(|a| alg_json_in(a, T)).collect::<Vec<_>>(),
+                "resultant_elimination": elim,
+            })
+        }
+        Analysis::ModularRur(an) => {
+            let r = &an.rur;
+            json!({
+                "method": "critical-ideal-modular-rur",
+                "critical_points": r.points(),
+                "generators": an.generators.iter().map(|g| g.to_string_canonical()).collect::<Vec<_>>(),
+                "separating_element": separating_element(an),
+                "rur_poly": upoly_string(&r.f, U),
+                "rur_coordinates": r.coords.iter().map(|c| upoly_string(c, U)).collect::<Vec<_>>(),
+                "rur_denominator": upoly_string(&r.denom, U),
+                "real_critical_points": r.real_roots.len(),
+                "value_of_s": if an.shift.is_some() {
+                    json!([upoly_string(&ZPoly::from_q(&an.value_num).0, U), upoly_string(&ZPoly::from_q(&an.value_den).0, U)])
+                } else {
+                    Value::Null
+                },
+                "reconstruction_primes": r.primes,
+                "soundness": if an.shift.is_none() {
+                    "rur_poly D(u) is square-free and divides, in Z[u], the homogenised compositions of E, of the three minors of ∇S × ∇E and of S − u at (x, y, z) = rur_coordinates / rur_denominator: every root u of D is S at a critical point, distinct roots at distinct points"
+                } else {
+                    "rur_poly f(u) is square-free and divides, in Z[u], the homogenised compositions of E, of the three minors of ∇S × ∇E and of h − u (h = separating_element) at (x, y, z) = rur_coordinates / rur_denominator: every root u of f is h at a critical point, distinct roots at distinct points; S there is value_of_s[0](u) / value_of_s[1](u), so the critical values are the roots of the judging polynomial, the square-free part of Res_u(f(u), v·value_of_s[1](u) − value_of_s[0](u)) in v"
+                },
+                "completeness": {
+                    "prime": r.count.prime,
+                    "count_bound": r.count.bound,
+                    "argument": "the leading forms of E and of the minors have no common zero at infinity modulo prime, so the number of complex critical points is at most count_bound (the standard monomials of a Gröbner basis modulo prime); count_bound = deg D, so the roots of D are all the critical values",
+                },
+                "resultant_elimination": Value::Null,
+            })
+        }
+        Analysis::LevelSets(ls) => json!({
+            "method": "level-sets",
+            "levels": ls.levels.iter().map(|(q, ne)| json!({"level": crate::number::fmt_q(q), "real_points": ne})).collect::<Vec<_>>(),
+            "linear_form": ls.form.iter().map(crate::number::fmt_q).collect::<Vec<_>>(),
+        }),
+    }
+}
+
+/// The separating element of a modular RUR: `S`, or `S + c·(l·(x, y, z))`
+/// when S alone does not separate the critical points.
+fn separating_element(an: &crate::tangent::modular::ModularAnalysis) -> String {
+    match &an.shift {
+        None => "S".into(),
+        Some((l, c)) => format!(
+            "S + {}*({}*x + {}*y + {}*z)",
+            crate::number::fmt_q(c),
+            crate::number::fmt_q(&l[0]),
+            crate::number::fmt_q(&l[1]),
+            crate::number::fmt_q(&l[2])
+        ),
+    }
+}
+
+/// `quadsect tangent --json`.
+pub fn tangent_json(r: &TangentReport) -> Value {
+    let c = &r.certificate;
+    let mut cert = method_json(&c.method);
+    if let Value::Object(m) = &mut cert {
+        m.insert(
+            "critical_values".into(),
+            Value::Array(
+                c.critical_values
+                    .iter()
+                    .map(crate::report::alg_json)
+                    .collect(),
+            ),
+        );
+        m.insert(
+            "nonreal_point_values".into(),
+            Value::Array(
+                c.nonreal_point_values
+                    .iter()
+                    .map(crate::report::alg_json)
+                    .collect(),
+            ),
+        );
+        m.insert("witness_negative".into(), witness_json(&c.negative_witness));
+        m.insert("witness_positive".into(), witness_json(&c.positive_witness));
+        m.insert("notes".into(), json!(c.notes));
+    }
+    let mut out = json!({
+        "intersect": r.intersect,
+        "touching": r.touching,
+        "side": side_str(r.side),
+        "containment": r.containment.map(|c| c.as_str()),
+        "min": r.min.as_ref().map(crate::report::alg_json),
+        "max": r.max.as_ref().map(crate::report::alg_json),
+        "judging_poly": upoly_string(&r.judging_poly, U),
+        "certificate": cert,
+        "verdict": r.verdict.as_str(),
+    });
+    // why an undecided answer is undecided: the budget that ran out, or
+    // the step that could not produce a certificate
+    if let (Some(reason), Value::Object(m)) = (&r.reason, &mut out) {
+        m.insert("reason".into(), undecided_json(reason));
+    }
+    out
+}

@@ -1,0 +1,10 @@
+//! Human-readable text: aligned summaries with decimal approximations
+//! beside the exact values.
+
+mod kernel;
+mod natural;
+mod tangent;
+
+pub use kernel::roots_human;
+pub use natural::natural_human;
+pub use tangent::{tangent_human, upoly_string};

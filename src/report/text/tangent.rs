@@ -1,0 +1,179 @@
+//! Human-readable text of `quadsect tangent` (contract §3 JSON and the human summary).
+
+use crate::poly::ZPoly;
+use crate::poly::mpoly::{L, MPoly, U};
+use crate::roots::RealAlg;
+use crate::tangent::{Analysis, TangentReport, WitnessPoint};
+
+/// A univariate integer polynomial printed in the variable with index `v`.
+pub fn upoly_string(p: &ZPoly, v: usize) -> String {
+    MPoly::from_univariate(&p.to_q(), v).to_string_canonical()
+}
+
+fn alg_human(a: &RealAlg) -> String {
+    match a.as_rational() {
+        Some(q) => format!("{}  (≈ {})", crate::number::fmt_q(q), a.approx(20)),
+        None => {
+            let (lo, hi) = a.interval();
+            format!(
+                "≈ {}  (root of {} in ({}, {}))",
+                a.approx(20),
+                upoly_string(&a.poly(), U),
+                crate::number::fmt_q(&lo),
+                crate::number::fmt_q(&hi)
+            )
+        }
+    }
+}
+
+fn point_human(w: &WitnessPoint) -> String {
+    let c: Vec<String> = w.coords.iter().map(|x| x.to_string()).collect();
+    format!(
+        "({})  S = {} ≈ {}",
+        c.join(", "),
+        w.value,
+        w.value.approx(12)
+    )
+}
+
+/// `quadsect tangent` for people: the verdict in one line, then min/max with
+/// approximations, D(u) and the certificate.
+pub fn tangent_human(r: &TangentReport) -> String {
+    let mut s = String::new();
+    let side = match r.side {
+        Some(1) => ", S > 0 on E (E lies on the positive side of S)".to_string(),
+        Some(-1) => ", S < 0 on E (E lies on the negative side of S)".to_string(),
+        _ => String::new(),
+    };
+    let cont = r
+        .containment
+        .map(|c| format!(", {}", c.as_str()))
+        .unwrap_or_default();
+    s.push_str(&format!(
+        "verdict   {}{}{}\n",
+        r.verdict.as_str(),
+        side,
+        cont
+    ));
+    if let Some(reason) = &r.reason {
+        s.push_str(&format!("reason    {reason}\n"));
+    }
+    if r.verdict == crate::tangent::Verdict::Undecided {
+        return s;
+    }
+    if let Some(m) = &r.min {
+        s.push_str(&format!("min S|E   {}\n", alg_human(m)));
+    }
+    if let Some(m) = &r.max {
+        s.push_str(&format!("max S|E   {}\n", alg_human(m)));
+    }
+    s.push_str(&format!("D(u)      {}\n", upoly_string(&r.judging_poly, U)));
+    let c = &r.certificate;
+    s.push_str("certificate\n");
+    let method = match &c.method {
+        Analysis::Constant => "S is constant".to_string(),
+        Analysis::Undecided => "none".to_string(),
+        Analysis::Pencil(an) => format!(
+            "pencil: F(λ) = det(Ŝ − λÊ) = {}, δ(λ) = {}, P = F'δ − Fδ' = {} (Ŝ, Ê: {}·S, {}·E); gcd(P, δ) = 1 and D = disc_λ(F − uδ) square-free of degree 6, so every real root of D is a critical value at a real point",
+            upoly_string(&an.char_poly, L),
+            upoly_string(&an.delta, L),
+            upoly_string(&an.secular, L),
+            an.scale,
+            an.scale
+        ),
+        Analysis::Lambda(an) => format!(
+            "λ-parametrisation: secular polynomial P(λ) = {} (degree {}), δ(λ) = {}",
+            upoly_string(&ZPoly::from_q(&an.secular).0, L),
+            an.secular.degree().unwrap_or(0),
+            upoly_string(&ZPoly::from_q(&an.delta).0, L)
+        ),
+        Analysis::Separable(sa) => {
+            let names = ["x", "y", "z"];
+            let g = names[sa.general];
+            let parts: Vec<String> = sa
+                .branches
+                .iter()
+                .map(|b| {
+                    let head = match &b.lambda {
+                        None => "others at the centre".to_string(),
+                        Some(k) => {
+                            let f: Vec<&str> = b.free.iter().map(|&j| names[j]).collect();
+                            format!("λ = {}, {} free", crate::number::fmt_q(k), f.join(", "))
+                        }
+                    };
+                    format!(
+                        "[{head}: {} = 0, values {} = 0, {} real]",
+                        upoly_string(&b.coordinate_poly, sa.general),
+                        upoly_string(&b.value_poly, U),
+                        b.real_points.len()
+                    )
+                })
+                .collect();
+            format!(
+                "separable S, general coordinate {g}: {} branches, D(u) = product of Res_{g}(branch, u − S) {}",
+                sa.branches.len(),
+                parts.join(" ")
+            )
+        }
+        Analysis::CriticalIdeal(an) => format!(
+            "critical ideal E = 0, ∇S×∇E = 0: {} critical points ({} with multiplicity), RUR in t = {}·x + {}·y + {}·z, {} real",
+            an.rur.points,
+            an.rur.multiplicity_dim,
+            an.rur.form[0],
+            an.rur.form[1],
+            an.rur.form[2],
+            an.rur.real_roots.len()
+        ),
+        Analysis::ModularRur(an) => format!(
+            "critical ideal E = 0, ∇S×∇E = 0, multi-modular: {} critical points, RUR in u = S (its polynomial is D(u); {} primes, verified exactly), {} real; complete: at most {} critical points by the count modulo {}",
+            an.rur.points(),
+            an.rur.primes,
+            an.rur.real_roots.len(),
+            an.rur.count.bound,
+            an.rur.count.prime
+        ),
+        Analysis::LevelSets(ls) => format!(
+            "curves of critical points: {} level curves tested",
+            ls.levels.len()
+        ),
+    };
+    s.push_str(&format!("  method               {method}\n"));
+    let vals: Vec<String> = c.critical_values.iter().map(|v| v.approx(12)).collect();
+    s.push_str(&format!("  real critical values {}\n", vals.join(", ")));
+    if !c.nonreal_point_values.is_empty() {
+        let v: Vec<String> = c
+            .nonreal_point_values
+            .iter()
+            .map(|v| v.approx(12))
+            .collect();
+        s.push_str(&format!(
+            "  roots of D(u) at non-real critical points (not attained): {}\n",
+            v.join(", ")
+        ));
+    }
+    if let Some(w) = &c.negative_witness {
+        s.push_str(&format!("  point of E with S < 0  {}\n", point_human(w)));
+    }
+    if let Some(w) = &c.positive_witness {
+        s.push_str(&format!("  point of E with S > 0  {}\n", point_human(w)));
+    }
+    if let Analysis::CriticalIdeal(an) = &c.method
+        && let Some(e) = &an.elimination
+    {
+        s.push_str(&format!(
+            "  resultant elimination (gcd of two orders) {}\n",
+            upoly_string(&e.gcd, U)
+        ));
+    }
+    for n in &c.notes {
+        s.push_str(&format!("  note: {n}\n"));
+    }
+    s
+}
+
+impl std::fmt::Display for TangentReport {
+    /// The human summary (as `quadsect tangent` prints it).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&tangent_human(self))
+    }
+}

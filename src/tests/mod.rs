@@ -1,0 +1,19 @@
+//! Behaviour tests that need the crate's internals (the deciders, the
+//! witness machinery, the kernel), run with `cargo test`.  Tests of the
+//! public API alone are in `tests/`.
+//!
+//! * `tangent`: every example of paper 004 with the paper's printed numbers
+//!   beside ours, constructed tangencies, property tests (rigid motions,
+//!   scaling, sampling, agreement of routes);
+//! * `natural`: paper 000's examples, the three conic deciders, the
+//!   classification of every class, property tests;
+//! * `kernel_props`, `kernel_reference`: the algebra kernel against
+//!   properties and against committed sympy reference data;
+//! * `fuzz_props`: proptest versions of the fuzz targets.
+
+mod fast_route;
+mod fuzz_props;
+mod kernel_props;
+mod kernel_reference;
+mod natural;
+mod tangent;

@@ -1,0 +1,186 @@
+//! The command line: `--no-components` (the fast route), `--components`,
+//! hexadecimal input and `--float` on `natural` and `tangent`; the pair
+//! rows of the natural benchmark through the library.
+
+use serde_json::Value;
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_quadsect"))
+        .args(args)
+        .output()
+        .expect("the quadsect binary runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> Value {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("{args:?}: {e}: {out}"))
+}
+
+const CYL: &str = "cylinder point=0,0,0 axis=1,0,0 radius2=1";
+const CONE: &str = "cone vertex=0,0,2 axis=0,1,0 tan2=3";
+
+#[test]
+fn no_components_gives_the_same_class_and_counts_by_the_fast_route() {
+    let full = json(&["natural", CYL, CONE, "--json"]);
+    let fast = json(&["natural", CYL, CONE, "--json", "--no-components"]);
+    for k in ["class", "conics", "lines", "points", "axes", "thm8"] {
+        assert_eq!(full[k], fast[k], "{k}");
+    }
+    assert_eq!(fast["class"], "points");
+    assert_eq!(fast["points"], 2);
+    assert_eq!(fast["route"], "fast");
+    assert!(fast.get("components").is_none());
+    assert!(full["components"].as_array().is_some_and(|c| c.len() == 2));
+    // --components is the default, and the later flag wins
+    let explicit = json(&["natural", CYL, CONE, "--json", "--components"]);
+    assert_eq!(explicit["components"], full["components"]);
+    let last = json(&[
+        "natural",
+        CYL,
+        CONE,
+        "--json",
+        "--no-components",
+        "--components",
+    ]);
+    assert!(last.get("components").is_some());
+    // human output
+    let (code, out, _) = run(&["natural", CYL, CONE, "--no-components"]);
+    assert_eq!(code, 0);
+    assert!(
+        out.starts_with("class     points  (0 conics, 0 lines, 2 points)"),
+        "{out}"
+    );
+    assert!(out.contains("route     fast"), "{out}");
+}
+
+#[test]
+fn hexadecimal_input_is_exact() {
+    let dec = json(&["natural", CYL, CONE, "--json"]);
+    let hex = json(&[
+        "natural",
+        "cylinder point=0x0p0,0,0 axis=0x1p0,0,0 radius2=0x1.0p0",
+        "cone vertex=0,0,0x1p1 axis=0,0x.8p1,0 tan2=0x1.8p1",
+        "--json",
+    ]);
+    for k in ["class", "conics", "lines", "points", "components"] {
+        assert_eq!(dec[k], hex[k], "{k}");
+    }
+    // a malformed hex float is a bad-input error with its column
+    let (code, _, err) = run(&["natural", "sphere center=0x1p,0,0 radius2=1", CYL]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("binary exponent") && err.contains("column 5"),
+        "{err}"
+    );
+    let (code, _, err) = run(&["roots", "x^2 - 0x1.8p1"]);
+    assert_eq!(code, 0, "{err}");
+}
+
+#[test]
+fn float_mode_reads_decimals_as_doubles() {
+    // exactly tangent spheres in decimal (0.1 + 0.1 = 0.2); as doubles the
+    // distance 0.2 exceeds the sum of the radii √0.01: no intersection
+    let a = "sphere center=0,0,0 radius2=0.01";
+    let b = "sphere center=0.2,0,0 radius2=0.01";
+    for comps in ["--components", "--no-components"] {
+        let exact = json(&["natural", a, b, "--json", comps]);
+        let float = json(&["natural", a, b, "--json", comps, "--float"]);
+        assert_eq!(
+            (exact["class"].as_str(), exact["points"].as_u64()),
+            (Some("points"), Some(1))
+        );
+        assert_eq!(float["class"], "empty");
+    }
+    // the same with the double's exact value written in hex: identical
+    let hex = json(&[
+        "natural",
+        "sphere center=0,0,0 radius2=0x1.47ae147ae147bp-7",
+        "sphere center=0x1.999999999999ap-3,0,0 radius2=0x1.47ae147ae147bp-7",
+        "--json",
+    ]);
+    assert_eq!(hex["class"], "empty");
+    // tangent: x² + y² + z² = 0.01 touches the plane x = 0.1 exactly;
+    // the doubles do not
+    let e = "x^2+y^2+z^2-0.01";
+    let s = "x-0.1";
+    let exact = json(&["tangent", "--ellipsoid", e, "--surface", s, "--json"]);
+    let float = json(&[
+        "tangent",
+        "--ellipsoid",
+        e,
+        "--surface",
+        s,
+        "--json",
+        "--float",
+    ]);
+    assert_eq!(exact["verdict"], "touching");
+    assert_eq!(float["verdict"], "separated");
+    // out of the double range
+    let (code, _, err) = run(&[
+        "natural",
+        "sphere center=1e400,0,0 radius2=1",
+        CYL,
+        "--float",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("out of the double range"), "{err}");
+}
+
+#[test]
+fn pair_rows_of_the_benchmark() {
+    let dir = std::env::temp_dir().join(format!("quadsect-pairs-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("pairs.json");
+    std::fs::write(
+        &path,
+        r#"{"description": "test", "pairs": [
+          {"name": "p1", "group": "g", "a": {"kind": "cylinder", "point": ["0","0","0"], "axis": ["1","0","0"], "radius2": "1"},
+           "b": {"kind": "cone", "vertex": ["0","0","2"], "axis": ["0","1","0"], "tan2": "3"},
+           "expect": {"class": "points", "conics": 0, "lines": 0, "points": 2}},
+          {"name": "p2", "group": "g", "a": {"kind": "sphere", "center": ["0","0","0"], "radius2": "1"},
+           "b": {"kind": "sphere", "center": ["0x1p0","0","0"], "radius2": "1"},
+           "expect": {"class": "empty", "conics": 0, "lines": 0, "points": 0}}]}"#,
+    )
+    .unwrap();
+    let mut rows = Vec::new();
+    quadsect::cli::bench::pairs_suite(Some(path.to_str().unwrap()), &mut rows).unwrap();
+    let j = quadsect::cli::bench::to_json(&rows);
+    let rows = j.as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert_eq!(rows[0]["suite"], "natural-pair");
+    assert_eq!(rows[0]["group"], "g");
+    assert_eq!(rows[0]["agrees"], true);
+    // p2 is a circle, not empty: the row says it disagrees with expect
+    assert_eq!(rows[1]["agrees"], false);
+    assert_eq!(rows[2]["suite"], "natural-group");
+    assert_eq!(rows[2]["agree"], 1);
+    assert!(rows[2]["max_s"].as_f64().unwrap() >= rows[2]["median_s"].as_f64().unwrap());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn batch_accepts_components_and_float_fields() {
+    let line = r#"{"id":1,"op":"natural","a":"sphere center=0,0,0 radius2=0.01","b":"sphere center=0.2,0,0 radius2=0.01","components":false}"#;
+    let v = quadsect::batch::answer_line(line);
+    assert_eq!(v["result"]["class"], "points");
+    assert_eq!(v["result"]["route"], "fast");
+    let line = r#"{"id":2,"op":"natural","a":"sphere center=0,0,0 radius2=0.01","b":"sphere center=0.2,0,0 radius2=0.01","float":true}"#;
+    let v = quadsect::batch::answer_line(line);
+    assert_eq!(v["result"]["class"], "empty");
+    assert!(v["result"]["components"].is_array());
+    let line =
+        r#"{"id":3,"op":"tangent","ellipsoid":"x^2+y^2+z^2-0.01","surface":"x-0.1","float":true}"#;
+    assert_eq!(
+        quadsect::batch::answer_line(line)["result"]["verdict"],
+        "separated"
+    );
+    let line = r#"{"id":4,"op":"natural","a":"sphere center=0,0,0 radius2=1","b":"sphere center=1,0,0 radius2=1","float":1}"#;
+    assert_eq!(quadsect::batch::answer_line(line)["ok"], false);
+}
