@@ -117,15 +117,19 @@ pub enum Containment {
     SInsideE,
     /// The two solids are disjoint.
     Apart,
+    /// S = c·E: the same surface (the verdict is `touching`: S vanishes on
+    /// all of E, ν = μ = 0).
+    Coincident,
 }
 
 impl Containment {
-    /// `E-inside-S`, `S-inside-E` or `apart`.
+    /// `E-inside-S`, `S-inside-E`, `apart` or `coincident`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Containment::EInsideS => "E-inside-S",
             Containment::SInsideE => "S-inside-E",
             Containment::Apart => "apart",
+            Containment::Coincident => "coincident",
         }
     }
 }
@@ -339,7 +343,8 @@ impl TangentReport {
         self.side.and_then(Side::from_i32)
     }
 
-    /// Containment, when S is an ellipsoid and they do not intersect.
+    /// Containment, when S is an ellipsoid and they do not intersect
+    /// (`Coincident` when S = c·E).
     pub fn containment(&self) -> Option<Containment> {
         self.containment
     }
@@ -571,7 +576,20 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Er
             critical::Outcome::Curves(ls) => {
                 let j = ls.judging.clone();
                 let vals = ls.attained.clone();
-                let (_, nonreal) = split_values(&vals, &j);
+                // only the roots of D(u) outside [ν, μ] are known not to be
+                // attained at real points; those between are unclassified
+                // (named in a note by `finish`)
+                let (vals, roots) = split_values(&vals, &j);
+                let nonreal = match (vals.first(), vals.last()) {
+                    (Some(lo), Some(hi)) => roots
+                        .into_iter()
+                        .filter(|r| {
+                            r.cmp_exact(lo) == Ordering::Less
+                                || r.cmp_exact(hi) == Ordering::Greater
+                        })
+                        .collect(),
+                    _ => roots,
+                };
                 (
                     vals,
                     nonreal,
@@ -669,7 +687,22 @@ fn finish(
 ) -> TangentReport {
     let mut notes = Vec::new();
     if matches!(method, Analysis::LevelSets(_)) {
-        notes.push("curves of critical points: ν and μ are exact; critical values strictly between them are not classified".into());
+        let between: Vec<String> = match (values.first(), values.last()) {
+            (Some(lo), Some(hi)) => RealAlg::roots_of(&judging)
+                .iter()
+                .filter(|r| {
+                    r.cmp_exact(lo) == Ordering::Greater && r.cmp_exact(hi) == Ordering::Less
+                })
+                .map(|r| r.approx(12))
+                .collect(),
+            _ => vec![],
+        };
+        let listed = if between.is_empty() {
+            String::new()
+        } else {
+            format!(" (roots of D(u) there: {})", between.join(", "))
+        };
+        notes.push(format!("curves of critical points: ν and μ are exact; critical values strictly between them are not classified{listed}"));
     }
     if let Analysis::Separable(sa) = &method
         && sa.has_curves()
@@ -693,7 +726,14 @@ fn finish(
     } else if sm < 0 {
         (Verdict::Separated, false, false, Some(-1))
     } else if sn == 0 && sm == 0 {
-        notes.push("S vanishes on all of E: E lies on the surface S".into());
+        if surface.total_degree() == Some(2) {
+            // a quadric vanishing on the irreducible quadric E is c·E
+            notes.push(
+                "S vanishes on all of E and has degree 2: S = c·E, so E lies on the surface S (they coincide)".into(),
+            );
+        } else {
+            notes.push("S vanishes on all of E: E lies on the surface S".into());
+        }
         (Verdict::Touching, true, true, None)
     } else if sn == 0 {
         (Verdict::Touching, true, true, Some(1))
@@ -722,6 +762,8 @@ fn finish(
     }
     let containment = if !intersect {
         containment_of(e, surface, side.unwrap_or(0))
+    } else if sn == 0 && sm == 0 && surface.total_degree() == Some(2) {
+        Some(Containment::Coincident)
     } else {
         None
     };
