@@ -227,6 +227,59 @@ pub fn time_case(
     (times[times.len() / 2], last)
 }
 
+/// Every case of the general-position suite, in table order (the 100
+/// quartic pairs first).
+pub fn all_cases() -> Vec<Case> {
+    let mut all = quartic_pairs();
+    all.push(issue_example());
+    all.extend(rotated_quartic());
+    for d in [5, 6, 8] {
+        all.extend(dense_cases(d));
+    }
+    all.push(big_cubic(300));
+    all.push(big_cubic(3));
+    all
+}
+
+/// A polynomial with its denominators cleared (an integer multiple).
+fn integer_multiple(p: &QMPoly) -> QMPoly {
+    let l = p.terms().iter().fold(BigInt::from(1), |l, (_, c)| {
+        num_integer::Integer::lcm(&l, c.denom())
+    });
+    p.scale(&Q::from_integer(l))
+}
+
+/// Writes the critical system `E, (∇S × ∇E)₁, ₂, ₃` of every case for an
+/// outside solver: `DIR/<id>.ms` in msolve's input format (variables,
+/// characteristic 0, integer generators), and `DIR/cases.jsonl` with the
+/// id, E and S of each case, so that a script can time quadsect and the
+/// solver on the same systems.  Returns the number of cases.
+pub fn dump_systems(dir: &std::path::Path) -> std::io::Result<usize> {
+    use std::io::Write;
+    std::fs::create_dir_all(dir)?;
+    let cases = all_cases();
+    let mut index = std::fs::File::create(dir.join("cases.jsonl"))?;
+    for c in &cases {
+        let cross = crate::tangent::critical::cross_gradients(&c.s, &c.e);
+        let gens: Vec<String> = std::iter::once(&c.e)
+            .chain(cross.iter())
+            .filter(|g| !g.is_zero())
+            .map(|g| integer_multiple(g).to_string_canonical().replace(' ', ""))
+            .collect();
+        std::fs::write(
+            dir.join(format!("{}.ms", c.id)),
+            format!("x,y,z\n0\n{}\n", gens.join(",\n")),
+        )?;
+        let line = serde_json::json!({
+            "id": c.id,
+            "ellipsoid": c.e.to_string_canonical(),
+            "surface": c.s.to_string_canonical(),
+        });
+        writeln!(index, "{line}")?;
+    }
+    Ok(cases.len())
+}
+
 /// The rows of the general-position benchmark (issue 17).
 pub fn general_position_suite(rows: &mut Vec<Row>) {
     let limit = std::time::Duration::from_secs(10);
