@@ -16,7 +16,7 @@
 
 use super::critical::cross_gradients;
 use super::ellipsoid::Ellipsoid;
-use super::witness::{WitnessPoint, find_witness};
+use super::witness::{WitnessPoint, witness_at_value};
 use crate::number::{Q, q};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
@@ -24,7 +24,6 @@ use crate::roots::RealAlg;
 use crate::roots::modrur::{Declined, ModularRur, solve_modular};
 use crate::roots::{value_polynomial, values_with};
 use num_traits::{One, Zero};
-use std::cmp::Ordering;
 
 /// When S alone does not separate the critical points (symmetric inputs),
 /// `S + c·ℓ` for these `(ℓ, c)` is tried in turn.
@@ -69,12 +68,9 @@ impl ModularAnalysis {
         s: &QMPoly,
         want: i32,
     ) -> Option<WitnessPoint> {
-        let i = self
-            .values
-            .iter()
-            .position(|v| v.cmp_exact(value) == Ordering::Equal)?;
-        let approx = |bits: u32| self.rur.approx_point(i, bits);
-        find_witness(e, s, want, false, &approx)
+        witness_at_value(&self.values, value, e, s, want, &|i, bits| {
+            self.rur.approx_point(i, bits)
+        })
     }
 }
 
