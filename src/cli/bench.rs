@@ -172,15 +172,15 @@ pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
 }
 
 /// A pseudo-random generator (xorshift) so the benchmark inputs are fixed.
-struct Rng(u64);
+pub(crate) struct Rng(pub(crate) u64);
 impl Rng {
-    fn next(&mut self) -> u64 {
+    pub(crate) fn next(&mut self) -> u64 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 7;
         self.0 ^= self.0 << 17;
         self.0
     }
-    fn int(&mut self, lo: i64, hi: i64) -> i64 {
+    pub(crate) fn int(&mut self, lo: i64, hi: i64) -> i64 {
         lo + (self.next() % ((hi - lo + 1) as u64)) as i64
     }
 }
@@ -307,6 +307,7 @@ pub fn tangent_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
             extra: Default::default(),
         });
     }
+    super::bench_cases::general_position_suite(rows);
     Ok(())
 }
 

@@ -9,6 +9,7 @@ use std::process::ExitCode;
 
 pub mod alloc;
 pub mod bench;
+mod bench_cases;
 pub mod examples;
 mod limits;
 
@@ -119,6 +120,11 @@ enum Command {
         /// JSON output.
         #[arg(long)]
         json: bool,
+        /// Instead of timing: write the critical systems of the tangent
+        /// suite's general-position cases to DIR (msolve's input format,
+        /// and cases.jsonl with E and S), for scripts/bench_msolve.py.
+        #[arg(long, value_name = "DIR")]
+        dump_systems: Option<std::path::PathBuf>,
     },
     /// JSON lines in (file or - for stdin), one JSON answer line out per input line.
     Batch {
@@ -224,10 +230,23 @@ fn run(cli: Cli) -> Result<(), Error> {
             )?
         }
         Command::Bench {
+            dump_systems: Some(dir),
+            ..
+        } => {
+            let n = bench_cases::dump_systems(&dir).map_err(|e| {
+                Error::new(
+                    ErrorKind::Io,
+                    format!("cannot write the systems to {}: {e}", dir.display()),
+                )
+            })?;
+            println!("{n} critical systems written to {}", dir.display());
+        }
+        Command::Bench {
             suite,
             inputs,
             pairs,
             json,
+            dump_systems: None,
         } => {
             let rows = bench::run(&suite, inputs.as_deref(), pairs.as_deref())?;
             emit(json, || bench::to_json(&rows), || bench::to_markdown(&rows));

@@ -9,6 +9,7 @@
 //! keeps coefficients at the size of the subresultants instead of growing
 //! exponentially as naive Euclid over Q would.
 
+pub mod f4;
 pub mod groebner;
 pub mod quotient;
 

@@ -15,6 +15,7 @@ pub(crate) mod float;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
+pub(crate) mod reconstruct;
 mod sign;
 
 pub use float::double_value;
@@ -237,6 +238,34 @@ pub fn gcd_z(a: &Z, b: &Z) -> Z {
 /// remainders of the full sequence, for four word-size products.  `false`
 /// when not even the first quotient is certified.
 fn lehmer_step(x: &mut num_bigint::BigUint, y: &mut num_bigint::BigUint) -> bool {
+    let Some((a, b, c, d)) = lehmer_cofactors(x, y) else {
+        return false;
+    };
+    // a·x + b·y with a, b of opposite signs (likewise c, d): both results
+    // are remainders of Euclid's sequence, hence non-negative
+    let comb = |p: i128, q: i128| -> num_bigint::BigUint {
+        let (pm, qm) = (p.unsigned_abs() as u64, q.unsigned_abs() as u64);
+        if q <= 0 {
+            &*x * pm - &*y * qm
+        } else {
+            &*y * qm - &*x * pm
+        }
+    };
+    let (nx, ny) = (comb(a, b), comb(c, d));
+    *x = nx;
+    *y = ny;
+    true
+}
+
+/// The cofactors `(a, b; c, d)` of one Lehmer step on `x ≥ y ≥ 2^64` (see
+/// [`lehmer_step`]): `(a·x + b·y, c·x + d·y)` are two consecutive
+/// remainders of Euclid's sequence on `(x, y)`, and the same matrix maps
+/// the Bézout cofactors along.  `None` when not even the first quotient is
+/// certified.
+pub(crate) fn lehmer_cofactors(
+    x: &num_bigint::BigUint,
+    y: &num_bigint::BigUint,
+) -> Option<(i128, i128, i128, i128)> {
     use num_traits::ToPrimitive;
     let shift = x.bits().saturating_sub(63);
     let top = |z: &num_bigint::BigUint| (z >> shift).to_u64().unwrap_or(0) as i128;
@@ -255,23 +284,7 @@ fn lehmer_step(x: &mut num_bigint::BigUint, y: &mut num_bigint::BigUint) -> bool
         (b, d) = (d, b - q * d);
         (u, v) = (v, u - q * v);
     }
-    if b == 0 {
-        return false;
-    }
-    // a·x + b·y with a, b of opposite signs (likewise c, d): both results
-    // are remainders of Euclid's sequence, hence non-negative
-    let comb = |p: i128, q: i128| -> num_bigint::BigUint {
-        let (pm, qm) = (p.unsigned_abs() as u64, q.unsigned_abs() as u64);
-        if q <= 0 {
-            &*x * pm - &*y * qm
-        } else {
-            &*y * qm - &*x * pm
-        }
-    };
-    let (nx, ny) = (comb(a, b), comb(c, d));
-    *x = nx;
-    *y = ny;
-    true
+    (b != 0).then_some((a, b, c, d))
 }
 
 /// Binary gcd of machine words.

@@ -11,9 +11,11 @@
 mod algebraic;
 mod enclose;
 mod isolate;
+pub mod modrur;
 mod newton;
 mod rational;
 mod report;
+pub mod rurcheck;
 mod sturm;
 mod zerodim;
 

@@ -21,7 +21,7 @@
 //!   values, which pins down ν and μ exactly.
 
 use super::ellipsoid::Ellipsoid;
-use super::witness::{WitnessPoint, find_witness};
+use super::witness::{WitnessPoint, find_witness, witness_at_value};
 use crate::elim::groebner::{GPoly, MonoOrder, groebner};
 use crate::error::Error;
 use crate::number::{Q, qi};
@@ -66,12 +66,9 @@ impl CriticalAnalysis {
         s: &QMPoly,
         want: i32,
     ) -> Option<WitnessPoint> {
-        let i = self
-            .values
-            .iter()
-            .position(|v| v.cmp_exact(value) == Ordering::Equal)?;
-        let approx = |bits: u32| Some(self.rur.approx_point(i, bits));
-        find_witness(e, s, want, false, &approx)
+        witness_at_value(&self.values, value, e, s, want, &|i, bits| {
+            Some(self.rur.approx_point(i, bits))
+        })
     }
 }
 

@@ -24,6 +24,7 @@
 pub(crate) mod critical;
 pub(crate) mod ellipsoid;
 pub(crate) mod judging;
+pub(crate) mod modular;
 pub(crate) mod pencil;
 pub(crate) mod quadric;
 pub(crate) mod separable;
@@ -116,15 +117,19 @@ pub enum Containment {
     SInsideE,
     /// The two solids are disjoint.
     Apart,
+    /// S = c·E: the same surface (the verdict is `touching`: S vanishes on
+    /// all of E, ν = μ = 0).
+    Coincident,
 }
 
 impl Containment {
-    /// `E-inside-S`, `S-inside-E` or `apart`.
+    /// `E-inside-S`, `S-inside-E`, `apart` or `coincident`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Containment::EInsideS => "E-inside-S",
             Containment::SInsideE => "S-inside-E",
             Containment::Apart => "apart",
+            Containment::Coincident => "coincident",
         }
     }
 }
@@ -149,6 +154,9 @@ pub enum Method {
     SeparableBranches,
     /// deg S ≥ 3, finitely many critical points: Gröbner basis and RUR.
     CriticalIdeal,
+    /// deg S ≥ 3 in general position: a Gröbner basis and RUR modulo word-size
+    /// primes, lifted by CRT and rational reconstruction, verified exactly.
+    ModularRur,
     /// deg S ≥ 3 with curves of critical points: exact level-set tests.
     LevelSets,
     /// S is a constant.
@@ -165,6 +173,7 @@ impl Method {
             Method::LambdaParametrisation => "lambda-parametrisation",
             Method::SeparableBranches => "separable-branches",
             Method::CriticalIdeal => "critical-ideal-rur",
+            Method::ModularRur => "critical-ideal-modular-rur",
             Method::LevelSets => "level-sets",
             Method::Constant => "constant",
             Method::None => "none",
@@ -225,6 +234,9 @@ pub(crate) enum Analysis {
     Separable(separable::SeparableAnalysis),
     /// deg S ≥ 3 with a finite critical set.
     CriticalIdeal(critical::CriticalAnalysis),
+    /// deg S ≥ 3 in general position: the verified multi-modular RUR with
+    /// S as separating element (D(u) is its polynomial).
+    ModularRur(modular::ModularAnalysis),
     /// deg S ≥ 3 with curves of critical points (symmetric inputs).
     LevelSets(critical::LevelSetAnalysis),
     /// S is a non-zero constant.
@@ -276,6 +288,7 @@ impl Certificate {
             Analysis::Lambda(_) => Method::LambdaParametrisation,
             Analysis::Separable(_) => Method::SeparableBranches,
             Analysis::CriticalIdeal(_) => Method::CriticalIdeal,
+            Analysis::ModularRur(_) => Method::ModularRur,
             Analysis::LevelSets(_) => Method::LevelSets,
             Analysis::Constant => Method::Constant,
             Analysis::Undecided => Method::None,
@@ -330,7 +343,8 @@ impl TangentReport {
         self.side.and_then(Side::from_i32)
     }
 
-    /// Containment, when S is an ellipsoid and they do not intersect.
+    /// Containment, when S is an ellipsoid and they do not intersect
+    /// (`Coincident` when S = c·E).
     pub fn containment(&self) -> Option<Containment> {
         self.containment
     }
@@ -528,6 +542,16 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Er
             Analysis::Lambda(an),
             WitnessFinder::Lambda,
         )
+    } else if let Ok(an) = modular::analyze(&e, surface) {
+        let (vals, nonreal) = split_values(&an.real_values(), &an.judging);
+        let j = an.judging.clone();
+        (
+            vals,
+            nonreal,
+            j,
+            Analysis::ModularRur(an),
+            WitnessFinder::Modular,
+        )
     } else {
         let outcome = match critical::analyze(&e, surface) {
             Ok(o) => o,
@@ -552,7 +576,20 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Er
             critical::Outcome::Curves(ls) => {
                 let j = ls.judging.clone();
                 let vals = ls.attained.clone();
-                let (_, nonreal) = split_values(&vals, &j);
+                // only the roots of D(u) outside [ν, μ] are known not to be
+                // attained at real points; those between are unclassified
+                // (named in a note by `finish`)
+                let (vals, roots) = split_values(&vals, &j);
+                let nonreal = match (vals.first(), vals.last()) {
+                    (Some(lo), Some(hi)) => roots
+                        .into_iter()
+                        .filter(|r| {
+                            r.cmp_exact(lo) == Ordering::Less
+                                || r.cmp_exact(hi) == Ordering::Greater
+                        })
+                        .collect(),
+                    _ => roots,
+                };
                 (
                     vals,
                     nonreal,
@@ -616,6 +653,7 @@ enum WitnessFinder {
     Lambda,
     Separable,
     Critical,
+    Modular,
     Level,
 }
 
@@ -649,7 +687,22 @@ fn finish(
 ) -> TangentReport {
     let mut notes = Vec::new();
     if matches!(method, Analysis::LevelSets(_)) {
-        notes.push("curves of critical points: ν and μ are exact; critical values strictly between them are not classified".into());
+        let between: Vec<String> = match (values.first(), values.last()) {
+            (Some(lo), Some(hi)) => RealAlg::roots_of(&judging)
+                .iter()
+                .filter(|r| {
+                    r.cmp_exact(lo) == Ordering::Greater && r.cmp_exact(hi) == Ordering::Less
+                })
+                .map(|r| r.approx(12))
+                .collect(),
+            _ => vec![],
+        };
+        let listed = if between.is_empty() {
+            String::new()
+        } else {
+            format!(" (roots of D(u) there: {})", between.join(", "))
+        };
+        notes.push(format!("curves of critical points: ν and μ are exact; critical values strictly between them are not classified{listed}"));
     }
     if let Analysis::Separable(sa) = &method
         && sa.has_curves()
@@ -673,7 +726,14 @@ fn finish(
     } else if sm < 0 {
         (Verdict::Separated, false, false, Some(-1))
     } else if sn == 0 && sm == 0 {
-        notes.push("S vanishes on all of E: E lies on the surface S".into());
+        if surface.total_degree() == Some(2) {
+            // a quadric vanishing on the irreducible quadric E is c·E
+            notes.push(
+                "S vanishes on all of E and has degree 2: S = c·E, so E lies on the surface S (they coincide)".into(),
+            );
+        } else {
+            notes.push("S vanishes on all of E: E lies on the surface S".into());
+        }
         (Verdict::Touching, true, true, None)
     } else if sn == 0 {
         (Verdict::Touching, true, true, Some(1))
@@ -702,6 +762,8 @@ fn finish(
     }
     let containment = if !intersect {
         containment_of(e, surface, side.unwrap_or(0))
+    } else if sn == 0 && sm == 0 && surface.total_degree() == Some(2) {
+        Some(Containment::Coincident)
     } else {
         None
     };
@@ -747,6 +809,7 @@ fn witness_for(
         (Analysis::Pencil(an), WitnessFinder::Pencil) => an.witness(e, s, want),
         (Analysis::Separable(an), WitnessFinder::Separable) => an.witness(value, e, s, want),
         (Analysis::CriticalIdeal(an), WitnessFinder::Critical) => an.witness(value, e, s, want),
+        (Analysis::ModularRur(an), WitnessFinder::Modular) => an.witness(value, e, s, want),
         (Analysis::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
         (Analysis::Constant, _) => {
             let c = e.center.clone();

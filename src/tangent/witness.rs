@@ -10,6 +10,7 @@ use super::ellipsoid::Ellipsoid;
 use crate::geom::{Mat4, common_denominator};
 use crate::number::{Q, QSqrt};
 use crate::poly::QMPoly;
+use crate::roots::RealAlg;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -87,6 +88,23 @@ pub fn snap_to_ellipsoid(e: &Ellipsoid, p: &[Q; 3]) -> Option<[QSqrt; 3]> {
     let mut out: [QSqrt; 3] = std::array::from_fn(|i| QSqrt::rational(p[i].clone()));
     out[k] = root.normalized();
     Some(out)
+}
+
+/// A witness near the real critical point whose exact value is `value`,
+/// given the values of the real critical points in order and, for the i-th
+/// one, an approximation of the point to `bits` bits (`approx(i, bits)`).
+pub fn witness_at_value(
+    values: &[RealAlg],
+    value: &RealAlg,
+    e: &Ellipsoid,
+    s: &QMPoly,
+    want: i32,
+    approx: &dyn Fn(usize, u32) -> Option<[Q; 3]>,
+) -> Option<WitnessPoint> {
+    let i = values
+        .iter()
+        .position(|v| v.cmp_exact(value) == std::cmp::Ordering::Equal)?;
+    find_witness(e, s, want, false, &|bits| approx(i, bits))
 }
 
 /// Tries to turn approximations of a point of E (given for increasing

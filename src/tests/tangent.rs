@@ -527,3 +527,60 @@ fn committed_quadric_pairs_match_the_benchmark() {
         assert_eq!(f["S"].as_str().unwrap(), s.to_string_canonical());
     }
 }
+
+/// Issue 17's certificate fixes: a level-set result lists as "not attained"
+/// only roots of D(u) outside [ν, μ] (real roots between may be attained at
+/// real critical points), and S = c·E is `coincident`.
+#[test]
+fn level_set_certificates_do_not_call_real_values_nonreal() {
+    for s in ["(x^2+y^2)^2+z", "(x^2+y^2)^2-(x^2+y^2)+z^3"] {
+        let r = run("x^2+y^2+z^2-1", s);
+        assert_eq!(
+            r.certificate().method(),
+            crate::tangent::Method::LevelSets,
+            "{s}"
+        );
+        let (lo, hi) = (r.min().unwrap(), r.max().unwrap());
+        assert!(
+            !r.certificate().nonreal_point_values().is_empty(),
+            "{s}: a root below ν"
+        );
+        for v in r.certificate().nonreal_point_values() {
+            assert!(v < lo || v > hi, "{s}: {v} lies in [ν, μ] = [{lo}, {hi}]");
+        }
+        // the value 1 (first) and 0 (second) are attained at real critical
+        // points (the poles of the sphere and the equator) and are named as
+        // unclassified, not as non-real
+        let attained = if s.ends_with("+z") {
+            RealAlg::rational(qi(1))
+        } else {
+            RealAlg::rational(qi(0))
+        };
+        assert!(
+            !r.certificate().nonreal_point_values().contains(&attained),
+            "{s}"
+        );
+        assert!(
+            r.certificate()
+                .notes()
+                .iter()
+                .any(|n| n.contains("not classified")),
+            "{s}"
+        );
+    }
+}
+
+#[test]
+fn the_same_ellipsoid_is_coincident() {
+    for s in ["x^2+y^2+z^2-1", "2x^2+2y^2+2z^2-2", "-x^2-y^2-z^2+1"] {
+        let r = run("x^2+y^2+z^2-1", s);
+        assert_eq!(r.verdict(), Verdict::Touching, "{s}");
+        assert_eq!(r.containment(), Some(Containment::Coincident), "{s}");
+    }
+    let r = run("(x-1)^2/4+y^2+z^2-1", "x^2/4-x/2+y^2+z^2-3/4");
+    assert_eq!(r.containment(), Some(Containment::Coincident));
+    // a quartic vanishing on E is not coincident with it
+    let r = run("x^2+y^2+z^2-1", "(x^2+y^2+z^2-1)*(x^2+1)");
+    assert_eq!(r.verdict(), Verdict::Touching);
+    assert_eq!(r.containment(), None);
+}

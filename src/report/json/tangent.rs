@@ -160,11 +160,56 @@ fn method_json(m: &Analysis) -> Value {
                 "resultant_elimination": elim,
             })
         }
+        Analysis::ModularRur(an) => {
+            let r = &an.rur;
+            json!({
+                "method": "critical-ideal-modular-rur",
+                "critical_points": r.points(),
+                "generators": an.generators.iter().map(|g| g.to_string_canonical()).collect::<Vec<_>>(),
+                "separating_element": separating_element(an),
+                "rur_poly": upoly_string(&r.f, U),
+                "rur_coordinates": r.coords.iter().map(|c| upoly_string(c, U)).collect::<Vec<_>>(),
+                "rur_denominator": upoly_string(&r.denom, U),
+                "real_critical_points": r.real_roots.len(),
+                "value_of_s": if an.shift.is_some() {
+                    json!([upoly_string(&ZPoly::from_q(&an.value_num).0, U), upoly_string(&ZPoly::from_q(&an.value_den).0, U)])
+                } else {
+                    Value::Null
+                },
+                "reconstruction_primes": r.primes,
+                "soundness": if an.shift.is_none() {
+                    "rur_poly D(u) is square-free and divides, in Z[u], the homogenised compositions of E, of the three minors of ∇S × ∇E and of S − u at (x, y, z) = rur_coordinates / rur_denominator: every root u of D is S at a critical point, distinct roots at distinct points"
+                } else {
+                    "rur_poly f(u) is square-free and divides, in Z[u], the homogenised compositions of E, of the three minors of ∇S × ∇E and of h − u (h = separating_element) at (x, y, z) = rur_coordinates / rur_denominator: every root u of f is h at a critical point, distinct roots at distinct points; S there is value_of_s[0](u) / value_of_s[1](u), so the critical values are the roots of the judging polynomial, the square-free part of Res_u(f(u), v·value_of_s[1](u) − value_of_s[0](u)) in v"
+                },
+                "completeness": {
+                    "prime": r.count.prime,
+                    "count_bound": r.count.bound,
+                    "argument": "the leading forms of E and of the minors have no common zero at infinity modulo prime, so the number of complex critical points is at most count_bound (the standard monomials of a Gröbner basis modulo prime); count_bound = deg D, so the roots of D are all the critical values",
+                },
+                "resultant_elimination": Value::Null,
+            })
+        }
         Analysis::LevelSets(ls) => json!({
             "method": "level-sets",
             "levels": ls.levels.iter().map(|(q, ne)| json!({"level": crate::number::fmt_q(q), "real_points": ne})).collect::<Vec<_>>(),
             "linear_form": ls.form.iter().map(crate::number::fmt_q).collect::<Vec<_>>(),
         }),
+    }
+}
+
+/// The separating element of a modular RUR: `S`, or `S + c·(l·(x, y, z))`
+/// when S alone does not separate the critical points.
+fn separating_element(an: &crate::tangent::modular::ModularAnalysis) -> String {
+    match &an.shift {
+        None => "S".into(),
+        Some((l, c)) => format!(
+            "S + {}*({}*x + {}*y + {}*z)",
+            crate::number::fmt_q(c),
+            crate::number::fmt_q(&l[0]),
+            crate::number::fmt_q(&l[1]),
+            crate::number::fmt_q(&l[2])
+        ),
     }
 }
 

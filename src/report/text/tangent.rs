@@ -124,6 +124,14 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.form[2],
             an.rur.real_roots.len()
         ),
+        Analysis::ModularRur(an) => format!(
+            "critical ideal E = 0, ∇S×∇E = 0, multi-modular: {} critical points, RUR in u = S (its polynomial is D(u); {} primes, verified exactly), {} real; complete: at most {} critical points by the count modulo {}",
+            an.rur.points(),
+            an.rur.primes,
+            an.rur.real_roots.len(),
+            an.rur.count.bound,
+            an.rur.count.prime
+        ),
         Analysis::LevelSets(ls) => format!(
             "curves of critical points: {} level curves tested",
             ls.levels.len()

@@ -1,0 +1,516 @@
+//! Multi-modular reconstruction with 31-bit primes: the prime field
+//! arithmetic of the modular Gröbner/RUR route ([`Fp`], Barrett reduction,
+//! products delayed in `u64`), the primes below 2^31, Chinese remaindering of
+//! whole vectors ([`CrtVec`]) and rational reconstruction
+//! ([`rational_reconstruction`]).
+//!
+//! Key idea: an object over Q (a rational univariate representation) is
+//! computed modulo many word-size primes and lifted by the CRT; its rational
+//! coefficients are recovered by rational reconstruction (Wang): a residue
+//! `a mod M` has at most one preimage `n/d` with `|n|, d ≤ √(M/2)`.  What is
+//! reconstructed this way is only a *candidate*: the callers verify it
+//! exactly before using it.
+
+use num_bigint::{BigInt, BigUint, Sign};
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use std::sync::Mutex;
+
+/// Arithmetic modulo a prime `p < 2^31`: elements are `u64` in `[0, p)`.
+///
+/// Products of two elements are below `2^62`, so sums of a few products can
+/// be accumulated in a `u64` and reduced once ([`Fp::reduce`], Barrett).
+#[derive(Clone, Copy, Debug)]
+pub struct Fp {
+    /// The prime.
+    pub p: u64,
+    /// `p²` (for delayed reduction: accumulators are kept below it).
+    pub p2: u64,
+    /// `⌊(2^64 − 1)/p⌋`.
+    barrett: u64,
+}
+
+impl Fp {
+    /// The field of the prime `p` (`3 ≤ p < 2^31`; primality is the
+    /// caller's promise).
+    pub fn new(p: u64) -> Fp {
+        assert!((3..1u64 << 31).contains(&p));
+        Fp {
+            p,
+            p2: p * p,
+            barrett: u64::MAX / p,
+        }
+    }
+
+    /// `x mod p` for any `x < 2^64`.
+    #[inline(always)]
+    pub fn reduce(&self, x: u64) -> u64 {
+        let q = ((x as u128 * self.barrett as u128) >> 64) as u64;
+        let mut r = x - q * self.p;
+        // the estimate is at most 2 too small
+        while r >= self.p {
+            r -= self.p;
+        }
+        r
+    }
+
+    /// Product.
+    #[inline(always)]
+    pub fn mul(&self, a: u64, b: u64) -> u64 {
+        self.reduce(a * b)
+    }
+
+    /// Sum.
+    #[inline(always)]
+    pub fn add(&self, a: u64, b: u64) -> u64 {
+        let s = a + b;
+        if s >= self.p { s - self.p } else { s }
+    }
+
+    /// Difference.
+    #[inline(always)]
+    pub fn sub(&self, a: u64, b: u64) -> u64 {
+        if a >= b { a - b } else { a + self.p - b }
+    }
+
+    /// Negation.
+    #[inline(always)]
+    pub fn neg(&self, a: u64) -> u64 {
+        if a == 0 { 0 } else { self.p - a }
+    }
+
+    /// Inverse (`None` for zero), by extended Euclid on words.
+    pub fn inv(&self, a: u64) -> Option<u64> {
+        inv_mod(a % self.p, self.p)
+    }
+
+    /// A big integer as an element (two Barrett steps per 64-bit digit).
+    pub fn reduce_big(&self, x: &BigInt) -> u64 {
+        let m = self.reduce_biguint(x.magnitude());
+        if x.sign() == Sign::Minus {
+            self.neg(m)
+        } else {
+            m
+        }
+    }
+
+    /// A natural number as an element.
+    pub fn reduce_biguint(&self, x: &BigUint) -> u64 {
+        let mut acc = 0u64;
+        for d in x.iter_u64_digits().rev() {
+            acc = self.reduce((acc << 32) | (d >> 32));
+            acc = self.reduce((acc << 32) | (d & 0xffff_ffff));
+        }
+        acc
+    }
+}
+
+/// `a^-1 mod n` for `0 < a < n < 2^63`, `None` when not invertible.
+pub fn inv_mod(a: u64, n: u64) -> Option<u64> {
+    if a == 0 {
+        return None;
+    }
+    let (mut r0, mut r1) = (n as i128, a as i128);
+    let (mut s0, mut s1) = (0i128, 1i128);
+    while r1 != 0 {
+        let q = r0 / r1;
+        (r0, r1) = (r1, r0 - q * r1);
+        (s0, s1) = (s1, s0 - q * s1);
+    }
+    if r0 != 1 {
+        return None;
+    }
+    Some(s0.rem_euclid(n as i128) as u64)
+}
+
+fn is_prime_u32(n: u64) -> bool {
+    if n < 2 {
+        return false;
+    }
+    for p in [2u64, 3, 5, 7, 11, 13] {
+        if n.is_multiple_of(p) {
+            return n == p;
+        }
+    }
+    // deterministic for n < 4 759 123 141 with bases 2, 7, 61
+    let mut d = n - 1;
+    let mut s = 0;
+    while d.is_multiple_of(2) {
+        d /= 2;
+        s += 1;
+    }
+    let pow = |mut a: u64, mut e: u64| {
+        let mut r = 1u64;
+        while e > 0 {
+            if e & 1 == 1 {
+                r = r * a % n;
+            }
+            a = a * a % n;
+            e >>= 1;
+        }
+        r
+    };
+    'bases: for a in [2u64, 7, 61] {
+        if a % n == 0 {
+            continue;
+        }
+        let mut x = pow(a, d);
+        if x == 1 || x == n - 1 {
+            continue;
+        }
+        for _ in 1..s {
+            x = x * x % n;
+            if x == n - 1 {
+                continue 'bases;
+            }
+        }
+        return false;
+    }
+    true
+}
+
+static PRIMES31: Mutex<Vec<u64>> = Mutex::new(Vec::new());
+
+/// The `i`-th prime below 2^31 (0-based, decreasing order; cached).
+pub fn prime31(i: usize) -> u64 {
+    let mut list = PRIMES31.lock().unwrap_or_else(|e| e.into_inner());
+    let mut c = list.last().copied().unwrap_or(1u64 << 31);
+    while list.len() <= i {
+        c -= 1;
+        while !is_prime_u32(c) {
+            c -= 1;
+        }
+        list.push(c);
+    }
+    list[i]
+}
+
+/// Chinese remaindering of a vector of residues: the values are kept in
+/// `[0, M)` with `M` the product of the primes so far.  Primes are combined
+/// in pairs in machine words first (`p₁p₂ < 2^62`), so each big-integer pass
+/// (a Montgomery reduction of the digits and one multiply-add) serves two
+/// primes; call [`CrtVec::flush`] before reading.
+#[derive(Clone, Debug)]
+pub struct CrtVec {
+    modulus: BigInt,
+    values: Vec<BigInt>,
+    primes: usize,
+    pending: Option<(u64, Vec<u64>)>,
+}
+
+impl CrtVec {
+    /// An empty accumulator for vectors of length `n`.
+    pub fn new(n: usize) -> CrtVec {
+        CrtVec {
+            modulus: BigInt::one(),
+            values: vec![BigInt::zero(); n],
+            primes: 0,
+            pending: None,
+        }
+    }
+
+    /// The number of residue vectors pushed.
+    pub fn primes(&self) -> usize {
+        self.primes
+    }
+
+    /// The bit size of the product of all primes pushed (pending included).
+    pub fn modulus_bits(&self) -> u64 {
+        self.modulus.bits()
+            + self
+                .pending
+                .as_ref()
+                .map_or(0, |(p, _)| 64 - p.leading_zeros() as u64)
+    }
+
+    /// The product of the primes (after [`CrtVec::flush`]).
+    pub fn modulus(&self) -> &BigInt {
+        debug_assert!(self.pending.is_none(), "CrtVec read before flush");
+        &self.modulus
+    }
+
+    /// The values in `[0, M)` (after [`CrtVec::flush`]).
+    pub fn values(&self) -> &[BigInt] {
+        debug_assert!(self.pending.is_none(), "CrtVec read before flush");
+        &self.values
+    }
+
+    /// Adds the residues `r` (in `[0, p)`) modulo a new prime `p`.
+    pub fn push(&mut self, fp: &Fp, r: &[u64]) {
+        assert_eq!(r.len(), self.values.len());
+        self.primes += 1;
+        match self.pending.take() {
+            None => self.pending = Some((fp.p, r.to_vec())),
+            Some((p1, r1)) => {
+                // x ≡ r1 (mod p1), x ≡ r (mod p2):  x = r1 + p1·((r − r1)/p1 mod p2)
+                let inv = fp.inv(p1 % fp.p).expect("distinct primes");
+                let both: Vec<u64> = r1
+                    .iter()
+                    .zip(r)
+                    .map(|(&a, &b)| a + p1 * fp.mul(fp.sub(b, a % fp.p), inv))
+                    .collect();
+                self.combine(p1 * fp.p, &both);
+            }
+        }
+    }
+
+    /// Folds a pending single prime into the values.
+    pub fn flush(&mut self) {
+        if let Some((p, r)) = self.pending.take() {
+            self.combine(p, &r);
+        }
+    }
+
+    /// Adds residues modulo an odd `m < 2^62` coprime to the modulus.
+    fn combine(&mut self, m: u64, r: &[u64]) {
+        let mm = crate::number::modular::Modulus::new(m);
+        let single = (m < 1 << 31).then(|| Fp::new(m));
+        // x mod m for x ≥ 0 from its 64-bit digits: one prime by Barrett;
+        // a pair (m > 2^61) by acc·2^64 = redc(acc·R²) and a digit reduced
+        // by at most 7 subtractions
+        let reduce = |x: &BigInt| -> u64 {
+            if let Some(fp) = &single {
+                return fp.reduce_biguint(x.magnitude());
+            }
+            let mut acc = 0u64;
+            for d in x.magnitude().iter_u64_digits().rev() {
+                let mut dm = d;
+                while dm >= m {
+                    dm -= m;
+                }
+                let t = mm.shift64(acc) + dm;
+                acc = if t >= m { t - m } else { t };
+            }
+            acc
+        };
+        debug_assert!(!(1 << 31..=1 << 61).contains(&m));
+        let minv = inv_mod(reduce(&self.modulus), m).expect("coprime moduli");
+        for (v, &ri) in self.values.iter_mut().zip(r) {
+            crate::budget::check();
+            let cur = reduce(v);
+            let diff = if ri >= cur { ri - cur } else { ri + m - cur };
+            let t = ((diff as u128 * minv as u128) % m as u128) as u64;
+            if t != 0 {
+                *v += &self.modulus * BigInt::from(t);
+            }
+        }
+        self.modulus *= BigInt::from(m);
+    }
+}
+
+/// The rational `n/d` (`d > 0`, `gcd(n, d) = 1`) with `n ≡ a·d (mod m)` and
+/// `|n|, d ≤ √(m/2)`, if there is one (it is then unique): Wang's algorithm,
+/// the extended Euclidean algorithm on `(m, a)` stopped at the first
+/// remainder below the bound.
+pub fn rational_reconstruction(a: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> {
+    let a = a.mod_floor(m);
+    // bound = ⌊√(m/2)⌋
+    let bound: BigInt = (m >> 1usize).sqrt();
+    if a <= bound {
+        return Some((a, BigInt::one()));
+    }
+    if (m - &a) <= bound {
+        return Some((-(m - &a), BigInt::one()));
+    }
+    let (mut r0, mut r1) = (m.clone(), a);
+    let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
+    let bound_bits = bound.bits();
+    while r1 > bound {
+        crate::budget::check();
+        // Lehmer blocks while far above the bound: the block's last
+        // remainder is the smallest, so no stopping point is skipped when
+        // it is still above the bound
+        if r1.bits() > bound_bits + 128
+            && r0.bits() - r1.bits() < 16
+            && let Some((a, b, c, d)) =
+                crate::number::lehmer_cofactors(r0.magnitude(), r1.magnitude())
+        {
+            let lin = |p: i128, q: i128, x: &BigInt, y: &BigInt| -> BigInt {
+                x * BigInt::from(p) + y * BigInt::from(q)
+            };
+            let n1 = lin(c, d, &r0, &r1);
+            if n1 > bound {
+                let n0 = lin(a, b, &r0, &r1);
+                let (s0, s1) = (lin(a, b, &t0, &t1), lin(c, d, &t0, &t1));
+                (r0, r1, t0, t1) = (n0, n1, s0, s1);
+                continue;
+            }
+        }
+        let (q, r) = r0.div_rem(&r1);
+        r0 = std::mem::replace(&mut r1, r);
+        let t = &t0 - &q * &t1;
+        t0 = std::mem::replace(&mut t1, t);
+    }
+    if t1.abs() > bound || t1.is_zero() {
+        return None;
+    }
+    if !r1.gcd(&t1).is_one() {
+        return None;
+    }
+    if t1.is_negative() {
+        Some((-r1, -t1))
+    } else {
+        Some((r1, t1))
+    }
+}
+
+/// The bit size of the symmetric representative of `v ∈ [0, m)` (no
+/// division).
+pub fn symmetric_bits(v: &BigInt, m: &BigInt) -> u64 {
+    if v + v > *m { (m - v).bits() } else { v.bits() }
+}
+
+/// The symmetric representative of `a mod m` in `(−m/2, m/2]`.
+pub fn symmetric_mod(a: &BigInt, m: &BigInt) -> BigInt {
+    let r = a.mod_floor(m);
+    if &r + &r > *m { r - m } else { r }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn barrett_reduction_matches_remainder() {
+        for i in [0usize, 1, 7] {
+            let p = prime31(i);
+            let fp = Fp::new(p);
+            let mut x = 0x9e37_79b9_7f4a_7c15u64;
+            for _ in 0..1000 {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                assert_eq!(fp.reduce(x), x % p);
+                let (a, b) = (x % p, (x >> 20) % p);
+                assert_eq!(fp.mul(a, b), ((a as u128 * b as u128) % p as u128) as u64);
+                if a != 0 {
+                    assert_eq!(fp.mul(a, fp.inv(a).unwrap()), 1);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn primes_below_2_31_are_prime_and_decreasing() {
+        let ps: Vec<u64> = (0..50).map(prime31).collect();
+        assert_eq!(ps[0], 2147483647); // 2^31 − 1
+        assert!(ps.windows(2).all(|w| w[0] > w[1]));
+        for &p in &ps {
+            assert!(
+                (2..50_000u64)
+                    .take_while(|d| d * d <= p)
+                    .all(|d| p % d != 0)
+            );
+        }
+        // composite numbers are rejected (a strong pseudoprime to base 2)
+        for c in [2047u64, 561, 1373653, 25326001, 2147483645] {
+            assert!(!is_prime_u32(c), "{c} is composite");
+        }
+    }
+
+    #[test]
+    fn crt_of_vectors_recovers_big_signed_values() {
+        let xs: Vec<BigInt> = vec![
+            -(BigInt::from(7u32) << 200usize) + 12345,
+            BigInt::from(3u32).pow(150u32),
+            BigInt::zero(),
+            BigInt::from(-1),
+        ];
+        let mut c = CrtVec::new(xs.len());
+        let mut k = 0;
+        while c.modulus().bits() < 260 {
+            let fp = Fp::new(prime31(k));
+            let r: Vec<u64> = xs.iter().map(|x| fp.reduce_big(x)).collect();
+            c.push(&fp, &r);
+            k += 1;
+        }
+        c.flush();
+        let back: Vec<BigInt> = c
+            .values()
+            .iter()
+            .map(|v| symmetric_mod(v, c.modulus()))
+            .collect();
+        assert_eq!(back, xs);
+        assert_eq!(c.primes(), k);
+    }
+
+    /// Wang's algorithm with plain Euclidean steps (the reference for the
+    /// Lehmer-accelerated version).
+    fn plain_reconstruction(a: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> {
+        let bound: BigInt = (m >> 1usize).sqrt();
+        let (mut r0, mut r1) = (m.clone(), a.mod_floor(m));
+        let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
+        while r1 > bound {
+            let (q, r) = r0.div_rem(&r1);
+            r0 = std::mem::replace(&mut r1, r);
+            let t = &t0 - &q * &t1;
+            t0 = std::mem::replace(&mut t1, t);
+        }
+        if t1.abs() > bound || t1.is_zero() || !r1.gcd(&t1).is_one() {
+            return None;
+        }
+        if t1.is_negative() {
+            Some((-r1, -t1))
+        } else {
+            Some((r1, t1))
+        }
+    }
+
+    #[test]
+    fn lehmer_reconstruction_agrees_with_plain_euclid() {
+        let m: BigInt = (0..70).map(|i| BigInt::from(prime31(i))).product();
+        let mut seed = 0x1234_5678_9abc_def1u64;
+        let mut big = |bits: u32| {
+            let mut x = BigInt::one();
+            for _ in 0..bits / 32 {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                x = (x << 32usize) + BigInt::from(seed >> 32);
+            }
+            x
+        };
+        for bits in [64u32, 500, 1000, 1080, 1200] {
+            let (n, d) = (big(bits), big(bits / 2 + 32));
+            let a = (&n * d.modinv(&m).unwrap()).mod_floor(&m);
+            let want = plain_reconstruction(&a, &m);
+            assert_eq!(rational_reconstruction(&a, &m), want, "{bits} bits");
+            if bits <= 1000 {
+                let g = n.gcd(&d);
+                assert_eq!(want, Some((&n / &g, &d / &g)));
+            }
+            // a random residue: both agree on failure too
+            let r = big(2100).mod_floor(&m);
+            assert_eq!(
+                rational_reconstruction(&r, &m),
+                plain_reconstruction(&r, &m)
+            );
+        }
+    }
+
+    #[test]
+    fn rational_reconstruction_inverts_reduction() {
+        let m: BigInt = (0..6).map(|i| BigInt::from(prime31(i))).product();
+        for (n, d) in [
+            (-355i64, 113i64),
+            (1, 1),
+            (0, 1),
+            (123456789, 987654323),
+            (-7, 3),
+        ] {
+            let (n, d) = (BigInt::from(n), BigInt::from(d));
+            let dinv = d.modinv(&m).unwrap();
+            let a = (&n * dinv).mod_floor(&m);
+            assert_eq!(rational_reconstruction(&a, &m), Some((n, d)));
+        }
+        // a residue with no small preimage: numerator and denominator both
+        // near √m are out of reach for a modulus of 2^62
+        let m2 = BigInt::from(prime31(0)) * BigInt::from(prime31(1));
+        let (n, d) = (
+            BigInt::from(3_000_000_017i64),
+            BigInt::from(2_999_999_929i64),
+        );
+        let a = (&n * d.modinv(&m2).unwrap()).mod_floor(&m2);
+        assert_ne!(rational_reconstruction(&a, &m2), Some((n, d)));
+    }
+}
