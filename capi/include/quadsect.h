@@ -196,7 +196,8 @@ typedef int32_t qs_verdict;
 typedef int32_t qs_side;
 
 /**
- * Containment, when S is an ellipsoid and they do not intersect.
+ * Containment, when S is an ellipsoid and they do not intersect, or
+ * coincident when S = c·E.
  */
 typedef int32_t qs_containment;
 
@@ -401,6 +402,11 @@ typedef struct qs_tangent_result {
  * The two solids are disjoint.
  */
 #define QS_CONTAINMENT_APART 3
+
+/**
+ * S = c·E, the same surface (the verdict is touching).
+ */
+#define QS_CONTAINMENT_COINCIDENT 4
 
 /**
  * Decided.

@@ -129,7 +129,8 @@ pub const QS_SIDE_POSITIVE: qs_side = 1;
 /// S ≤ 0 on E.
 pub const QS_SIDE_NEGATIVE: qs_side = -1;
 
-/// Containment, when S is an ellipsoid and they do not intersect.
+/// Containment, when S is an ellipsoid and they do not intersect, or
+/// coincident when S = c·E.
 pub type qs_containment = i32;
 /// Not applicable.
 pub const QS_CONTAINMENT_NONE: qs_containment = 0;
@@ -139,6 +140,8 @@ pub const QS_CONTAINMENT_E_INSIDE_S: qs_containment = 1;
 pub const QS_CONTAINMENT_S_INSIDE_E: qs_containment = 2;
 /// The two solids are disjoint.
 pub const QS_CONTAINMENT_APART: qs_containment = 3;
+/// S = c·E, the same surface (the verdict is touching).
+pub const QS_CONTAINMENT_COINCIDENT: qs_containment = 4;
 
 /// Why the verdict is undecided.
 pub type qs_undecided = i32;
@@ -426,6 +429,7 @@ fn tangent(
             Some(Containment::EInsideS) => QS_CONTAINMENT_E_INSIDE_S,
             Some(Containment::SInsideE) => QS_CONTAINMENT_S_INSIDE_E,
             Some(Containment::Apart) => QS_CONTAINMENT_APART,
+            Some(Containment::Coincident) => QS_CONTAINMENT_COINCIDENT,
             _ => QS_CONTAINMENT_NONE,
         },
         reason,
@@ -592,6 +596,21 @@ mod tests {
             unsafe { qs_natural_classify_f64(&ok, &ok, ptr::null_mut(), ptr::null_mut()) },
             2
         );
+    }
+
+    #[test]
+    fn the_same_ellipsoid_is_coincident() {
+        // E: sphere of radius 5; S = 2·(x² + y² + z² − 25)
+        let e = qs_ellipsoid_f64 {
+            center: [0.0; 3],
+            semi_axes: [5.0; 3],
+            rotation: ID,
+        };
+        let q = [2.0, 2.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -50.0];
+        let (code, r, msg) = tangent_c(&e, &q);
+        assert_eq!(code, 0, "{msg}");
+        assert_eq!(r.verdict, QS_VERDICT_TOUCHING);
+        assert_eq!(r.containment, QS_CONTAINMENT_COINCIDENT);
     }
 
     #[test]

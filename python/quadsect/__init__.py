@@ -370,7 +370,8 @@ class TangentResult(_Result):
     @property
     def containment(self) -> Optional[str]:
         """``"E-inside-S"``, ``"S-inside-E"`` or ``"apart"`` when S is an
-        ellipsoid and they do not intersect, else ``None``."""
+        ellipsoid and they do not intersect, ``"coincident"`` when S = c·E
+        (verdict ``"touching"``), else ``None``."""
         return self._json["containment"]
 
     @property
