@@ -70,6 +70,10 @@ pub struct ModularRur {
     pub count: CountCertificate,
     /// The real roots of `f`, increasing (one per real zero).
     pub real_roots: Vec<RealAlg>,
+    /// The generator (index into `gens`) whose check was left out because it
+    /// is implied (see [`solve_modular_implied`]), with the linear form whose
+    /// composition was proven coprime to `f`.
+    pub implied: Option<usize>,
 }
 
 impl ModularRur {
@@ -394,11 +398,33 @@ fn agrees_mod(fp: &Fp, cand: &Candidate, residues: &[u64]) -> bool {
 
 /// The exact checks of a candidate: soundness of every zero, returned as
 /// the integer form `(f, [Gx, Gy, Gz], Φ)` when all pass.
+/// The composition `K^h(G, Φ) = k_x·G_x + k_y·G_y + k_z·G_z + k_0·Φ` of a
+/// linear form `K`, over Z (`K` made primitive first).
+fn compose_linear(k: &QMPoly, gs: &[ZPoly; 3], phi: &ZPoly) -> ZPoly {
+    let (kz, _) = k.to_primitive_z();
+    let mut acc = ZPoly::zero();
+    for (e, c) in kz.terms() {
+        let part = match (e[X], e[Y], e[Z]) {
+            (1, 0, 0) => &gs[0],
+            (0, 1, 0) => &gs[1],
+            (0, 0, 1) => &gs[2],
+            _ => phi,
+        };
+        acc = &acc + &part.scale(c);
+    }
+    acc
+}
+
+/// Verifies a candidate; `implied` as in [`solve_modular_implied`] (indices
+/// into `gens`).  Returns `f`, the coordinates, `Φ` and the generator whose
+/// check was left out.
+#[allow(clippy::type_complexity)]
 fn verify(
     gens: &[ZMPoly],
     h: &QMPoly,
     cand: &Candidate,
-) -> Result<(ZPoly, [ZPoly; 3], ZPoly), String> {
+    implied: &[(usize, QMPoly)],
+) -> Result<(ZPoly, [ZPoly; 3], ZPoly, Option<usize>), String> {
     let n = cand.n;
     // f = (nums_f + Δ·u^n)/Δ, x_v = G_v/f′ = nums_v/(Δ·f′)
     let mut fz = cand.nums[..n].to_vec();
@@ -425,9 +451,17 @@ fn verify(
     if f.gcd(&f.derivative()).degree() != Some(0) {
         return Err("the reconstructed polynomial is not square-free".into());
     }
+    // a generator implied by the others where the linear form K is non-zero:
+    // K ≠ 0 at every root iff gcd(f, K^h(G, Φ)) = 1 (Φ ≠ 0 there)
+    let skip = implied.iter().find_map(|(i, k)| {
+        let comp = compose_linear(k, &gs, &phi);
+        (!comp.is_zero() && f.gcd(&comp).degree() == Some(0)).then_some(*i)
+    });
     let mut checks: Vec<Check> = gens
         .iter()
-        .map(|g| Check {
+        .enumerate()
+        .filter(|(i, _)| Some(*i) != skip)
+        .map(|(_, g)| Check {
             p: g.clone(),
             k: g.total_degree().unwrap_or(0),
             u_coef: BigInt::zero(),
@@ -440,9 +474,10 @@ fn verify(
         p: hz.scale(hk.numer()),
         u_coef: hk.denom().clone(),
     });
+    let h_check = checks.len() - 1;
     match vanish_on_roots(&f, &gs, &phi, &checks) {
-        Ok(()) => Ok((f, gs, phi)),
-        Err(CheckFailure::NotDivisible(i)) | Err(CheckFailure::Undecided(i)) if i == gens.len() => {
+        Ok(()) => Ok((f, gs, phi, skip)),
+        Err(CheckFailure::NotDivisible(i)) | Err(CheckFailure::Undecided(i)) if i == h_check => {
             Err("the separating element does not take the value u".into())
         }
         Err(e) => Err(format!("generator check failed: {e:?}")),
@@ -456,15 +491,33 @@ fn verify(
 /// zero-dimensional, not radical, `h` does not separate its zeros, there
 /// are zeros at infinity modulo every prime tried, or the reconstruction
 /// did not verify within `max_primes`.
+#[cfg(test)]
 pub fn solve_modular(
     gens: &[QMPoly],
     hs: &[QMPoly],
     max_primes: usize,
 ) -> Result<ModularRur, Declined> {
-    let zgens: Vec<ZMPoly> = gens
+    solve_modular_implied(gens, hs, max_primes, &[])
+}
+
+/// [`solve_modular`], where the caller knows identities `Σ K_j·gens_j = 0`
+/// with linear `K_j`: each `(j, K_j)` of `implied` says that `gens_j`
+/// vanishes wherever the other generators vanish and `K_j ≠ 0`.  The first
+/// `K_j` proven non-zero at every verified zero (its composition is coprime
+/// to `f`) lets the verification leave out the check of `gens_j`, the most
+/// expensive part of the route.
+pub fn solve_modular_implied(
+    gens: &[QMPoly],
+    hs: &[QMPoly],
+    max_primes: usize,
+    implied: &[(usize, QMPoly)],
+) -> Result<ModularRur, Declined> {
+    let kept: Vec<usize> = (0..gens.len()).filter(|&i| !gens[i].is_zero()).collect();
+    let zgens: Vec<ZMPoly> = kept.iter().map(|&i| gens[i].to_primitive_z().0).collect();
+    // the implied relations in the indices of zgens
+    let implied_z: Vec<(usize, QMPoly)> = implied
         .iter()
-        .filter(|g| !g.is_zero())
-        .map(|g| g.to_primitive_z().0)
+        .filter_map(|(j, k)| Some((kept.iter().position(|i| i == j)?, k.clone())))
         .collect();
     let maxdeg = zgens
         .iter()
@@ -561,8 +614,8 @@ pub fn solve_modular(
                 };
                 let c = candidate.take().expect("present");
                 let hi = chosen.expect("an image was computed");
-                match verify(&zgens, &hs[hi], &c) {
-                    Ok((f, coords, denom)) => {
+                match verify(&zgens, &hs[hi], &c, &implied_z) {
+                    Ok((f, coords, denom, skipped)) => {
                         if f.degree() != Some(cc.bound) {
                             return decline("the verified zeros do not reach the counting bound");
                         }
@@ -575,6 +628,7 @@ pub fn solve_modular(
                             primes: crt.primes(),
                             count: cc,
                             real_roots,
+                            implied: skipped.map(|z| kept[z]),
                         });
                     }
                     Err(_) => {
@@ -654,6 +708,44 @@ mod tests {
             assert_eq!(m.f, exact.extra_values[0]);
             assert_eq!(m.real_roots.len(), exact.real_roots.len());
         }
+    }
+
+    #[test]
+    fn an_implied_minor_is_left_out_and_the_answer_is_the_same() {
+        let (e, s) = ("2x^2+y^2+3z^2+x*y-y*z-7", "x^3+y^3-z^3+x*z-2y+1");
+        let (gens, s) = critical_system(e, s);
+        let ep = parse_poly(e).unwrap();
+        let implied: Vec<(usize, QMPoly)> = (0..3)
+            .map(|j| (j + 1, ep.derivative([X, Y, Z][j])))
+            .collect();
+        let full = solve_modular(&gens, std::slice::from_ref(&s), 500).unwrap();
+        let short = solve_modular_implied(&gens, std::slice::from_ref(&s), 500, &implied).unwrap();
+        assert_eq!(full.implied, None);
+        assert_eq!(
+            short.implied,
+            Some(1),
+            "E_x is non-zero at every critical point"
+        );
+        assert_eq!((short.f, short.coords), (full.f, full.coords));
+    }
+
+    #[test]
+    fn a_form_that_vanishes_at_a_zero_leaves_nothing_out() {
+        // zeros (±√2, 1, ±√2); h = x + 3y + 5z separates them
+        let gens: Vec<QMPoly> = ["x^2-2", "y-1", "z-x"]
+            .map(|g| parse_poly(g).unwrap())
+            .to_vec();
+        let h = parse_poly("x+3y+5z").unwrap();
+        let hs = std::slice::from_ref(&h);
+        let at = |k: &str| {
+            solve_modular_implied(&gens, hs, 200, &[(2, parse_poly(k).unwrap())])
+                .unwrap()
+                .implied
+        };
+        assert_eq!(at("x"), Some(2), "x ≠ 0 at both zeros");
+        assert_eq!(at("y-1"), None, "y − 1 vanishes at the zeros");
+        assert_eq!(at("x-z+1/2*y-1/2"), None, "vanishes at both zeros");
+        assert_eq!(at("0"), None);
     }
 
     #[test]

@@ -21,7 +21,7 @@ use crate::number::{Q, q};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::RealAlg;
-use crate::roots::modrur::{Declined, ModularRur, solve_modular};
+use crate::roots::modrur::{Declined, ModularRur, solve_modular_implied};
 use crate::roots::{value_polynomial, values_with};
 use num_traits::{One, Zero};
 
@@ -88,7 +88,14 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
     for (l, (cn, cd)) in SHIFTS {
         hs.push(s + &form(&l).scale(&q(cn, cd)));
     }
-    let rur = solve_modular(&gens, &hs, MAX_PRIMES)?;
+    // ∇E · (∇S × ∇E) = 0: where E_x ≠ 0 (resp. E_y, E_z) the first (second,
+    // third) minor follows from the other two
+    let implied: Vec<(usize, QMPoly)> = [X, Y, Z]
+        .iter()
+        .enumerate()
+        .map(|(j, &v)| (j + 1, e.poly.derivative(v)))
+        .collect();
+    let rur = solve_modular_implied(&gens, &hs, MAX_PRIMES, &implied)?;
     if rur.points() == 0 {
         return Err(Declined("no critical point".into()));
     }

@@ -176,6 +176,13 @@ fn method_json(m: &Analysis) -> Value {
                 } else {
                     Value::Null
                 },
+                "implied_minor": r.implied.map(|j| json!({
+                    "minor": j,
+                    "argument": format!(
+                        "∇E · (∇S × ∇E) = 0, and gcd(rur_poly, the composition of ∂E/∂{} at the RUR) = 1, so ∂E/∂{} ≠ 0 at every critical point and minor {} (generators[{}]) vanishes where the other generators do: its check is left out",
+                        ["x", "y", "z"][j - 1], ["x", "y", "z"][j - 1], j, j
+                    ),
+                })),
                 "reconstruction_primes": r.primes,
                 "soundness": if an.shift.is_none() {
                     "rur_poly D(u) is square-free and divides, in Z[u], the homogenised compositions of E, of the three minors of ∇S × ∇E and of S − u at (x, y, z) = rur_coordinates / rur_denominator: every root u of D is S at a critical point, distinct roots at distinct points"
