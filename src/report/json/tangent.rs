@@ -166,7 +166,7 @@ fn method_json(m: &Analysis) -> Value {
                 "method": "critical-ideal-modular-rur",
                 "critical_points": r.points(),
                 "generators": an.generators.iter().map(|g| g.to_string_canonical()).collect::<Vec<_>>(),
-                "separating_element": separating_element(an),
+                "separating_element": crate::report::separating_element(an),
                 "rur_poly": upoly_string(&r.f, U),
                 "rur_coordinates": r.coords.iter().map(|c| upoly_string(c, U)).collect::<Vec<_>>(),
                 "rur_denominator": upoly_string(&r.denom, U),
@@ -202,21 +202,6 @@ fn method_json(m: &Analysis) -> Value {
             "levels": ls.levels.iter().map(|(q, ne)| json!({"level": crate::number::fmt_q(q), "real_points": ne})).collect::<Vec<_>>(),
             "linear_form": ls.form.iter().map(crate::number::fmt_q).collect::<Vec<_>>(),
         }),
-    }
-}
-
-/// The separating element of a modular RUR: `S`, or `S + c·(l·(x, y, z))`
-/// when S alone does not separate the critical points.
-fn separating_element(an: &crate::tangent::modular::ModularAnalysis) -> String {
-    match &an.shift {
-        None => "S".into(),
-        Some((l, c)) => format!(
-            "S + {}*({}*x + {}*y + {}*z)",
-            crate::number::fmt_q(c),
-            crate::number::fmt_q(&l[0]),
-            crate::number::fmt_q(&l[1]),
-            crate::number::fmt_q(&l[2])
-        ),
     }
 }
 

@@ -125,8 +125,14 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.real_roots.len()
         ),
         Analysis::ModularRur(an) => format!(
-            "critical ideal E = 0, ∇S×∇E = 0, multi-modular: {} critical points, RUR in u = S (its polynomial is D(u); {} primes, verified exactly), {} real; complete: at most {} critical points by the count modulo {}",
+            "critical ideal E = 0, ∇S×∇E = 0, multi-modular: {} critical points, RUR in u = {} ({}; {} primes, verified exactly), {} real; complete: at most {} critical points by the count modulo {}",
             an.rur.points(),
+            crate::report::separating_element(an),
+            if an.shift.is_none() {
+                "its polynomial is D(u)"
+            } else {
+                "S alone takes equal values at distinct points; D(u) from the values of S"
+            },
             an.rur.primes,
             an.rur.real_roots.len(),
             an.rur.count.bound,
