@@ -138,16 +138,10 @@ pub fn natural_json(r: &NaturalReport) -> Value {
     }
     match r.route {
         Some(Route::Fast) => {
-            return json!({
-                "class": r.class.as_str(),
-                "conics": r.conics(),
-                "lines": r.lines(),
-                "points": r.points(),
-                "axes": r.axes.as_ref().map(|a| a.as_str()),
-                "thm8": r.thm8,
-                "method": r.method,
-                "route": "fast",
-            });
+            let mut m = class_and_counts(r);
+            m.insert("method".into(), json!(r.method));
+            m.insert("route".into(), json!("fast"));
+            return Value::Object(m);
         }
         Some(Route::Complete(why)) => {
             let mut v = complete_json(r);
@@ -162,14 +156,24 @@ pub fn natural_json(r: &NaturalReport) -> Value {
     complete_json(r)
 }
 
-fn complete_json(r: &NaturalReport) -> Value {
-    json!({
+/// The keys both routes start with: class, counts, axes, thm8.
+fn class_and_counts(r: &NaturalReport) -> serde_json::Map<String, Value> {
+    let Value::Object(m) = json!({
         "class": r.class.as_str(),
         "conics": r.conics(),
         "lines": r.lines(),
         "points": r.points(),
         "axes": r.axes.as_ref().map(|a| a.as_str()),
         "thm8": r.thm8,
+    }) else {
+        unreachable!("json! of an object literal")
+    };
+    m
+}
+
+fn complete_json(r: &NaturalReport) -> Value {
+    let mut m = class_and_counts(r);
+    let rest = json!({
         "components": r.components.iter().map(component_json).collect::<Vec<_>>(),
         "method": r.method,
         "deciders": r.deciders.as_ref().map(deciders_json),
@@ -177,7 +181,11 @@ fn complete_json(r: &NaturalReport) -> Value {
         "a": natural_input_json(&r.a),
         "b": natural_input_json(&r.b),
         "notes": r.notes,
-    })
+    });
+    if let Value::Object(rest) = rest {
+        m.extend(rest);
+    }
+    Value::Object(m)
 }
 
 /// JSON: a string for a rational, `{"a","b","d","approx"}` for a
