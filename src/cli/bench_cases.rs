@@ -195,6 +195,7 @@ pub fn method_name(r: &crate::tangent::TangentReport) -> &'static str {
         Analysis::CriticalIdeal(_) => "exact-groebner",
         Analysis::ModularRur(an) if an.shift.is_none() => "modular",
         Analysis::ModularRur(_) => "modular-shifted",
+        Analysis::Poisson(_) => "poisson",
         Analysis::LevelSets(_) => "level-sets",
         Analysis::Undecided => "none",
     }

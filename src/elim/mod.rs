@@ -10,6 +10,7 @@
 //! exponentially as naive Euclid over Q would.
 
 pub mod f4;
+pub mod poisson;
 pub mod groebner;
 pub mod quotient;
 

@@ -203,13 +203,45 @@ impl RealAlg {
     pub fn approx(&self, digits: usize) -> String {
         match &self.repr {
             Repr::Rational(q) => approx_decimal(q, digits),
-            Repr::Root { lo, hi, .. } => {
-                // enough bits for the requested relative precision
-                let mag = lo.numer().bits().max(hi.numer().bits()) as i64
-                    - lo.denom().bits().min(hi.denom().bits()) as i64;
-                let bits = (digits as f64 * 3.33) as i64 + 16 + (-mag).max(0);
-                approx_decimal(&self.to_rational_approx(bits.max(8) as u32), digits)
+            Repr::Root { .. } => {
+                let mut c = self.clone();
+                c.refine_for_approx(digits);
+                let (lo, hi) = c.interval();
+                approx_decimal(&((lo + hi) / Q::from_integer(BigInt::from(2))), digits)
             }
+        }
+    }
+
+    /// A width of the isolating interval `[lo, hi]` small enough for
+    /// `digits` significant digits (16 guard bits): relative to the
+    /// magnitude `2^mag` of the ends, `2^(mag − 3.33·digits − 16)`.
+    fn approx_width(lo: &Q, hi: &Q, digits: usize) -> Q {
+        let mag = lo.numer().bits().max(hi.numer().bits()) as i64
+            - lo.denom().bits().min(hi.denom().bits()) as i64;
+        let e = mag - (digits as f64 * 3.33) as i64 - 16;
+        if e >= 0 {
+            Q::from_integer(BigInt::one() << e as usize)
+        } else {
+            Q::new(BigInt::one(), BigInt::one() << (-e) as usize)
+        }
+    }
+
+    /// Refines the isolating interval in place so that later
+    /// [`RealAlg::approx`] calls with `digits` digits (on this number or its
+    /// clones) need no further refinement.
+    pub(crate) fn refine_for_approx(&mut self, digits: usize) {
+        // the width is computed from the current interval, then again from
+        // the refined one, until the interval is narrow enough for the
+        // magnitude it shows (which settles once it excludes 0)
+        for _ in 0..64 {
+            let Repr::Root { lo, hi, .. } = &self.repr else {
+                return;
+            };
+            let w = Self::approx_width(lo, hi, digits);
+            if &(hi - lo) <= &w {
+                return;
+            }
+            self.refine_to(&w);
         }
     }
 

@@ -149,7 +149,7 @@ pub fn ratio_enclosure(num: &(ZPoly, Q), den: &(ZPoly, Q), a: &Q, b: &Q) -> Opti
     Some(round_outward(lo, hi))
 }
 
-fn meets(iv: &RootInterval, lo: &Q, hi: &Q) -> bool {
+pub(crate) fn meets(iv: &RootInterval, lo: &Q, hi: &Q) -> bool {
     if iv.is_exact() {
         lo <= &iv.lo && &iv.lo <= hi
     } else {

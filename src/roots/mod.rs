@@ -12,6 +12,7 @@ mod algebraic;
 mod enclose;
 mod isolate;
 pub mod modrur;
+pub mod poisson;
 mod newton;
 mod rational;
 mod report;
@@ -21,6 +22,7 @@ mod zerodim;
 
 pub use algebraic::{RealAlg, separate};
 pub use enclose::{eval_q, value_at, value_polynomial, values_at, values_with};
+pub(crate) use enclose::{meets, ratio_enclosure};
 pub use isolate::{RootInterval, bisect_once, isolate_real_roots, isolate_squarefree};
 pub use rational::{simplest_rational_in, split_cubic};
 pub use report::{RealRoot, RootReport, analyze_roots};
@@ -30,7 +32,7 @@ pub use zerodim::{GENERIC_FORMS, Rur, solve_zero_dim};
 // Used by the property tests (independent deciders checked against each
 // other: Sturm counts, Descartes bounds, interval enclosures).
 #[cfg(test)]
-pub use enclose::{enclose_mean_value, ratio_enclosure};
+pub use enclose::enclose_mean_value;
 #[cfg(test)]
 pub use isolate::refine;
 #[cfg(test)]

@@ -125,7 +125,7 @@ enum ImageFail {
 }
 
 /// `M v` for a matrix stored by columns.
-fn mat_vec(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64> {
+pub(crate) fn mat_vec(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64> {
     let n = v.len();
     let mut acc = vec![0u64; cols.first().map_or(0, |c| c.len())];
     for j in 0..n {
@@ -142,7 +142,7 @@ fn mat_vec(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64> {
 
 /// Solves `K c = r` for the columns `k` (n vectors of length n) and each
 /// right-hand side; `None` when `K` is singular.
-fn solve_columns(fp: &Fp, k: &[Vec<u64>], rhs: &[Vec<u64>]) -> Option<Vec<Vec<u64>>> {
+pub(crate) fn solve_columns(fp: &Fp, k: &[Vec<u64>], rhs: &[Vec<u64>]) -> Option<Vec<Vec<u64>>> {
     let n = k.len();
     let w = n + rhs.len();
     let mut a: Vec<Vec<u64>> = (0..n)
@@ -180,7 +180,7 @@ fn solve_columns(fp: &Fp, k: &[Vec<u64>], rhs: &[Vec<u64>]) -> Option<Vec<Vec<u6
 }
 
 /// `a·b mod m` for a monic `m = T^n − Σ c_j T^j` given by `c` (length n).
-fn mulmod(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
+pub(crate) fn mulmod(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
     let n = c.len();
     let mut r = vec![0u64; 2 * n];
     for (i, &ai) in a.iter().enumerate() {

@@ -26,6 +26,7 @@ pub(crate) mod ellipsoid;
 pub(crate) mod judging;
 pub(crate) mod modular;
 pub(crate) mod pencil;
+pub(crate) mod poisson;
 pub(crate) mod quadric;
 pub(crate) mod separable;
 pub(crate) mod witness;
@@ -157,6 +158,10 @@ pub enum Method {
     /// deg S ≥ 3 in general position: a Gröbner basis and RUR modulo word-size
     /// primes, lifted by CRT and rational reconstruction, verified exactly.
     ModularRur,
+    /// deg S ≥ 3 in general position: the RUR of a square subsystem and the
+    /// critical values as resultants (Poisson formula), computed modulo
+    /// word-size primes and lifted by the CRT beyond an a-priori bound.
+    PoissonRur,
     /// deg S ≥ 3 with curves of critical points: exact level-set tests.
     LevelSets,
     /// S is a constant.
@@ -174,6 +179,7 @@ impl Method {
             Method::SeparableBranches => "separable-branches",
             Method::CriticalIdeal => "critical-ideal-rur",
             Method::ModularRur => "critical-ideal-modular-rur",
+            Method::PoissonRur => "critical-ideal-poisson-rur",
             Method::LevelSets => "level-sets",
             Method::Constant => "constant",
             Method::None => "none",
@@ -237,6 +243,9 @@ pub(crate) enum Analysis {
     /// deg S ≥ 3 in general position: the verified multi-modular RUR with
     /// S as separating element (D(u) is its polynomial).
     ModularRur(modular::ModularAnalysis),
+    /// deg S ≥ 3 in general position: the Poisson route (square subsystem,
+    /// resultants lifted beyond an a-priori bound).
+    Poisson(Box<poisson::PoissonAnalysis>),
     /// deg S ≥ 3 with curves of critical points (symmetric inputs).
     LevelSets(critical::LevelSetAnalysis),
     /// S is a non-zero constant.
@@ -289,6 +298,7 @@ impl Certificate {
             Analysis::Separable(_) => Method::SeparableBranches,
             Analysis::CriticalIdeal(_) => Method::CriticalIdeal,
             Analysis::ModularRur(_) => Method::ModularRur,
+            Analysis::Poisson(_) => Method::PoissonRur,
             Analysis::LevelSets(_) => Method::LevelSets,
             Analysis::Constant => Method::Constant,
             Analysis::Undecided => Method::None,
@@ -542,6 +552,20 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Er
             Analysis::Lambda(an),
             WitnessFinder::Lambda,
         )
+    } else if let Ok(an) = poisson::analyze(&e, surface) {
+        let (vals, nonreal) = if an.separates() {
+            (an.real_values(), vec![])
+        } else {
+            split_values(&an.real_values(), &an.judging)
+        };
+        let j = an.judging.clone();
+        (
+            vals,
+            nonreal,
+            j,
+            Analysis::Poisson(Box::new(an)),
+            WitnessFinder::Poisson,
+        )
     } else if let Ok(an) = modular::analyze(&e, surface) {
         let (vals, nonreal) = split_values(&an.real_values(), &an.judging);
         let j = an.judging.clone();
@@ -654,6 +678,7 @@ enum WitnessFinder {
     Separable,
     Critical,
     Modular,
+    Poisson,
     Level,
 }
 
@@ -708,6 +733,13 @@ fn finish(
         && sa.has_curves()
     {
         notes.push("curves of critical points on a branch with two free coordinates; every critical value is exact".into());
+    }
+    // the report prints each value with 20 digits: refine once here, not
+    // in every printed clone
+    let mut values = values;
+    let mut nonreal = nonreal;
+    for v in values.iter_mut().chain(nonreal.iter_mut()) {
+        v.refine_for_approx(20);
     }
     let (min, max) = match (values.first(), values.last()) {
         (Some(a), Some(b)) => (a.simplify(), b.simplify()),
@@ -810,6 +842,7 @@ fn witness_for(
         (Analysis::Separable(an), WitnessFinder::Separable) => an.witness(value, e, s, want),
         (Analysis::CriticalIdeal(an), WitnessFinder::Critical) => an.witness(value, e, s, want),
         (Analysis::ModularRur(an), WitnessFinder::Modular) => an.witness(value, e, s, want),
+        (Analysis::Poisson(an), WitnessFinder::Poisson) => an.witness(value, e, s, want),
         (Analysis::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
         (Analysis::Constant, _) => {
             let c = e.center.clone();

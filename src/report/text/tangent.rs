@@ -138,6 +138,23 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.count.bound,
             an.rur.count.prime
         ),
+        Analysis::Poisson(an) => format!(
+            "critical points as zeros of the square system E = 0, a·m = b·m = 0 (m = ∇S×∇E, a, b ⊥ n = ({}, {}, {})) with no zeros at infinity: {} zeros, {} of them extra (n·∇E = n·∇S = 0, none critical), {} critical points, {} real; RUR in t = {}·x + {}·y + {}·z and D(u) are resultants, computed modulo {} and {} primes beyond Sombra's bounds of {} and {} bits (exact, no verification needed)",
+            an.direction[0],
+            an.direction[1],
+            an.direction[2],
+            an.rur.w.degree().unwrap_or(0),
+            an.extras.degree().unwrap_or(0),
+            an.points(),
+            an.real_points.len(),
+            an.rur.form[0],
+            an.rur.form[1],
+            an.rur.form[2],
+            an.rur.primes,
+            an.value_primes,
+            an.rur.bound_bits,
+            an.value_bound_bits
+        ),
         Analysis::LevelSets(ls) => format!(
             "curves of critical points: {} level curves tested",
             ls.levels.len()

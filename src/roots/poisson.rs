@@ -1,0 +1,660 @@
+//! The zeros of a square system `f₁ = f₂ = f₃ = 0` in x, y, z with no
+//! zeros at infinity, exactly, from computations modulo word primes that
+//! need no verification: every object lifted by the CRT is a *resultant*
+//! (an integer polynomial in the input coefficients), its image modulo p is
+//! what is computed modulo p, and Sombra's bound on its size says how many
+//! primes determine it ([`crate::elim::poisson`]).
+//!
+//! * The **RUR** with respect to a linear form ℓ ([`solve_square`]):
+//!   `w(u) = Res(u − ℓ, f) = ± R̄ · ∏_ξ (u − ℓ(ξ))` over the
+//!   `d₁d₂d₃` zeros ξ, and the Kronecker numerators
+//!   `V_v = −∂_ε Res(u − ℓ − εv, f)|_{ε=0} = ± R̄ · Σ_ξ v(ξ) ∏_{η≠ξ} (u − ℓ(η))`
+//!   of v = x, y, z.  When `w` is square-free (checked modulo one prime) the
+//!   zeros are exactly `ξ(τ) = (V_x, V_y, V_z)(τ) / w′(τ)` over the roots τ
+//!   of w, a zero is real iff its τ is.
+//! * The **values** of a polynomial h at the zeros selected by a factor
+//!   `f | w` ([`value_polynomial`]): `R̄^e · ∏_{f(τ)=0} (u − h(ξ(τ)))` is an
+//!   integer polynomial (a factor of `Res(u − h, f)` scaled by Gauss's
+//!   lemma) whose image modulo p is the characteristic polynomial of
+//!   `h(ξ(T))` in `F_p[T]/(f)`; its size is bounded through Landau's
+//!   inequality by Sombra's bound on `Res(u − h, f)`.
+
+use super::modrur::{Declined, mat_vec, mulmod, solve_columns};
+use crate::elim::f4::{ModPoly, ModQuotient, exps, zmpoly_mod};
+use crate::elim::poisson::{PrimeFail, SquareSystem, max_coeff, resultant_bound_bits};
+use crate::number::Q;
+use crate::number::reconstruct::{CrtVec, Fp, prime31, symmetric_mod};
+use crate::poly::{ZMPoly, ZPoly};
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
+
+/// The exact RUR of a square system (see the module documentation).
+#[derive(Clone, Debug)]
+pub struct PoissonRur {
+    /// The separating linear form ℓ = `form[0]·x + form[1]·y + form[2]·z`.
+    pub form: [i64; 3],
+    /// `w(u) = ± R̄ · charpoly(ℓ)`: degree `d₁d₂d₃`, square-free.
+    pub w: ZPoly,
+    /// The Kronecker numerators of x, y, z.
+    pub v: [ZPoly; 3],
+    /// `w′`, the common denominator of the coordinates.
+    pub wd: ZPoly,
+    /// The number of primes of the CRT.
+    pub primes: usize,
+    /// The a-priori bound on the coefficients, in bits.
+    pub bound_bits: u64,
+    /// A prime modulo which `w` keeps its degree and is square-free (so `w`
+    /// is square-free over Q).
+    pub squarefree_prime: u64,
+}
+
+impl PoissonRur {
+    /// `± R̄`, the resultant of the leading forms (the leading coefficient
+    /// of w).
+    pub fn leading_resultant(&self) -> BigInt {
+        self.w.lc()
+    }
+
+    /// The zero at a rational τ (exact; `None` where `w′(τ) = 0`).
+    pub fn point_at(&self, t: &Q) -> Option<[Q; 3]> {
+        let (dn, dd) = self.wd.eval_homogeneous(t.numer(), t.denom());
+        if dn.is_zero() {
+            return None;
+        }
+        Some(std::array::from_fn(|k| {
+            let (n, d) = self.v[k].eval_homogeneous(t.numer(), t.denom());
+            Q::new(n * &dd, d * &dn)
+        }))
+    }
+}
+
+/// The charpoly of ℓ on the quotient modulo p (monic, low coefficients
+/// `f_0 … f_(n−1)`) and the Kronecker numerators `G_v = v·f′(ℓ) mod f` of
+/// x, y, z — when ℓ generates the quotient and `f` is square-free.
+pub(crate) fn kronecker_mod(
+    fp: &Fp,
+    quo: &ModQuotient,
+    ell: [u64; 3],
+) -> Option<(Vec<u64>, [Vec<u64>; 3])> {
+    let n = quo.dim();
+    let cols: Vec<Vec<u32>> = (0..n)
+        .map(|j| {
+            (0..n)
+                .map(|i| {
+                    let s = ell[0] * quo.mult[0][j][i] as u64
+                        + ell[1] * quo.mult[1][j][i] as u64
+                        + ell[2] * quo.mult[2][j][i] as u64;
+                    fp.reduce(s) as u32
+                })
+                .collect()
+        })
+        .collect();
+    let mut e1 = vec![0u64; n];
+    e1[0] = 1;
+    let mut kry = Vec::with_capacity(n + 1);
+    kry.push(e1);
+    for _ in 0..n {
+        crate::budget::check();
+        let next = mat_vec(fp, &cols, kry.last().expect("non-empty"));
+        kry.push(next);
+    }
+    let top = kry.pop().expect("n + 1 vectors");
+    let xs: Vec<Vec<u64>> = (0..3)
+        .map(|v| quo.mult[v][0].iter().map(|&c| c as u64).collect())
+        .collect();
+    let rhs = vec![top, xs[0].clone(), xs[1].clone(), xs[2].clone()];
+    let sol = solve_columns(fp, &kry, &rhs)?;
+    // T^n = Σ c_j T^j: f = T^n − Σ c_j T^j
+    let c = &sol[0];
+    let alg = ModAlgebra::from_c(*fp, c.clone());
+    if !alg.is_squarefree() {
+        return None;
+    }
+    let fd = alg.derivative();
+    let g: [Vec<u64>; 3] = std::array::from_fn(|k| mulmod(fp, &sol[1 + k], &fd, c));
+    Some((alg.low(), g))
+}
+
+/// Arithmetic in `F_p[T]/(f)` for a monic `f` of degree n ≥ 1.
+pub(crate) struct ModAlgebra {
+    fp: Fp,
+    /// `T^n = Σ c_j T^j` (length n).
+    c: Vec<u64>,
+}
+
+impl ModAlgebra {
+    /// From `c` with `T^n = Σ c_j T^j`.
+    pub(crate) fn from_c(fp: Fp, c: Vec<u64>) -> ModAlgebra {
+        ModAlgebra { fp, c }
+    }
+
+    /// From a polynomial with ascending residues and a non-zero leading
+    /// coefficient (made monic).
+    pub(crate) fn from_poly(fp: Fp, f: &[u64]) -> Option<ModAlgebra> {
+        let (&lc, low) = f.split_last()?;
+        if low.is_empty() {
+            return None;
+        }
+        let inv = fp.inv(lc)?;
+        let c = low.iter().map(|&a| fp.neg(fp.mul(a, inv))).collect();
+        Some(ModAlgebra { fp, c })
+    }
+
+    fn n(&self) -> usize {
+        self.c.len()
+    }
+
+    /// The low coefficients of the monic `f`.
+    pub(crate) fn low(&self) -> Vec<u64> {
+        self.c.iter().map(|&x| self.fp.neg(x)).collect()
+    }
+
+    /// `f` ascending, monic.
+    fn full(&self) -> Vec<u64> {
+        let mut f = self.low();
+        f.push(1);
+        f
+    }
+
+    /// `f′ mod f` (degree < n: f′ itself).
+    pub(crate) fn derivative(&self) -> Vec<u64> {
+        let fp = &self.fp;
+        let n = self.n();
+        let low = self.low();
+        let mut fd = vec![0u64; n];
+        for j in 1..n {
+            fd[j - 1] = fp.mul(j as u64 % fp.p, low[j]);
+        }
+        fd[n - 1] = n as u64 % fp.p;
+        fd
+    }
+
+    /// `gcd(f, f′) = 1`.
+    pub(crate) fn is_squarefree(&self) -> bool {
+        poly_gcd_mod(&self.fp, &self.full(), &self.derivative()).len() == 1
+    }
+
+    /// Product.
+    pub(crate) fn mul(&self, a: &[u64], b: &[u64]) -> Vec<u64> {
+        mulmod(&self.fp, a, b, &self.c)
+    }
+
+    /// The inverse of `a` (`None` when `gcd(a, f) ≠ 1`), by extended Euclid.
+    pub(crate) fn inv(&self, a: &[u64]) -> Option<Vec<u64>> {
+        let fp = &self.fp;
+        // invariant: s·a ≡ r (mod f)
+        let (mut r0, mut r1) = (self.full(), trimmed(a));
+        let (mut s0, mut s1): (Vec<u64>, Vec<u64>) = (vec![], vec![1]);
+        while !r1.is_empty() {
+            let (q, r) = divrem_mod(fp, &r0, &r1);
+            let s2 = poly_sub_mod(fp, &s0, &poly_mul_mod(fp, &q, &s1));
+            r0 = std::mem::replace(&mut r1, r);
+            s0 = std::mem::replace(&mut s1, s2);
+        }
+        if r0.len() != 1 {
+            return None;
+        }
+        let k = fp.inv(r0[0])?;
+        let mut out: Vec<u64> = s0.iter().map(|&x| fp.mul(x, k)).collect();
+        out.resize(self.n(), 0);
+        // s0 has degree < n already (Euclid's cofactor bound)
+        out.truncate(self.n());
+        Some(out)
+    }
+
+    /// `Tr(T^m)` for `m < count` (power sums of the roots of f, Newton).
+    fn traces(&self, count: usize) -> Vec<u64> {
+        let fp = &self.fp;
+        let n = self.n();
+        let a = self.low(); // f = T^n + Σ a_k T^k
+        let mut p = vec![0u64; count];
+        if count == 0 {
+            return p;
+        }
+        p[0] = n as u64 % fp.p;
+        for m in 1..count {
+            // p_m = −(m·a_{n−m} [m ≤ n] + Σ_{i=1}^{min(m−1, n)} a_{n−i} p_{m−i})
+            let mut acc = 0u64;
+            if m <= n {
+                acc = fp.mul(m as u64 % fp.p, a[n - m]);
+            }
+            for i in 1..=(m - 1).min(n) {
+                acc = fp.add(acc, fp.mul(a[n - i], p[m - i]));
+            }
+            p[m] = fp.neg(acc);
+        }
+        p
+    }
+
+    /// The characteristic polynomial of the multiplication by `s`
+    /// (ascending, monic, degree n): power sums `Tr(s^k)` by baby steps and
+    /// giant steps over the Hankel matrix of traces, then Newton's
+    /// identities (p > n).
+    pub(crate) fn charpoly(&self, s: &[u64]) -> Vec<u64> {
+        let fp = &self.fp;
+        let n = self.n();
+        let t = self.traces(2 * n - 1);
+        let r = ((n + 1) as f64).sqrt().ceil() as usize;
+        // baby steps s^0 … s^(r−1) and H·s^i
+        let mut one = vec![0u64; n];
+        one[0] = 1;
+        let mut baby: Vec<Vec<u64>> = vec![one];
+        for i in 1..r {
+            crate::budget::check();
+            let next = self.mul(&baby[i - 1], s);
+            baby.push(next);
+        }
+        let hank: Vec<Vec<u64>> = baby
+            .iter()
+            .map(|b| {
+                (0..n)
+                    .map(|i| {
+                        let mut acc = 0u64;
+                        for (j, &bj) in b.iter().enumerate() {
+                            let x = acc + bj * t[i + j];
+                            acc = if x >= fp.p2 { x - fp.p2 } else { x };
+                        }
+                        fp.reduce(acc)
+                    })
+                    .collect()
+            })
+            .collect();
+        let giant = self.mul(&baby[r - 1], s);
+        // power sums P_k = Tr(s^k) for k = 1 … n
+        let mut ps = vec![0u64; n + 1];
+        let mut g = baby[0].clone();
+        let mut k0 = 0;
+        while k0 <= n {
+            crate::budget::check();
+            for (i, h) in hank.iter().enumerate() {
+                let k = k0 + i;
+                if k > n {
+                    break;
+                }
+                let mut acc = 0u64;
+                for (&gj, &hj) in g.iter().zip(h) {
+                    let x = acc + gj * hj;
+                    acc = if x >= fp.p2 { x - fp.p2 } else { x };
+                }
+                ps[k] = fp.reduce(acc);
+            }
+            k0 += r;
+            if k0 <= n {
+                g = self.mul(&g, &giant);
+            }
+        }
+        // Newton: χ = Σ e_k u^(n−k), k·e_k = −Σ_{i=1}^k P_i e_{k−i}
+        let mut e = vec![0u64; n + 1];
+        e[0] = 1;
+        for k in 1..=n {
+            let mut acc = 0u64;
+            for i in 1..=k {
+                acc = fp.add(acc, fp.mul(ps[i], e[k - i]));
+            }
+            let inv = fp.inv(k as u64 % fp.p).expect("p > n");
+            e[k] = fp.neg(fp.mul(acc, inv));
+        }
+        e.reverse();
+        e
+    }
+
+    /// The value of a polynomial in x, y, z (modulo p) at algebra elements.
+    pub(crate) fn eval(&self, p: &ModPoly, xyz: [&[u64]; 3]) -> Vec<u64> {
+        let fp = &self.fp;
+        let n = self.n();
+        // terms by exponent of x, then y; inner sums are combinations of
+        // the powers of z (no products)
+        let mut terms: Vec<([u32; 3], u64)> =
+            p.iter().map(|&(m, c)| (exps(m), c as u64)).collect();
+        terms.sort_by(|a, b| b.0.cmp(&a.0));
+        let dz = terms.iter().map(|t| t.0[2]).max().unwrap_or(0) as usize;
+        let mut zp: Vec<Vec<u64>> = Vec::with_capacity(dz + 1);
+        let mut one = vec![0u64; n];
+        one[0] = 1;
+        zp.push(one);
+        for k in 1..=dz {
+            let next = self.mul(&zp[k - 1], xyz[2]);
+            zp.push(next);
+        }
+        let inner = |ts: &[([u32; 3], u64)]| -> Vec<u64> {
+            let mut acc = vec![0u64; n];
+            for (e, c) in ts {
+                for (a, &z) in acc.iter_mut().zip(&zp[e[2] as usize]) {
+                    *a = fp.reduce(*a + c * z);
+                }
+            }
+            acc
+        };
+        // Horner in x over a, each coefficient a Horner in y over b
+        let horner = |groups: Vec<(u32, Vec<u64>)>, var: &[u64]| -> Vec<u64> {
+            let mut acc: Option<Vec<u64>> = None;
+            let mut prev = 0u32;
+            for (k, poly) in groups {
+                // groups by decreasing exponent
+                acc = Some(match acc {
+                    None => {
+                        prev = k;
+                        poly
+                    }
+                    Some(mut a) => {
+                        for _ in k..prev {
+                            a = self.mul(&a, var);
+                        }
+                        prev = k;
+                        a.iter().zip(&poly).map(|(&x, &y)| fp.add(x, y)).collect()
+                    }
+                });
+            }
+            let mut a = acc.unwrap_or_else(|| vec![0u64; n]);
+            for _ in 0..prev {
+                a = self.mul(&a, var);
+            }
+            a
+        };
+        let mut by_x: Vec<(u32, Vec<u64>)> = Vec::new();
+        let mut i = 0;
+        while i < terms.len() {
+            let a = terms[i].0[0];
+            let mut by_y: Vec<(u32, Vec<u64>)> = Vec::new();
+            while i < terms.len() && terms[i].0[0] == a {
+                let b = terms[i].0[1];
+                let start = i;
+                while i < terms.len() && terms[i].0[0] == a && terms[i].0[1] == b {
+                    i += 1;
+                }
+                by_y.push((b, inner(&terms[start..i])));
+            }
+            by_x.push((a, horner(by_y, xyz[1])));
+        }
+        horner(by_x, xyz[0])
+    }
+}
+
+fn trimmed(a: &[u64]) -> Vec<u64> {
+    let mut v = a.to_vec();
+    while v.last() == Some(&0) {
+        v.pop();
+    }
+    v
+}
+
+/// `(q, r)` with `a = q·b + r` modulo p (ascending, `b` trimmed, non-zero).
+fn divrem_mod(fp: &Fp, a: &[u64], b: &[u64]) -> (Vec<u64>, Vec<u64>) {
+    let mut r = trimmed(a);
+    let db = b.len() - 1;
+    if r.len() < b.len() {
+        return (vec![], r);
+    }
+    let inv = fp.inv(b[db]).expect("non-zero leading coefficient");
+    let mut q = vec![0u64; r.len() - db];
+    while r.len() > db {
+        let k = r.len() - 1 - db;
+        let t = fp.mul(*r.last().expect("non-empty"), inv);
+        q[k] = t;
+        for j in 0..db {
+            r[k + j] = fp.sub(r[k + j], fp.mul(t, b[j]));
+        }
+        r.pop();
+        while r.last() == Some(&0) {
+            r.pop();
+        }
+    }
+    (trimmed(&q), r)
+}
+
+fn poly_mul_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
+    if a.is_empty() || b.is_empty() {
+        return vec![];
+    }
+    let mut r = vec![0u64; a.len() + b.len() - 1];
+    for (i, &x) in a.iter().enumerate() {
+        for (j, &y) in b.iter().enumerate() {
+            r[i + j] = fp.reduce(r[i + j] + x * y);
+        }
+    }
+    trimmed(&r)
+}
+
+fn poly_sub_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
+    let mut r = vec![0u64; a.len().max(b.len())];
+    for (i, x) in r.iter_mut().enumerate() {
+        let ai = a.get(i).copied().unwrap_or(0);
+        let bi = b.get(i).copied().unwrap_or(0);
+        *x = fp.sub(ai, bi);
+    }
+    trimmed(&r)
+}
+
+/// The gcd modulo p (not normalised; ascending, trimmed).
+pub(crate) fn poly_gcd_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
+    let (mut a, mut b) = (trimmed(a), trimmed(b));
+    while !b.is_empty() {
+        let (_, r) = divrem_mod(fp, &a, &b);
+        a = std::mem::replace(&mut b, r);
+    }
+    a
+}
+
+/// Residues of an integer polynomial (ascending).
+pub(crate) fn zpoly_mod(fp: &Fp, p: &ZPoly) -> Vec<u64> {
+    p.coeffs().iter().map(|c| fp.reduce_big(c)).collect()
+}
+
+/// The exact RUR of the square system with the first linear form of
+/// `forms` that separates its zeros (see the module documentation).
+/// Declines when the leading forms have a common zero at infinity, when no
+/// form gives a square-free characteristic polynomial (multiple zeros, or
+/// no separating form among those tried), or when the prime limit is
+/// reached.
+pub fn solve_square(
+    sys: &mut SquareSystem,
+    forms: &[[i64; 3]],
+    max_primes: usize,
+) -> Result<PoissonRur, Declined> {
+    let decline = |s: &str| Err(Declined(s.into()));
+    let probe: Vec<u64> = (0..3).map(prime31).collect();
+    if !sys.choose_dehomogenisation(&probe) {
+        return decline("the leading forms share a zero on every coordinate line at infinity");
+    }
+    let n = sys.bezout();
+    crate::budget::check_size("the Poisson RUR", 4 * n + 1, 0);
+    let mut chosen: Option<usize> = None;
+    let mut crt = CrtVec::new(4 * n + 1);
+    let mut bound_bits = 0u64;
+    let mut squarefree_prime = 0u64;
+    let (mut fails, mut dim_fails) = (0usize, 0usize);
+    let prof = std::env::var("QS_PROFILE").is_ok();
+    let mut times = [std::time::Duration::ZERO; 4];
+    for k in 0..max_primes {
+        crate::budget::check_now();
+        let fp = Fp::new(prime31(k));
+        let t0 = std::time::Instant::now();
+        let q = sys.quotient_mod(&fp);
+        times[0] += t0.elapsed();
+        let quo = match q {
+            Ok((_, q)) => q,
+            Err(PrimeFail::TooLarge) => return decline("degree too large for the modular route"),
+            Err(_) => {
+                dim_fails += 1;
+                if chosen.is_none() && dim_fails >= 3 {
+                    return decline(
+                        "zeros at infinity: the quotient modulo three primes is not of the Bézout dimension",
+                    );
+                }
+                continue;
+            }
+        };
+        let t0 = std::time::Instant::now();
+        let r = sys.leading_resultant_mod(&fp);
+        times[1] += t0.elapsed();
+        let Ok(r) = r else {
+            fails += 1;
+            continue;
+        };
+        let t0 = std::time::Instant::now();
+        let candidates: Vec<usize> = match chosen {
+            Some(i) => vec![i],
+            None => (0..forms.len()).collect(),
+        };
+        let got = candidates.into_iter().find_map(|i| {
+            let ell = forms[i].map(|x| fp.reduce_big(&BigInt::from(x)));
+            kronecker_mod(&fp, &quo, ell).map(|img| (i, img))
+        });
+        times[2] += t0.elapsed();
+        let Some((i, (f_low, g))) = got else {
+            fails += 1;
+            if chosen.is_none() && fails >= 3 {
+                return decline(
+                    "no linear form tried separates the zeros (multiple zeros or a symmetric system)",
+                );
+            }
+            continue;
+        };
+        if chosen.is_none() {
+            chosen = Some(i);
+            squarefree_prime = fp.p;
+            // f₀ = u − ℓ − ε·v: coefficients at most max|ℓᵢ| + 1 on the torus
+            let lmax = forms[i].iter().map(|x| x.unsigned_abs()).max().unwrap_or(0);
+            let degs = [1, sys.degs[0], sys.degs[1], sys.degs[2]];
+            let bounds = [
+                BigInt::from(lmax + 1),
+                max_coeff(&sys.gens[0]),
+                max_coeff(&sys.gens[1]),
+                max_coeff(&sys.gens[2]),
+            ];
+            bound_bits = resultant_bound_bits(&degs, &bounds);
+        }
+        let mut res: Vec<u64> = f_low.iter().map(|&c| fp.mul(c, r)).collect();
+        res.push(r);
+        for gv in &g {
+            res.extend(gv.iter().map(|&c| fp.mul(c, r)));
+        }
+        crt.push(&fp, &res);
+        crate::budget::check_size("the Poisson RUR", 4 * n + 1, crt.modulus_bits());
+        if crt.modulus_bits() > bound_bits + 1 {
+            if prof { eprintln!("stage 1: quotient {:?} leading {:?} kronecker {:?}", times[0], times[1], times[2]); }
+            crt.flush();
+            let m = crt.modulus().clone();
+            let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();
+            let w = ZPoly::new(vals[..=n].to_vec());
+            let v: [ZPoly; 3] = std::array::from_fn(|j| {
+                ZPoly::new(vals[n + 1 + j * n..n + 1 + (j + 1) * n].to_vec())
+            });
+            let wd = w.derivative();
+            return Ok(PoissonRur {
+                form: forms[chosen.expect("chosen")],
+                w,
+                v,
+                wd,
+                primes: crt.primes(),
+                bound_bits,
+                squarefree_prime,
+            });
+        }
+        if fails > 16 + k / 2 {
+            return decline("too many primes without an image");
+        }
+    }
+    decline("the prime limit was reached")
+}
+
+/// `R̄^e · ∏_{f(τ)=0} (u − h(ξ(τ)))` exactly, for a square-free factor `f`
+/// of `rur.w` and `h` of degree `e`, where `resultant_bits` bounds the
+/// coefficients of `Res(u − h, system)` (see [`value_bound_bits`]).  Its
+/// primitive part is the polynomial of the values of h at the zeros of f.
+pub fn value_polynomial(
+    rur: &PoissonRur,
+    f: &ZPoly,
+    h: &ZMPoly,
+    resultant_bits: u64,
+    bezout: usize,
+    max_primes: usize,
+) -> Result<(ZPoly, usize), Declined> {
+    let nf = f.degree().unwrap_or(0);
+    if nf == 0 {
+        return Ok((ZPoly::constant(BigInt::one()), 0));
+    }
+    let e = h.total_degree().unwrap_or(0);
+    // ‖R̄^e·A‖∞ ≤ 2^deg A · √(deg Q_h + 1) · 2^resultant_bits (Landau)
+    let sqrt_bits = (((bezout + 1) as f64).log2() / 2.0).ceil() as u64 + 1;
+    let target = resultant_bits + nf as u64 + sqrt_bits;
+    let rbar = rur.leading_resultant();
+    let mut crt = CrtVec::new(nf + 1);
+    for k in 0..max_primes {
+        crate::budget::check_now();
+        let fp = Fp::new(prime31(k));
+        let fm = zpoly_mod(&fp, f);
+        if fm.last() == Some(&0) {
+            continue;
+        }
+        let r = fp.reduce_big(&rbar);
+        if r == 0 {
+            continue;
+        }
+        let Some(alg) = ModAlgebra::from_poly(fp, &fm) else {
+            continue;
+        };
+        let reduce = |p: &ZPoly| -> Vec<u64> {
+            let mut a = zpoly_mod(&fp, p);
+            let (_, rem) = divrem_mod(&fp, &a, &fm);
+            a = rem;
+            a.resize(nf, 0);
+            a
+        };
+        let Some(dinv) = alg.inv(&reduce(&rur.wd)) else {
+            continue;
+        };
+        let xs: Vec<Vec<u64>> = rur.v.iter().map(|v| alg.mul(&reduce(v), &dinv)).collect();
+        let hp = zmpoly_mod(&fp, h);
+        let s = alg.eval(&hp, [&xs[0], &xs[1], &xs[2]]);
+        let chi = alg.charpoly(&s);
+        let mut re = 1u64;
+        for _ in 0..e {
+            re = fp.mul(re, r);
+        }
+        let res: Vec<u64> = chi.iter().map(|&c| fp.mul(c, re)).collect();
+        crt.push(&fp, &res);
+        crate::budget::check_size("the value polynomial", nf + 1, crt.modulus_bits());
+        if crt.modulus_bits() > target + 1 {
+            crt.flush();
+            let m = crt.modulus().clone();
+            let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();
+            return Ok((ZPoly::new(vals), crt.primes()));
+        }
+    }
+    Err(Declined("the prime limit was reached (value polynomial)".into()))
+}
+
+/// Sombra's bound (bits) on the coefficients of `Res(u − h, system)`.
+pub fn value_bound_bits(sys: &SquareSystem, h: &ZMPoly) -> u64 {
+    let e = h.total_degree().unwrap_or(0).max(1);
+    let degs = [e, sys.degs[0], sys.degs[1], sys.degs[2]];
+    let bounds = [
+        max_coeff(h) + BigInt::one(),
+        max_coeff(&sys.gens[0]),
+        max_coeff(&sys.gens[1]),
+        max_coeff(&sys.gens[2]),
+    ];
+    resultant_bound_bits(&degs, &bounds)
+}
+
+
+#[cfg(test)]
+mod timing_probe {
+    #[test]
+    #[ignore]
+    fn approx_cost() {
+        let text = std::fs::read_to_string("/tmp/cubic_D.txt").unwrap();
+        let p: crate::poly::IntPoly = text.parse().unwrap();
+        let t = std::time::Instant::now();
+        let roots = p.real_roots();
+        println!("isolate {:?} {}", t.elapsed(), roots.len());
+        for r in &roots {
+            let t = std::time::Instant::now();
+            let mut c = r.clone();
+            println!("interval {:?}", c.interval());
+            c.refine_for_approx(20);
+            println!("refine {:?} {:?}", t.elapsed(), c.interval().0.denom().bits());
+        }
+    }
+}

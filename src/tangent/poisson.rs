@@ -1,0 +1,535 @@
+//! S of degree ≥ 3 in general position: the critical points of S on E from
+//! the exact RUR of a *square* subsystem, computed modulo primes and lifted
+//! by the CRT with an a-priori bound ([`crate::roots::poisson`]) — no
+//! reconstruction is guessed and no verification is needed.
+//!
+//! The critical points are the zeros of `E = 0, m = ∇S × ∇E = 0`
+//! ([`super::critical`]).  For a direction `n` and a basis `a, b` of `n^⊥`
+//! the square system `F = (E, a·m, b·m)` has as zeros the critical points
+//! and the *extra* points of `E = n·∇E = n·∇S = 0` (where `m ∥ n`): a zero
+//! of F with `m ≠ 0` has `m ∥ a × b = n`, and `m ⊥ ∇E, ∇S` then gives
+//! `n·∇E = n·∇S = 0`; conversely there `∇E, ∇S ⊥ n` so `m ∥ n`.  The extras
+//! are the roots of `g = gcd(w, (n·∇E)(ξ)·w′)` in the RUR `(w, V)` of F;
+//! none of them is a critical point when `n·m` is non-zero at all of them
+//! (checked modulo a prime: a common zero over Q̄ would stay one modulo p).
+//! The critical points are then exactly the roots of `w / g`, all simple,
+//! and a critical point is real iff its root is.
+//!
+//! The critical values: `D(u)`, the primitive part of
+//! `R̄^d · ∏ (u − S(ξ))` over the critical points, again by the CRT with a
+//! bound ([`crate::roots::poisson::value_polynomial`]); the value at each
+//! real critical point is identified among the real roots of D by interval
+//! evaluation of S on an enclosure of the point.
+
+use super::critical::cross_gradients;
+use super::ellipsoid::Ellipsoid;
+use super::witness::{WitnessPoint, find_witness, witness_at_value};
+use crate::elim::f4::zmpoly_mod;
+use crate::elim::poisson::SquareSystem;
+use crate::number::reconstruct::{Fp, prime31};
+use crate::number::{Q, dyadic_floor, qi};
+use crate::poly::mpoly::{X, Y, Z};
+use crate::poly::{QMPoly, ZMPoly, ZPoly};
+use crate::roots::modrur::Declined;
+use crate::roots::poisson::{
+    ModAlgebra, PoissonRur, poly_gcd_mod, solve_square, value_bound_bits, value_polynomial,
+    zpoly_mod,
+};
+use crate::roots::{RealAlg, isolate_squarefree};
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+
+/// The directions `n` tried in turn (the first gives the sparsest system).
+pub const DIRECTIONS: [[i64; 3]; 4] = [[0, 0, 1], [1, 2, 3], [3, -1, 2], [-2, 5, 1]];
+
+/// The separating linear forms tried in turn.
+pub const FORMS: [[i64; 3]; 3] = [[1, 3, -2], [2, -1, 5], [1, 7, 3]];
+
+/// The largest number of primes of one lifting.
+pub const MAX_PRIMES: usize = 20_000;
+
+/// The critical points of S on E by the Poisson route.
+#[derive(Clone, Debug)]
+pub struct PoissonAnalysis {
+    /// The direction n.
+    pub direction: [i64; 3],
+    /// The square system `E, a·m, b·m` (integer, primitive).
+    pub generators: [ZMPoly; 3],
+    /// Its exact RUR.
+    pub rur: PoissonRur,
+    /// `g`: the factor of `w` at the extra points (1 when there are none).
+    pub extras: ZPoly,
+    /// The prime at which no extra point was shown to be critical.
+    pub extras_prime: Option<u64>,
+    /// `w / g`: its roots are the critical points.
+    pub critical: ZPoly,
+    /// The real roots of `critical` (one per real critical point).
+    pub real_points: Vec<RealAlg>,
+    /// S at each real critical point (same order), when D(u) has fewer
+    /// distinct roots than there are critical points (S takes a value
+    /// twice); empty otherwise, when the real critical values are exactly
+    /// the real roots of D(u), one per real critical point.
+    pub values: Vec<RealAlg>,
+    /// D(u): the critical values (complex points included), square-free.
+    pub judging: ZPoly,
+    /// Sombra's bound (bits) on `Res(u − S′, F)` behind D(u).
+    pub value_bound_bits: u64,
+    /// The number of primes of D(u).
+    pub value_primes: usize,
+}
+
+impl PoissonAnalysis {
+    /// True when S takes distinct values at the critical points: D(u) has
+    /// one root per critical point, and a root is real iff its point is
+    /// (a non-real point and its conjugate would share a real value).
+    pub fn separates(&self) -> bool {
+        self.values.is_empty()
+    }
+
+    /// The values attained by real critical points (with
+    /// [`PoissonAnalysis::separates`]: all real roots of D(u), increasing).
+    pub fn real_values(&self) -> Vec<RealAlg> {
+        if self.separates() {
+            RealAlg::roots_of(&self.judging)
+        } else {
+            self.values.clone()
+        }
+    }
+
+    /// The number of complex critical points.
+    pub fn points(&self) -> usize {
+        self.critical.degree().unwrap_or(0)
+    }
+
+    /// A rational approximation of real critical point `i` (dyadic, within
+    /// `2^-(bits+16)` of the point at a `2^-bits` approximation of its τ).
+    pub fn approx_point(&self, i: usize, bits: u32) -> Option<[Q; 3]> {
+        let t = self.real_points[i].to_rational_approx(bits);
+        let (dn, dd) = self.rur.wd.eval_homogeneous(t.numer(), t.denom());
+        if dn.is_zero() {
+            return None;
+        }
+        Some(std::array::from_fn(|k| {
+            let (n, d) = self.rur.v[k].eval_homogeneous(t.numer(), t.denom());
+            let (mut num, mut den) = (n * &dd, d * &dn);
+            if den.is_negative() {
+                num = -num;
+                den = -den;
+            }
+            dyadic_floor(&num, &den, bits as usize + 16)
+        }))
+    }
+
+    /// A witness near the real critical point whose value is `value`.
+    pub fn witness(
+        &self,
+        value: &RealAlg,
+        e: &Ellipsoid,
+        s: &QMPoly,
+        want: i32,
+    ) -> Option<WitnessPoint> {
+        if !self.separates() {
+            return witness_at_value(&self.values, value, e, s, want, &|i, bits| {
+                self.approx_point(i, bits)
+            });
+        }
+        // the points in the order of their approximate values' distance to
+        // `value`: the nearest is the one (a witness is checked exactly, so
+        // an imprecise choice can only cost a retry, never a wrong answer)
+        let target = value.to_rational_approx(48);
+        let mut order: Vec<(Q, usize)> = (0..self.real_points.len())
+            .filter_map(|i| {
+                let v = approx_value(s, &self.approx_point(i, 32)?);
+                Some(((v - &target).abs(), i))
+            })
+            .collect();
+        order.sort();
+        order.into_iter().take(3).find_map(|(_, i)| {
+            find_witness(e, s, want, false, &|bits| self.approx_point(i, bits))
+        })
+    }
+}
+
+/// `p` at a point with dyadic coordinates, exactly, in integers: with
+/// `m_k / 2^K` the coordinates, `Σ c_α m^α 2^{K(d − |α|)}` over the common
+/// denominator `2^{Kd}` (one reduction at the end).
+fn approx_value(p: &QMPoly, pt: &[Q; 3]) -> Q {
+    let (pz, k) = p.to_primitive_z();
+    let kk = pt.iter().map(|x| x.denom().bits() - 1).max().unwrap_or(0) as usize;
+    let m: Vec<BigInt> = pt
+        .iter()
+        .map(|x| x.numer() * (BigInt::one() << (kk - (x.denom().bits() as usize - 1))))
+        .collect();
+    let d = pz.total_degree().unwrap_or(0) as usize;
+    let mut acc = BigInt::zero();
+    for (ex, c) in pz.terms() {
+        let deg = (ex[X] + ex[Y] + ex[Z]) as usize;
+        let mut t = c.clone();
+        for (v, &e) in [ex[X], ex[Y], ex[Z]].iter().enumerate() {
+            if e > 0 {
+                t *= num_traits::pow(m[v].clone(), e as usize);
+            }
+        }
+        acc += t << (kk * (d - deg));
+    }
+    Q::new(acc, BigInt::one() << (kk * d)) * k
+}
+
+/// A basis `a, b` of the plane orthogonal to `n ≠ 0` (integer vectors).
+fn orthogonal_basis(n: [i64; 3]) -> ([i64; 3], [i64; 3]) {
+    // the two largest-index coordinates give independent cross products
+    let k = (0..3).max_by_key(|&i| n[i].abs()).expect("three coordinates");
+    let e = |i: usize| {
+        let mut v = [0i64; 3];
+        v[i] = 1;
+        v
+    };
+    let cross = |u: [i64; 3], v: [i64; 3]| {
+        [
+            u[1] * v[2] - u[2] * v[1],
+            u[2] * v[0] - u[0] * v[2],
+            u[0] * v[1] - u[1] * v[0],
+        ]
+    };
+    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+    (cross(e(i), n), cross(e(j), n))
+}
+
+fn combine(v: [i64; 3], m: &[QMPoly; 3]) -> QMPoly {
+    let mut acc = QMPoly::zero();
+    for (c, p) in v.iter().zip(m) {
+        if *c != 0 {
+            acc = &acc + &p.scale(&qi(*c));
+        }
+    }
+    acc
+}
+
+/// The Poisson analysis, or why it does not apply (the caller then uses
+/// another route).
+pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<PoissonAnalysis, Declined> {
+    let m = cross_gradients(s, &e.poly);
+    let (ez, _) = e.poly.to_primitive_z();
+    let grad_e = crate::geom::gradient(&e.poly);
+    let mut last = Declined("no direction tried".into());
+    for n in DIRECTIONS {
+        crate::budget::check_now();
+        let (a, b) = orthogonal_basis(n);
+        let ma = combine(a, &m);
+        let mb = combine(b, &m);
+        if ma.is_zero() || mb.is_zero() {
+            continue;
+        }
+        let gens = [ez.clone(), ma.to_primitive_z().0, mb.to_primitive_z().0];
+        let Some(mut sys) = SquareSystem::new(gens.clone()) else {
+            continue;
+        };
+        let t0 = std::time::Instant::now();
+        let rur = solve_square(&mut sys, &FORMS, MAX_PRIMES);
+        if std::env::var("QS_PROFILE").is_ok() { eprintln!("rur {:?}", t0.elapsed()); }
+        let rur = match rur {
+            Ok(r) => r,
+            Err(d) => {
+                last = d;
+                continue;
+            }
+        };
+        match finish(s, n, &m, &grad_e, gens, &sys, rur) {
+            Ok(an) => return Ok(an),
+            Err(d) => last = d,
+        }
+    }
+    Err(last)
+}
+
+/// `K(ξ)·w′` for a polynomial K of degree ≤ 1 at the RUR (the numerator of
+/// K at the zero of root τ).
+fn linear_at_rur(k: &QMPoly, rur: &PoissonRur) -> ZPoly {
+    let (kz, _) = k.to_primitive_z();
+    let mut acc = ZPoly::zero();
+    for (ex, c) in kz.terms() {
+        let part = match (ex[X], ex[Y], ex[Z]) {
+            (1, 0, 0) => &rur.v[0],
+            (0, 1, 0) => &rur.v[1],
+            (0, 0, 1) => &rur.v[2],
+            _ => &rur.wd,
+        };
+        acc = &acc + &part.scale(c);
+    }
+    acc
+}
+
+/// True when `h` vanishes at no root of `g` (`g` a factor of `rur.w`):
+/// `gcd(g_p, h(ξ(T))) = 1` in `F_p[T]/(g_p)` at a prime keeping the degree
+/// of g with `w′` invertible.  Returns that prime.
+fn nonzero_at_roots(rur: &PoissonRur, g: &ZPoly, h: &ZMPoly) -> Option<u64> {
+    let ng = g.degree()?;
+    for k in 0..8 {
+        let fp = Fp::new(prime31(1000 + k));
+        let gm = zpoly_mod(&fp, g);
+        if gm.last() == Some(&0) {
+            continue;
+        }
+        let alg = ModAlgebra::from_poly(fp, &gm)?;
+        let reduce = |p: &ZPoly| -> Vec<u64> {
+            let a = zpoly_mod(&fp, p);
+            let mut r = poly_rem(&fp, &a, &gm);
+            r.resize(ng, 0);
+            r
+        };
+        let Some(dinv) = alg.inv(&reduce(&rur.wd)) else {
+            continue;
+        };
+        let xs: Vec<Vec<u64>> = rur.v.iter().map(|v| alg.mul(&reduce(v), &dinv)).collect();
+        let val = alg.eval(&zmpoly_mod(&fp, h), [&xs[0], &xs[1], &xs[2]]);
+        return (poly_gcd_mod(&fp, &gm, &val).len() == 1).then_some(fp.p);
+    }
+    None
+}
+
+fn poly_rem(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
+    let mut r = a.to_vec();
+    while r.last() == Some(&0) {
+        r.pop();
+    }
+    let db = b.len() - 1;
+    let inv = fp.inv(b[db]).expect("non-zero leading coefficient");
+    while r.len() > db {
+        let k = r.len() - 1 - db;
+        let t = fp.mul(*r.last().expect("non-empty"), inv);
+        for j in 0..db {
+            r[k + j] = fp.sub(r[k + j], fp.mul(t, b[j]));
+        }
+        r.pop();
+        while r.last() == Some(&0) {
+            r.pop();
+        }
+    }
+    r
+}
+
+#[allow(clippy::too_many_arguments)]
+fn finish(
+    s: &QMPoly,
+    n: [i64; 3],
+    m: &[QMPoly; 3],
+    grad_e: &[QMPoly; 3],
+    generators: [ZMPoly; 3],
+    sys: &SquareSystem,
+    rur: PoissonRur,
+) -> Result<PoissonAnalysis, Declined> {
+    let decline = |s: &str| Err(Declined(s.into()));
+    let t0 = std::time::Instant::now();
+    let prof = std::env::var("QS_PROFILE").is_ok();
+    // the extra points: roots of w where n·∇E vanishes
+    let l = combine(n, grad_e);
+    let lv = linear_at_rur(&l, &rur);
+    let g = rur.w.gcd(&lv);
+    let (extras, extras_prime) = if g.degree().unwrap_or(0) == 0 {
+        (ZPoly::constant(BigInt::one()), None)
+    } else {
+        let nm = combine(n, m).to_primitive_z().0;
+        match nonzero_at_roots(&rur, &g, &nm) {
+            Some(p) => (g, Some(p)),
+            None => return decline("a critical point lies on the silhouette of the direction"),
+        }
+    };
+    let critical = rur
+        .w
+        .div_exact(&extras)
+        .ok_or_else(|| Declined("the extra factor does not divide w".into()))?;
+    if critical.degree().unwrap_or(0) == 0 {
+        return decline("no critical point");
+    }
+    if prof { eprintln!("extras+div {:?}", t0.elapsed()); }
+    let real_points = RealAlg::roots_of(&critical);
+    if prof { eprintln!("real roots {:?}", t0.elapsed()); }
+    // D(u) for the integer S′ (S = k·S′), then scaled to S
+    let (sz, k) = s.to_primitive_z();
+    let bits = value_bound_bits(sys, &sz);
+    let (t, value_primes) =
+        value_polynomial(&rur, &critical, &sz, bits, sys.bezout(), MAX_PRIMES)?;
+    if prof { eprintln!("value poly {:?} ({} primes)", t0.elapsed(), value_primes); }
+    let d_prime = t.primitive_part();
+    let judging = scale_roots(&d_prime, &k).squarefree_part();
+    if prof { eprintln!("judging {:?}", t0.elapsed()); }
+    let values = if judging.degree() == critical.degree() {
+        Vec::new()
+    } else {
+        identify_values(&rur, &real_points, s, &judging)?
+    };
+    if prof { eprintln!("identify {:?}", t0.elapsed()); }
+    Ok(PoissonAnalysis {
+        direction: n,
+        generators,
+        rur,
+        extras,
+        extras_prime,
+        critical,
+        real_points,
+        values,
+        judging,
+        value_bound_bits: bits,
+        value_primes,
+    })
+}
+
+/// The polynomial whose roots are `k·r` for the roots r of `p` (primitive).
+fn scale_roots(p: &ZPoly, k: &Q) -> ZPoly {
+    // p(u/k) = Σ c_i u^i k^{-i}; times a^N (k = a/b): c_i b^i a^{N−i}
+    let (a, b) = (k.numer().clone(), k.denom().clone());
+    let nn = p.degree().unwrap_or(0);
+    let c: Vec<BigInt> = p
+        .coeffs()
+        .iter()
+        .enumerate()
+        .map(|(i, ci)| ci * num_traits::pow(b.clone(), i) * num_traits::pow(a.clone(), nn - i))
+        .collect();
+    ZPoly::new(c).primitive_part()
+}
+
+/// An enclosure of `p` on a box (exact rational interval arithmetic).
+fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
+    let pow = |iv: &(Q, Q), k: u32| -> (Q, Q) {
+        if k == 0 {
+            return (Q::one(), Q::one());
+        }
+        let (lo, hi) = iv;
+        let (pl, ph) = (num_traits::pow(lo.clone(), k as usize), num_traits::pow(hi.clone(), k as usize));
+        if k % 2 == 1 || lo >= &Q::zero() {
+            (pl.clone().min(ph.clone()), pl.max(ph))
+        } else if hi <= &Q::zero() {
+            (ph.clone().min(pl.clone()), ph.max(pl))
+        } else {
+            (Q::zero(), pl.max(ph))
+        }
+    };
+    let mul = |a: &(Q, Q), b: &(Q, Q)| -> (Q, Q) {
+        let c = [&a.0 * &b.0, &a.0 * &b.1, &a.1 * &b.0, &a.1 * &b.1];
+        let lo = c.iter().min().expect("four").clone();
+        let hi = c.iter().max().expect("four").clone();
+        (lo, hi)
+    };
+    let (mut lo, mut hi) = (Q::zero(), Q::zero());
+    for (ex, c) in p.terms() {
+        let t = mul(&mul(&pow(&bx[0], ex[X]), &pow(&bx[1], ex[Y])), &pow(&bx[2], ex[Z]));
+        let (a, b) = (&t.0 * c, &t.1 * c);
+        if c.is_negative() {
+            lo += b;
+            hi += a;
+        } else {
+            lo += a;
+            hi += b;
+        }
+    }
+    (lo, hi)
+}
+
+/// An enclosure of S at the zero of the RUR whose τ lies in `[lo, hi]`.
+fn enclose_value(rur: &PoissonRur, s: &QMPoly, lo: &Q, hi: &Q) -> Option<(Q, Q)> {
+    let den = (rur.wd.clone(), Q::one());
+    let mut bx: [(Q, Q); 3] = std::array::from_fn(|_| (Q::zero(), Q::zero()));
+    for (k, b) in bx.iter_mut().enumerate() {
+        *b = crate::roots::ratio_enclosure(&(rur.v[k].clone(), Q::one()), &den, lo, hi)?;
+    }
+    Some(box_eval(s, &bx))
+}
+
+/// S at each real critical point as a root of `judging`: the enclosure of
+/// S on a shrinking interval of τ meets exactly one isolating interval.
+fn identify_values(
+    rur: &PoissonRur,
+    points: &[RealAlg],
+    s: &QMPoly,
+    judging: &ZPoly,
+) -> Result<Vec<RealAlg>, Declined> {
+    let mut ivs = isolate_squarefree(judging);
+    let mut out = Vec::with_capacity(points.len());
+    for p in points {
+        let mut a = p.clone();
+        let mut found = None;
+        for _ in 0..200 {
+            crate::budget::check_now();
+            if let Some(x) = a.as_rational() {
+                let pt = rur
+                    .point_at(x)
+                    .ok_or_else(|| Declined("w′ vanishes at a rational root".into()))?;
+                let mut full = [Q::zero(), Q::zero(), Q::zero(), Q::zero(), Q::zero(), Q::zero()];
+                full[..3].clone_from_slice(&pt);
+                found = Some(RealAlg::rational(s.eval(&full)));
+                break;
+            }
+            let (lo, hi) = a.interval();
+            if let Some((vl, vh)) = enclose_value(rur, s, &lo, &hi) {
+                let hits: Vec<usize> = (0..ivs.len())
+                    .filter(|&j| crate::roots::meets(&ivs[j], &vl, &vh))
+                    .collect();
+                if hits.len() == 1 {
+                    found = Some(RealAlg::from_interval(judging, &ivs[hits[0]]).simplify());
+                    break;
+                }
+                for j in hits {
+                    crate::roots::bisect_once(judging, &mut ivs[j]);
+                }
+            }
+            let w = (&hi - &lo) / Q::from_integer(BigInt::from(1u32 << 16));
+            a.refine_to(&w);
+        }
+        out.push(found.ok_or_else(|| {
+            Declined("the value at a real critical point was not identified".into())
+        })?);
+    }
+    Ok(out)
+}
+
+
+#[cfg(test)]
+mod experiment {
+    use super::*;
+    use crate::number::reconstruct::CrtVec;
+    use crate::poly::parse_poly;
+
+    #[test]
+    #[ignore]
+    fn leading_resultant_structure() {
+        let text = std::fs::read_to_string("/tmp/sys/cases.jsonl").unwrap();
+        let only = std::env::var("ONLY").unwrap_or("dense6_rotated_ellipsoid".into());
+        for line in text.lines() {
+            let v: serde_json::Value = serde_json::from_str(line).unwrap();
+            if v["id"].as_str().unwrap() != only { continue; }
+            let e = parse_poly(v["ellipsoid"].as_str().unwrap()).unwrap();
+            let s = parse_poly(v["surface"].as_str().unwrap()).unwrap();
+            let ell = Ellipsoid::from_poly(&e).unwrap();
+            let an = analyze(&ell, &s).unwrap();
+            let rbar = an.rur.leading_resultant();
+            println!("direction {:?} Rbar bits {}", an.direction, rbar.bits());
+            let n = an.direction;
+            let ge = crate::geom::gradient(&e);
+            let gs = crate::geom::gradient(&s);
+            let gens = [e.to_primitive_z().0, combine(n, &ge).to_primitive_z().0, combine(n, &gs).to_primitive_z().0];
+            let mut sx = SquareSystem::new(gens).unwrap();
+            assert!(sx.choose_dehomogenisation(&[prime31(0), prime31(1)]));
+            let mut crt = CrtVec::new(1);
+            for k in 0..200 {
+                let fp = Fp::new(prime31(k));
+                if let Ok(r) = sx.leading_resultant_mod(&fp) { crt.push(&fp, &[r]); }
+            }
+            crt.flush();
+            let m = crt.modulus().clone();
+            let rx = crate::number::reconstruct::symmetric_mod(&crt.values()[0], &m);
+            println!("Rx bits {} Rx = {}", rx.bits(), rx);
+            let lcd = an.judging.lc();
+            println!("lc(D) bits {}", lcd.bits());
+            let g = num_integer::Integer::gcd(&rbar, &rx);
+            println!("gcd(R, Rx) bits {}", g.bits());
+            let mut r = rbar.clone();
+            let mut k = 0;
+            while num_integer::Integer::is_multiple_of(&r, &rx) && rx.bits() > 1 { r = &r / &rx; k += 1; }
+            println!("R = Rx^{k} * rest, rest bits {}", r.bits());
+            let rd = num_traits::pow(r.clone(), 6);
+            println!("rest^d mod lc(D) zero? {}", num_integer::Integer::is_multiple_of(&rd, &lcd));
+            let gg = num_integer::Integer::gcd(&lcd, &num_traits::pow(rbar.clone(), 6));
+            println!("gcd(lcD, R^d) bits {}", gg.bits());
+        }
+    }
+}
