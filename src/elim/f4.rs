@@ -666,6 +666,82 @@ impl ModQuotient {
     }
 }
 
+/// The multiplication by one variable on the quotient `A_p`, sparse: most
+/// products `x_v·b` of a standard monomial are standard monomials again
+/// (a unit column); only the border needs a normal form (a dense column).
+/// With the smallest variable of grevlex the border is a small fraction of
+/// the basis, so a product costs far less than `dim²`.
+#[derive(Clone, Debug)]
+pub struct SparseMult {
+    /// Per column j: the index i with `x_v·b_j = b_i`, or `u32::MAX`.
+    unit: Vec<u32>,
+    /// The dense columns `(j, coordinates of NF(x_v·b_j))`.
+    dense: Vec<(usize, Vec<u64>)>,
+}
+
+impl SparseMult {
+    /// The multiplication by the variable `v` (0, 1, 2 for x, y, z) on the
+    /// quotient with standard monomials `basis` (increasing).
+    pub fn new(gb: &ModGb, basis: &[Mono], v: usize) -> Option<SparseMult> {
+        let mut index = vec![u32::MAX; ranks_up_to(degree_bound(basis) + 1)];
+        for (i, &b) in basis.iter().enumerate() {
+            index[rank(b)] = i as u32;
+        }
+        let mut var = [0u32; 3];
+        var[v] = 1;
+        let vm = mono(var[0], var[1], var[2]);
+        let mut unit = vec![u32::MAX; basis.len()];
+        let mut border: Vec<(usize, Mono)> = Vec::new();
+        for (j, &b) in basis.iter().enumerate() {
+            let m = b + vm;
+            match index.get(rank(m)) {
+                Some(&i) if i != u32::MAX => unit[j] = i,
+                _ => border.push((j, m)),
+            }
+        }
+        let targets: Vec<ModPoly> = border.iter().map(|&(_, m)| vec![(m, 1)]).collect();
+        let nfs = gb.normal_forms(&targets);
+        let n = basis.len();
+        let mut dense = Vec::with_capacity(border.len());
+        for ((j, _), nf) in border.iter().zip(nfs) {
+            let mut col = vec![0u64; n];
+            for (m, c) in nf {
+                let i = *index.get(rank(m))?;
+                if i == u32::MAX {
+                    return None;
+                }
+                col[i as usize] = c as u64;
+            }
+            dense.push((*j, col));
+        }
+        Some(SparseMult { unit, dense })
+    }
+
+    /// `M·x` (entries in `[0, p)`).
+    pub fn apply(&self, fp: &Fp, x: &[u64]) -> Vec<u64> {
+        let mut y = vec![0u64; x.len()];
+        for (j, &i) in self.unit.iter().enumerate() {
+            if i != u32::MAX {
+                y[i as usize] = x[j];
+            }
+        }
+        for (j, col) in &self.dense {
+            let xj = x[*j];
+            if xj != 0 {
+                crate::number::modkernel::axpy_lazy(fp, &mut y, xj, col);
+            }
+        }
+        // unit entries are below p and lazy sums below p²: one reduction
+        y.iter_mut().for_each(|v| *v = fp.reduce(*v));
+        y
+    }
+}
+
+/// The largest degree of a monomial of `basis`.
+fn degree_bound(basis: &[Mono]) -> u32 {
+    basis.iter().map(|&b| degree(b)).max().unwrap_or(0)
+}
+
 /// An integer polynomial in x, y, z (slots `X, Y, Z` of an
 /// [`crate::poly::ZMPoly`]) modulo p.
 pub fn zmpoly_mod(fp: &Fp, p: &crate::poly::ZMPoly) -> ModPoly {

@@ -117,15 +117,16 @@ impl SquareSystem {
         false
     }
 
-    /// The quotient modulo p, when it has dimension `d₁d₂d₃`.
-    pub fn quotient_mod(&self, fp: &Fp) -> Result<(ModGb, ModQuotient), PrimeFail> {
+    /// The reduced Gröbner basis modulo p and its standard monomials, when
+    /// the quotient has dimension `d₁d₂d₃` (no zeros at infinity modulo p).
+    pub fn quotient_mod(&self, fp: &Fp) -> Result<(ModGb, Vec<Mono>), PrimeFail> {
         let gens: Vec<ModPoly> = self.gens.iter().map(|g| zmpoly_mod(fp, g)).collect();
         let gb = groebner_mod(fp, &gens).ok_or(PrimeFail::TooLarge)?;
-        let quo = ModQuotient::new(&gb).ok_or(PrimeFail::Dimension)?;
-        if quo.dim() != self.bezout() {
+        let basis = gb.standard_monomials().ok_or(PrimeFail::Dimension)?;
+        if basis.len() != self.bezout() {
             return Err(PrimeFail::Dimension);
         }
-        Ok((gb, quo))
+        Ok((gb, basis))
     }
 
     /// `± R̄ mod p` (the same sign at every prime), by the Poisson formula

@@ -16,6 +16,7 @@ pub mod modular;
 mod parse;
 pub mod qsqrt;
 pub(crate) mod reconstruct;
+pub(crate) mod modkernel;
 mod sign;
 
 pub use float::double_value;

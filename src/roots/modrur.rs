@@ -27,6 +27,7 @@ use crate::elim::f4::{
     ModPoly, ModQuotient, Mono, groebner_mod, mono, standard_monomials_of, zmpoly_mod,
 };
 use crate::number::Q;
+use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
 use crate::number::reconstruct::{CrtVec, Fp, prime31, rational_reconstruction, symmetric_mod};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
@@ -122,88 +123,6 @@ enum ImageFail {
     NotSeparating,
     /// A degree beyond the F4 limit.
     TooLarge,
-}
-
-/// `M v` for a matrix stored by columns.
-pub(crate) fn mat_vec(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64> {
-    let n = v.len();
-    let mut acc = vec![0u64; cols.first().map_or(0, |c| c.len())];
-    for j in 0..n {
-        if v[j] == 0 {
-            continue;
-        }
-        for (a, &m) in acc.iter_mut().zip(&cols[j]) {
-            let t = *a + m as u64 * v[j];
-            *a = if t >= fp.p2 { t - fp.p2 } else { t };
-        }
-    }
-    acc.iter().map(|&a| fp.reduce(a)).collect()
-}
-
-/// Solves `K c = r` for the columns `k` (n vectors of length n) and each
-/// right-hand side; `None` when `K` is singular.
-pub(crate) fn solve_columns(fp: &Fp, k: &[Vec<u64>], rhs: &[Vec<u64>]) -> Option<Vec<Vec<u64>>> {
-    let n = k.len();
-    let w = n + rhs.len();
-    let mut a: Vec<Vec<u64>> = (0..n)
-        .map(|i| {
-            k.iter()
-                .map(|c| c[i])
-                .chain(rhs.iter().map(|r| r[i]))
-                .collect()
-        })
-        .collect();
-    for c in 0..n {
-        crate::budget::check();
-        let piv = (c..n).find(|&i| a[i][c] != 0)?;
-        a.swap(c, piv);
-        let inv = fp.inv(a[c][c]).expect("non-zero pivot");
-        for x in a[c][c..].iter_mut() {
-            *x = fp.mul(*x, inv);
-        }
-        let prow = a[c].clone();
-        for (i, row) in a.iter_mut().enumerate() {
-            if i == c || row[c] == 0 {
-                continue;
-            }
-            let f = fp.neg(row[c]);
-            for j in c..w {
-                row[j] = fp.reduce(row[j] + f * prow[j]);
-            }
-        }
-    }
-    Some(
-        (0..rhs.len())
-            .map(|r| (0..n).map(|i| a[i][n + r]).collect())
-            .collect(),
-    )
-}
-
-/// `a·b mod m` for a monic `m = T^n − Σ c_j T^j` given by `c` (length n).
-pub(crate) fn mulmod(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
-    let n = c.len();
-    let mut r = vec![0u64; 2 * n];
-    for (i, &ai) in a.iter().enumerate() {
-        if ai == 0 {
-            continue;
-        }
-        for (j, &bj) in b.iter().enumerate() {
-            let t = r[i + j] + ai * bj;
-            r[i + j] = if t >= fp.p2 { t - fp.p2 } else { t };
-        }
-    }
-    for k in (n..2 * n).rev() {
-        let top = fp.reduce(r[k]);
-        if top == 0 {
-            continue;
-        }
-        for (j, &cj) in c.iter().enumerate() {
-            let t = r[k - n + j] + top * cj;
-            r[k - n + j] = if t >= fp.p2 { t - fp.p2 } else { t };
-        }
-    }
-    r.truncate(n);
-    r.iter().map(|&x| fp.reduce(x)).collect()
 }
 
 /// The RUR modulo p with respect to the first of `hs` that separates the

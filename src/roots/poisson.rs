@@ -19,8 +19,11 @@
 //!   `h(ξ(T))` in `F_p[T]/(f)`; its size is bounded through Landau's
 //!   inequality by Sombra's bound on `Res(u − h, f)`.
 
-use super::modrur::{Declined, mat_vec, mulmod, solve_columns};
-use crate::elim::f4::{ModPoly, ModQuotient, exps, zmpoly_mod};
+use super::modrur::Declined;
+use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
+use crate::elim::f4::{
+    ModGb, ModPoly, ModQuotient, Mono, SparseMult, exps, mono, rank, zmpoly_mod,
+};
 use crate::elim::poisson::{PrimeFail, SquareSystem, max_coeff, resultant_bound_bits};
 use crate::number::Q;
 use crate::number::reconstruct::{CrtVec, Fp, prime31, symmetric_mod};
@@ -115,6 +118,129 @@ pub(crate) fn kronecker_mod(
     Some((alg.low(), g))
 }
 
+/// The minimal polynomial (ascending, monic) of a linearly recurrent
+/// sequence over F_p by Berlekamp–Massey: the monic `m` of least degree L
+/// with `Σ_i m_i a_{k+i} = 0` for all `k + L < a.len()`.
+fn berlekamp_massey(fp: &Fp, a: &[u64]) -> Vec<u64> {
+    // connection polynomial C(x) = 1 + c₁x + … with a_k + Σ c_i a_{k−i} = 0
+    let mut c: Vec<u64> = vec![1];
+    let mut b: Vec<u64> = vec![1];
+    let (mut l, mut m, mut bd) = (0usize, 1usize, 1u64);
+    for k in 0..a.len() {
+        crate::budget::check();
+        let mut d = a[k];
+        for i in 1..=l.min(c.len() - 1) {
+            d = fp.add(d, fp.mul(c[i], a[k - i]));
+        }
+        if d == 0 {
+            m += 1;
+            continue;
+        }
+        let coef = fp.mul(d, fp.inv(bd).expect("non-zero discrepancy"));
+        let old = c.clone();
+        if c.len() < b.len() + m {
+            c.resize(b.len() + m, 0);
+        }
+        for (i, &bi) in b.iter().enumerate() {
+            c[i + m] = fp.sub(c[i + m], fp.mul(coef, bi));
+        }
+        if 2 * l <= k {
+            l = k + 1 - l;
+            b = old;
+            bd = d;
+            m = 1;
+        } else {
+            m += 1;
+        }
+    }
+    c.resize(l + 1, 0);
+    // m(T) = T^L·C(1/T): ascending coefficients are C reversed
+    c.reverse();
+    c
+}
+
+/// The coordinates of the normal forms of x, y, z on `basis`.
+fn variable_coords(gb: &ModGb, basis: &[Mono]) -> Option<[Vec<u64>; 3]> {
+    let targets: Vec<ModPoly> = [mono(1, 0, 0), mono(0, 1, 0), mono(0, 0, 1)]
+        .iter()
+        .map(|&m| vec![(m, 1)])
+        .collect();
+    let nfs = gb.normal_forms(&targets);
+    let n = basis.len();
+    let mut out: [Vec<u64>; 3] = std::array::from_fn(|_| vec![0u64; n]);
+    for (v, nf) in nfs.iter().enumerate() {
+        for &(m, c) in nf {
+            let i = basis.binary_search_by_key(&rank(m), |&b| rank(b)).ok()?;
+            out[v][i] = c as u64;
+        }
+    }
+    Some(out)
+}
+
+/// [`kronecker_mod`] for ℓ = the variable `var`, from the sparse
+/// multiplication matrix (Wiedemann / sparse FGLM): with φ the coefficient
+/// of 1, the sequence `φ(ℓᵏ)` (k < 2n) gives the minimal polynomial f by
+/// Berlekamp–Massey, and `φ(v·ℓᵏ)` (k < n) the numerators
+/// `N_v = [f(T)·Σ φ(v ℓᵏ) T^{−k−1}]₊ = Σ_ξ c_ξ v(ξ) f(T)/(T − ℓ(ξ))`, so
+/// that `G_v = v·f′ = N_v·f′/N_1 mod f` (φ = Σ c_ξ ev_ξ with every c_ξ ≠ 0
+/// exactly when the sequence has degree n).
+pub(crate) fn kronecker_sparse(
+    fp: &Fp,
+    gb: &ModGb,
+    basis: &[Mono],
+    var: usize,
+) -> Option<(Vec<u64>, [Vec<u64>; 3])> {
+    let n = basis.len();
+    let mult = SparseMult::new(gb, basis, var)?;
+    let coords = variable_coords(gb, basis)?;
+    let mut v = vec![0u64; n];
+    v[0] = 1;
+    let mut a = Vec::with_capacity(2 * n);
+    for k in 0..2 * n {
+        a.push(v[0]);
+        if k + 1 < 2 * n {
+            crate::budget::check();
+            v = mult.apply(fp, &v);
+        }
+    }
+    let f = berlekamp_massey(fp, &a);
+    if f.len() != n + 1 {
+        return None;
+    }
+    let c: Vec<u64> = f[..n].iter().map(|&x| fp.neg(x)).collect();
+    let alg = ModAlgebra::from_c(*fp, c);
+    if !alg.is_squarefree() {
+        return None;
+    }
+    // N[i] = Σ_{j=i+1}^{n} f_j s_{j−i−1}
+    let numer = |s: &[u64]| -> Vec<u64> {
+        (0..n)
+            .map(|i| crate::number::modkernel::dot(fp, &f[i + 1..=n], &s[..n - i]))
+            .collect()
+    };
+    let n1 = numer(&a[..n]);
+    let inv1 = alg.inv(&n1)?;
+    let fd = alg.derivative();
+    let scale = alg.mul(&fd, &inv1);
+    let g: [Vec<u64>; 3] = std::array::from_fn(|u| {
+        let s: Vec<u64> = if u == var {
+            a[1..=n].to_vec()
+        } else {
+            let mut w = coords[u].clone();
+            let mut s = Vec::with_capacity(n);
+            for k in 0..n {
+                s.push(w[0]);
+                if k + 1 < n {
+                    w = mult.apply(fp, &w);
+                }
+            }
+            s
+        };
+        alg.mul(&numer(&s), &scale)
+    });
+    Some((alg.low(), g))
+}
+
 /// Arithmetic in `F_p[T]/(f)` for a monic `f` of degree n ≥ 1.
 pub(crate) struct ModAlgebra {
     fp: Fp,
@@ -182,23 +308,43 @@ impl ModAlgebra {
     /// The inverse of `a` (`None` when `gcd(a, f) ≠ 1`), by extended Euclid.
     pub(crate) fn inv(&self, a: &[u64]) -> Option<Vec<u64>> {
         let fp = &self.fp;
-        // invariant: s·a ≡ r (mod f)
-        let (mut r0, mut r1) = (self.full(), trimmed(a));
-        let (mut s0, mut s1): (Vec<u64>, Vec<u64>) = (vec![], vec![1]);
+        let n = self.n();
+        // Euclid one leading term at a time, in place; invariant
+        // sᵢ·a ≡ rᵢ (mod f), the cofactors kept to length n
+        let mut r0 = self.full();
+        let mut r1 = trimmed(a);
+        let mut s0 = vec![0u64; n + 1];
+        let mut s1 = vec![0u64; n + 1];
+        s1[0] = 1;
         while !r1.is_empty() {
-            let (q, r) = divrem_mod(fp, &r0, &r1);
-            let s2 = poly_sub_mod(fp, &s0, &poly_mul_mod(fp, &q, &s1));
-            r0 = std::mem::replace(&mut r1, r);
-            s0 = std::mem::replace(&mut s1, s2);
+            let inv = fp.inv(*r1.last().expect("non-empty")).expect("trimmed");
+            while r0.len() >= r1.len() {
+                let k = r0.len() - r1.len();
+                let t = fp.mul(*r0.last().expect("non-empty"), inv);
+                for (x, &y) in r0[k..].iter_mut().zip(&r1) {
+                    *x = fp.sub(*x, fp.mul(t, y));
+                }
+                // s0 −= t·T^k·s1 (degrees stay below n + 1)
+                for (x, &y) in s0[k..].iter_mut().zip(&s1) {
+                    *x = fp.sub(*x, fp.mul(t, y));
+                }
+                while r0.last() == Some(&0) {
+                    r0.pop();
+                }
+                if r0.is_empty() {
+                    break;
+                }
+            }
+            std::mem::swap(&mut r0, &mut r1);
+            std::mem::swap(&mut s0, &mut s1);
         }
+        // r0 = gcd(f, a), s0·a ≡ r0
         if r0.len() != 1 {
             return None;
         }
         let k = fp.inv(r0[0])?;
-        let mut out: Vec<u64> = s0.iter().map(|&x| fp.mul(x, k)).collect();
-        out.resize(self.n(), 0);
-        // s0 has degree < n already (Euclid's cofactor bound)
-        out.truncate(self.n());
+        let mut out: Vec<u64> = s0[..n].iter().map(|&x| fp.mul(x, k)).collect();
+        out.truncate(n);
         Some(out)
     }
 
@@ -212,16 +358,23 @@ impl ModAlgebra {
             return p;
         }
         p[0] = n as u64 % fp.p;
+        // p_1 … p_{m−1}, for the dot product with a_{n−k} … a_{n−1}
+        let mut rev: Vec<u64> = Vec::with_capacity(count);
         for m in 1..count {
             // p_m = −(m·a_{n−m} [m ≤ n] + Σ_{i=1}^{min(m−1, n)} a_{n−i} p_{m−i})
-            let mut acc = 0u64;
-            if m <= n {
-                acc = fp.mul(m as u64 % fp.p, a[n - m]);
-            }
-            for i in 1..=(m - 1).min(n) {
-                acc = fp.add(acc, fp.mul(a[n - i], p[m - i]));
+            let mut acc = if m <= n {
+                fp.mul(m as u64 % fp.p, a[n - m])
+            } else {
+                0
+            };
+            let k = (m - 1).min(n);
+            if k > 0 {
+                // p_{m−1}, p_{m−2}, …, p_{m−k} against a_{n−1}, …, a_{n−k}
+                let ps = &rev[rev.len() - k..];
+                acc = fp.add(acc, crate::number::modkernel::dot(fp, ps, &a[n - k..n]));
             }
             p[m] = fp.neg(acc);
+            rev.push(p[m]);
         }
         p
     }
@@ -231,11 +384,12 @@ impl ModAlgebra {
     /// giant steps over the Hankel matrix of traces, then Newton's
     /// identities (p > n).
     pub(crate) fn charpoly(&self, s: &[u64]) -> Vec<u64> {
+        use crate::number::modkernel::{axpy_lazy, dot};
         let fp = &self.fp;
         let n = self.n();
         let t = self.traces(2 * n - 1);
         let r = ((n + 1) as f64).sqrt().ceil() as usize;
-        // baby steps s^0 … s^(r−1) and H·s^i
+        // baby steps s^0 … s^(r−1) and H·s^i (H_ij = Tr(T^(i+j)))
         let mut one = vec![0u64; n];
         one[0] = 1;
         let mut baby: Vec<Vec<u64>> = vec![one];
@@ -247,16 +401,13 @@ impl ModAlgebra {
         let hank: Vec<Vec<u64>> = baby
             .iter()
             .map(|b| {
-                (0..n)
-                    .map(|i| {
-                        let mut acc = 0u64;
-                        for (j, &bj) in b.iter().enumerate() {
-                            let x = acc + bj * t[i + j];
-                            acc = if x >= fp.p2 { x - fp.p2 } else { x };
-                        }
-                        fp.reduce(acc)
-                    })
-                    .collect()
+                let mut acc = vec![0u64; n];
+                for (j, &bj) in b.iter().enumerate() {
+                    if bj != 0 {
+                        axpy_lazy(fp, &mut acc, bj, &t[j..j + n]);
+                    }
+                }
+                acc.iter().map(|&x| fp.reduce(x)).collect()
             })
             .collect();
         let giant = self.mul(&baby[r - 1], s);
@@ -271,12 +422,7 @@ impl ModAlgebra {
                 if k > n {
                     break;
                 }
-                let mut acc = 0u64;
-                for (&gj, &hj) in g.iter().zip(h) {
-                    let x = acc + gj * hj;
-                    acc = if x >= fp.p2 { x - fp.p2 } else { x };
-                }
-                ps[k] = fp.reduce(acc);
+                ps[k] = dot(fp, &g, h);
             }
             k0 += r;
             if k0 <= n {
@@ -286,11 +432,10 @@ impl ModAlgebra {
         // Newton: χ = Σ e_k u^(n−k), k·e_k = −Σ_{i=1}^k P_i e_{k−i}
         let mut e = vec![0u64; n + 1];
         e[0] = 1;
+        // prev = P_n, …, P_1: Σ P_i e_{k−i} = e_0 … e_{k−1} against P_k … P_1
+        let prev: Vec<u64> = ps[1..].iter().rev().copied().collect();
         for k in 1..=n {
-            let mut acc = 0u64;
-            for i in 1..=k {
-                acc = fp.add(acc, fp.mul(ps[i], e[k - i]));
-            }
+            let acc = dot(fp, &e[..k], &prev[n - k..]);
             let inv = fp.inv(k as u64 % fp.p).expect("p > n");
             e[k] = fp.neg(fp.mul(acc, inv));
         }
@@ -319,11 +464,9 @@ impl ModAlgebra {
         let inner = |ts: &[([u32; 3], u64)]| -> Vec<u64> {
             let mut acc = vec![0u64; n];
             for (e, c) in ts {
-                for (a, &z) in acc.iter_mut().zip(&zp[e[2] as usize]) {
-                    *a = fp.reduce(*a + c * z);
-                }
+                crate::number::modkernel::axpy_lazy(fp, &mut acc, *c, &zp[e[2] as usize]);
             }
-            acc
+            acc.iter().map(|&x| fp.reduce(x)).collect()
         };
         // Horner in x over a, each coefficient a Horner in y over b
         let horner = |groups: Vec<(u32, Vec<u64>)>, var: &[u64]| -> Vec<u64> {
@@ -402,29 +545,6 @@ fn divrem_mod(fp: &Fp, a: &[u64], b: &[u64]) -> (Vec<u64>, Vec<u64>) {
     (trimmed(&q), r)
 }
 
-fn poly_mul_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
-    if a.is_empty() || b.is_empty() {
-        return vec![];
-    }
-    let mut r = vec![0u64; a.len() + b.len() - 1];
-    for (i, &x) in a.iter().enumerate() {
-        for (j, &y) in b.iter().enumerate() {
-            r[i + j] = fp.reduce(r[i + j] + x * y);
-        }
-    }
-    trimmed(&r)
-}
-
-fn poly_sub_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
-    let mut r = vec![0u64; a.len().max(b.len())];
-    for (i, x) in r.iter_mut().enumerate() {
-        let ai = a.get(i).copied().unwrap_or(0);
-        let bi = b.get(i).copied().unwrap_or(0);
-        *x = fp.sub(ai, bi);
-    }
-    trimmed(&r)
-}
-
 /// The gcd modulo p (not normalised; ascending, trimmed).
 pub(crate) fn poly_gcd_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
     let (mut a, mut b) = (trimmed(a), trimmed(b));
@@ -438,6 +558,13 @@ pub(crate) fn poly_gcd_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
 /// Residues of an integer polynomial (ascending).
 pub(crate) fn zpoly_mod(fp: &Fp, p: &ZPoly) -> Vec<u64> {
     p.coeffs().iter().map(|c| fp.reduce_big(c)).collect()
+}
+
+/// The linear form of the variable `v`.
+fn unit_form(v: usize) -> [i64; 3] {
+    let mut e = [0i64; 3];
+    e[v] = 1;
+    e
 }
 
 /// The exact RUR of the square system with the first linear form of
@@ -463,16 +590,11 @@ pub fn solve_square(
     let mut bound_bits = 0u64;
     let mut squarefree_prime = 0u64;
     let (mut fails, mut dim_fails) = (0usize, 0usize);
-    let prof = std::env::var("QS_PROFILE").is_ok();
-    let mut times = [std::time::Duration::ZERO; 4];
     for k in 0..max_primes {
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
-        let t0 = std::time::Instant::now();
-        let q = sys.quotient_mod(&fp);
-        times[0] += t0.elapsed();
-        let quo = match q {
-            Ok((_, q)) => q,
+        let (gb, basis) = match sys.quotient_mod(&fp) {
+            Ok(q) => q,
             Err(PrimeFail::TooLarge) => return decline("degree too large for the modular route"),
             Err(_) => {
                 dim_fails += 1;
@@ -484,23 +606,26 @@ pub fn solve_square(
                 continue;
             }
         };
-        let t0 = std::time::Instant::now();
-        let r = sys.leading_resultant_mod(&fp);
-        times[1] += t0.elapsed();
-        let Ok(r) = r else {
+        let Ok(r) = sys.leading_resultant_mod(&fp) else {
             fails += 1;
             continue;
         };
-        let t0 = std::time::Instant::now();
         let candidates: Vec<usize> = match chosen {
             Some(i) => vec![i],
             None => (0..forms.len()).collect(),
         };
+        // a single variable as ℓ: the sparse route; otherwise the dense
+        // multiplication matrices (built once for this prime)
+        let mut quo: Option<Option<ModQuotient>> = None;
         let got = candidates.into_iter().find_map(|i| {
-            let ell = forms[i].map(|x| fp.reduce_big(&BigInt::from(x)));
-            kronecker_mod(&fp, &quo, ell).map(|img| (i, img))
+            let ell = forms[i];
+            if let Some(v) = (0..3).find(|&v| ell == unit_form(v)) {
+                return kronecker_sparse(&fp, &gb, &basis, v).map(|img| (i, img));
+            }
+            let q = quo.get_or_insert_with(|| ModQuotient::new(&gb)).as_ref()?;
+            let ellp = ell.map(|x| fp.reduce_big(&BigInt::from(x)));
+            kronecker_mod(&fp, q, ellp).map(|img| (i, img))
         });
-        times[2] += t0.elapsed();
         let Some((i, (f_low, g))) = got else {
             fails += 1;
             if chosen.is_none() && fails >= 3 {
@@ -532,7 +657,6 @@ pub fn solve_square(
         crt.push(&fp, &res);
         crate::budget::check_size("the Poisson RUR", 4 * n + 1, crt.modulus_bits());
         if crt.modulus_bits() > bound_bits + 1 {
-            if prof { eprintln!("stage 1: quotient {:?} leading {:?} kronecker {:?}", times[0], times[1], times[2]); }
             crt.flush();
             let m = crt.modulus().clone();
             let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();
@@ -558,14 +682,29 @@ pub fn solve_square(
     decline("the prime limit was reached")
 }
 
+/// What [`value_polynomial`] computes: the values of `h` (an integer
+/// polynomial of degree `degree`) at the zeros, read from a polynomial
+/// `eval` with `h(ξ) = scale · eval(ξ)` at every zero ξ of the factor (e.g.
+/// `eval` = h reduced modulo an equation of the system, which is cheaper
+/// to evaluate).
+pub struct ValueMap<'a> {
+    /// The degree of h (the power of `R̄` in the result).
+    pub degree: u32,
+    /// The polynomial evaluated modulo p.
+    pub eval: &'a ZMPoly,
+    /// `h / eval` at the zeros.
+    pub scale: &'a Q,
+}
+
 /// `R̄^e · ∏_{f(τ)=0} (u − h(ξ(τ)))` exactly, for a square-free factor `f`
-/// of `rur.w` and `h` of degree `e`, where `resultant_bits` bounds the
-/// coefficients of `Res(u − h, system)` (see [`value_bound_bits`]).  Its
-/// primitive part is the polynomial of the values of h at the zeros of f.
+/// of `rur.w` and `h` of degree `e` (given by `map`), where
+/// `resultant_bits` bounds the coefficients of `Res(u − h, system)` (see
+/// [`value_bound_bits`]).  Its primitive part is the polynomial of the
+/// values of h at the zeros of f.  Also returns the number of primes.
 pub fn value_polynomial(
     rur: &PoissonRur,
     f: &ZPoly,
-    h: &ZMPoly,
+    map: &ValueMap,
     resultant_bits: u64,
     bezout: usize,
     max_primes: usize,
@@ -574,7 +713,6 @@ pub fn value_polynomial(
     if nf == 0 {
         return Ok((ZPoly::constant(BigInt::one()), 0));
     }
-    let e = h.total_degree().unwrap_or(0);
     // ‖R̄^e·A‖∞ ≤ 2^deg A · √(deg Q_h + 1) · 2^resultant_bits (Landau)
     let sqrt_bits = (((bezout + 1) as f64).log2() / 2.0).ceil() as u64 + 1;
     let target = resultant_bits + nf as u64 + sqrt_bits;
@@ -584,35 +722,38 @@ pub fn value_polynomial(
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
         let fm = zpoly_mod(&fp, f);
-        if fm.last() == Some(&0) {
-            continue;
-        }
         let r = fp.reduce_big(&rbar);
-        if r == 0 {
+        let (sn, sd) = (fp.reduce_big(map.scale.numer()), fp.reduce_big(map.scale.denom()));
+        if fm.last() == Some(&0) || r == 0 || sn == 0 || sd == 0 {
             continue;
         }
         let Some(alg) = ModAlgebra::from_poly(fp, &fm) else {
             continue;
         };
         let reduce = |p: &ZPoly| -> Vec<u64> {
-            let mut a = zpoly_mod(&fp, p);
-            let (_, rem) = divrem_mod(&fp, &a, &fm);
-            a = rem;
-            a.resize(nf, 0);
-            a
+            let a = zpoly_mod(&fp, p);
+            let (_, mut rem) = divrem_mod(&fp, &a, &fm);
+            rem.resize(nf, 0);
+            rem
         };
         let Some(dinv) = alg.inv(&reduce(&rur.wd)) else {
             continue;
         };
         let xs: Vec<Vec<u64>> = rur.v.iter().map(|v| alg.mul(&reduce(v), &dinv)).collect();
-        let hp = zmpoly_mod(&fp, h);
-        let s = alg.eval(&hp, [&xs[0], &xs[1], &xs[2]]);
+        let s = alg.eval(&zmpoly_mod(&fp, map.eval), [&xs[0], &xs[1], &xs[2]]);
         let chi = alg.charpoly(&s);
+        // ∏(u − σ·s_j) = Σ σ^(N−i) χ_i u^i, times R̄^e
+        let sigma = fp.mul(sn, fp.inv(sd).expect("non-zero"));
         let mut re = 1u64;
-        for _ in 0..e {
+        for _ in 0..map.degree {
             re = fp.mul(re, r);
         }
-        let res: Vec<u64> = chi.iter().map(|&c| fp.mul(c, re)).collect();
+        let mut res = vec![0u64; nf + 1];
+        let mut pw = re;
+        for i in (0..=nf).rev() {
+            res[i] = fp.mul(chi[i], pw);
+            pw = fp.mul(pw, sigma);
+        }
         crt.push(&fp, &res);
         crate::budget::check_size("the value polynomial", nf + 1, crt.modulus_bits());
         if crt.modulus_bits() > target + 1 {

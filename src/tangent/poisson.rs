@@ -32,8 +32,8 @@ use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
 use crate::roots::modrur::Declined;
 use crate::roots::poisson::{
-    ModAlgebra, PoissonRur, poly_gcd_mod, solve_square, value_bound_bits, value_polynomial,
-    zpoly_mod,
+    ModAlgebra, PoissonRur, ValueMap, poly_gcd_mod, solve_square, value_bound_bits,
+    value_polynomial, zpoly_mod,
 };
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
@@ -42,8 +42,17 @@ use num_traits::{One, Signed, Zero};
 /// The directions `n` tried in turn (the first gives the sparsest system).
 pub const DIRECTIONS: [[i64; 3]; 4] = [[0, 0, 1], [1, 2, 3], [3, -1, 2], [-2, 5, 1]];
 
-/// The separating linear forms tried in turn.
-pub const FORMS: [[i64; 3]; 3] = [[1, 3, -2], [2, -1, 5], [1, 7, 3]];
+/// The separating linear forms tried in turn: single variables first
+/// (their multiplication matrices are sparse), z first (the smallest in
+/// grevlex: the fewest dense columns).
+pub const FORMS: [[i64; 3]; 6] = [
+    [0, 0, 1],
+    [0, 1, 0],
+    [1, 0, 0],
+    [1, 3, -2],
+    [2, -1, 5],
+    [1, 7, 3],
+];
 
 /// The largest number of primes of one lifting.
 pub const MAX_PRIMES: usize = 20_000;
@@ -234,7 +243,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<PoissonAnalysis, Declined> {
                 continue;
             }
         };
-        match finish(s, n, &m, &grad_e, gens, &sys, rur) {
+        match finish(&e.poly, s, n, &m, &grad_e, gens, &sys, rur) {
             Ok(an) => return Ok(an),
             Err(d) => last = d,
         }
@@ -310,6 +319,7 @@ fn poly_rem(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
 
 #[allow(clippy::too_many_arguments)]
 fn finish(
+    e: &QMPoly,
     s: &QMPoly,
     n: [i64; 3],
     m: &[QMPoly; 3],
@@ -347,8 +357,16 @@ fn finish(
     // D(u) for the integer S′ (S = k·S′), then scaled to S
     let (sz, k) = s.to_primitive_z();
     let bits = value_bound_bits(sys, &sz);
+    // S is evaluated reduced modulo E (degree ≤ 1 in x: fewer products),
+    // which it equals at every critical point
+    let (sr, kr) = reduce_mod_ellipsoid(s, e).to_primitive_z();
+    let map = ValueMap {
+        degree: sz.total_degree().unwrap_or(0),
+        eval: &sr,
+        scale: &(&kr / &k),
+    };
     let (t, value_primes) =
-        value_polynomial(&rur, &critical, &sz, bits, sys.bezout(), MAX_PRIMES)?;
+        value_polynomial(&rur, &critical, &map, bits, sys.bezout(), MAX_PRIMES)?;
     if prof { eprintln!("value poly {:?} ({} primes)", t0.elapsed(), value_primes); }
     let d_prime = t.primitive_part();
     let judging = scale_roots(&d_prime, &k).squarefree_part();
@@ -374,6 +392,40 @@ fn finish(
     })
 }
 
+/// The remainder of `s` by `e` as polynomials in x (`e` of degree 2 in x
+/// with a constant leading coefficient, as an ellipsoid's): degree ≤ 1 in
+/// x, total degree ≤ deg s, equal to `s` wherever `e = 0`.
+fn reduce_mod_ellipsoid(s: &QMPoly, e: &QMPoly) -> QMPoly {
+    let e2 = e
+        .terms()
+        .iter()
+        .find(|(ex, _)| ex[X] == 2)
+        .map(|(_, c)| c.clone())
+        .expect("an ellipsoid has an x² term");
+    // e = e2·x² + rest: x² ≡ −rest/e2
+    let rest = &(e - &QMPoly::monomial(e2.clone(), {
+        let mut x2 = [0u32; crate::poly::mpoly::NVARS];
+        x2[X] = 2;
+        x2
+    }))
+    .scale(&(-Q::one() / &e2));
+    let mut r = s.clone();
+    loop {
+        let Some(top) = r.terms().iter().filter(|(ex, _)| ex[X] >= 2).max_by_key(|(ex, _)| ex[X]).cloned() else {
+            return r;
+        };
+        // replace every term with x^a, a ≥ 2, of the highest a at once
+        let a = top.0[X];
+        let (hi, lo): (Vec<_>, Vec<_>) = r.terms().iter().cloned().partition(|(ex, _)| ex[X] == a);
+        let mut hi_poly = QMPoly::from_terms(hi.into_iter().map(|(mut ex, c)| {
+            ex[X] -= 2;
+            (ex, c)
+        }));
+        hi_poly = &hi_poly * rest;
+        r = &QMPoly::from_terms(lo) + &hi_poly;
+    }
+}
+
 /// The polynomial whose roots are `k·r` for the roots r of `p` (primitive).
 fn scale_roots(p: &ZPoly, k: &Q) -> ZPoly {
     // p(u/k) = Σ c_i u^i k^{-i}; times a^N (k = a/b): c_i b^i a^{N−i}
@@ -388,41 +440,86 @@ fn scale_roots(p: &ZPoly, k: &Q) -> ZPoly {
     ZPoly::new(c).primitive_part()
 }
 
-/// An enclosure of `p` on a box (exact rational interval arithmetic).
-fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
-    let pow = |iv: &(Q, Q), k: u32| -> (Q, Q) {
-        if k == 0 {
-            return (Q::one(), Q::one());
-        }
-        let (lo, hi) = iv;
-        let (pl, ph) = (num_traits::pow(lo.clone(), k as usize), num_traits::pow(hi.clone(), k as usize));
-        if k % 2 == 1 || lo >= &Q::zero() {
-            (pl.clone().min(ph.clone()), pl.max(ph))
-        } else if hi <= &Q::zero() {
-            (ph.clone().min(pl.clone()), ph.max(pl))
-        } else {
-            (Q::zero(), pl.max(ph))
-        }
-    };
-    let mul = |a: &(Q, Q), b: &(Q, Q)| -> (Q, Q) {
-        let c = [&a.0 * &b.0, &a.0 * &b.1, &a.1 * &b.0, &a.1 * &b.1];
+/// An interval `[lo, hi]·2^-k` with integer ends (fixed point: products
+/// are rounded outward back to `2^-k`, so no gcd is ever computed).
+#[derive(Clone, Debug)]
+struct FixIv {
+    lo: BigInt,
+    hi: BigInt,
+}
+
+impl FixIv {
+    fn mul(&self, o: &FixIv, k: usize) -> FixIv {
+        let c = [&self.lo * &o.lo, &self.lo * &o.hi, &self.hi * &o.lo, &self.hi * &o.hi];
         let lo = c.iter().min().expect("four").clone();
         let hi = c.iter().max().expect("four").clone();
-        (lo, hi)
-    };
-    let (mut lo, mut hi) = (Q::zero(), Q::zero());
-    for (ex, c) in p.terms() {
-        let t = mul(&mul(&pow(&bx[0], ex[X]), &pow(&bx[1], ex[Y])), &pow(&bx[2], ex[Z]));
-        let (a, b) = (&t.0 * c, &t.1 * c);
-        if c.is_negative() {
-            lo += b;
-            hi += a;
-        } else {
-            lo += a;
-            hi += b;
+        // floor(lo / 2^k) and ceil(hi / 2^k); `>>` rounds towards −∞
+        FixIv {
+            lo: lo >> k,
+            hi: -((-hi) >> k),
         }
     }
-    (lo, hi)
+}
+
+/// An enclosure of `p` on a box with dyadic ends, in fixed-point interval
+/// arithmetic at the finest scale `2^-k` of the ends (exact conversion,
+/// outward rounding of each product).
+fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
+    let (pz, scale) = p.to_primitive_z();
+    let k = bx
+        .iter()
+        .flat_map(|(a, b)| [a.denom().bits(), b.denom().bits()])
+        .max()
+        .unwrap_or(1) as usize;
+    // ⌊q·2^k⌋ and ⌈q·2^k⌉ (exact for the dyadic ends this is used with)
+    let fix_lo = |q: &Q| -> BigInt { num_integer::Integer::div_floor(&(q.numer() << k), q.denom()) };
+    let fix_hi = |q: &Q| -> BigInt { -num_integer::Integer::div_floor(&(-q.numer() << k), q.denom()) };
+    let d = pz.total_degree().unwrap_or(0) as usize;
+    let one = FixIv { lo: BigInt::one() << k, hi: BigInt::one() << k };
+    let pows: Vec<Vec<FixIv>> = bx
+        .iter()
+        .map(|(a, b)| {
+            let base = FixIv { lo: fix_lo(a), hi: fix_hi(b) };
+            let mut v = vec![one.clone()];
+            for e in 1..=d {
+                let next = if e % 2 == 0 {
+                    // an even power of an interval around 0 starts at 0
+                    let h = &v[e / 2];
+                    let sq = h.mul(h, k);
+                    if h.lo.is_negative() && h.hi.is_positive() {
+                        FixIv { lo: BigInt::zero(), hi: sq.hi }
+                    } else if v[1].lo.is_negative() && v[1].hi.is_positive() {
+                        FixIv { lo: BigInt::zero().max(sq.lo), hi: sq.hi }
+                    } else {
+                        sq
+                    }
+                } else {
+                    v[e - 1].mul(&base, k)
+                };
+                v.push(next);
+            }
+            if v.len() > 1 {
+                v[1] = base;
+            }
+            v
+        })
+        .collect();
+    let (mut lo, mut hi) = (BigInt::zero(), BigInt::zero());
+    for (ex, c) in pz.terms() {
+        let t = pows[0][ex[X] as usize]
+            .mul(&pows[1][ex[Y] as usize], k)
+            .mul(&pows[2][ex[Z] as usize], k);
+        if c.is_negative() {
+            lo += c * &t.hi;
+            hi += c * &t.lo;
+        } else {
+            lo += c * &t.lo;
+            hi += c * &t.hi;
+        }
+    }
+    let den = BigInt::one() << k;
+    let (a, b) = (Q::new(lo, den.clone()) * &scale, Q::new(hi, den) * &scale);
+    if scale.is_negative() { (b, a) } else { (a, b) }
 }
 
 /// An enclosure of S at the zero of the RUR whose τ lies in `[lo, hi]`.

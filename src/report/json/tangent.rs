@@ -231,18 +231,43 @@ fn method_json(m: &Analysis) -> Value {
     }
 }
 
+/// [`crate::report::alg_json`] with the strings of the defining polynomials
+/// cached: the critical values, min and max usually share D(u), whose
+/// decimal digits are written once.
+struct AlgWriter {
+    cache: Vec<(ZPoly, String)>,
+}
+
+impl AlgWriter {
+    fn json(&mut self, a: &RealAlg) -> Value {
+        let p = a.poly();
+        let poly = match self.cache.iter().find(|(q, _)| *q == p) {
+            Some((_, s)) => s.clone(),
+            None => {
+                let s = MPoly::from_univariate(&p, U).to_string_canonical();
+                self.cache.push((p, s.clone()));
+                s
+            }
+        };
+        let (lo, hi) = a.interval();
+        json!({
+            "poly": poly,
+            "interval": [crate::number::fmt_q(&lo), crate::number::fmt_q(&hi)],
+            "approx": a.approx(20),
+        })
+    }
+}
+
 /// `quadsect tangent --json`.
 pub fn tangent_json(r: &TangentReport) -> Value {
     let c = &r.certificate;
+    let mut algs = AlgWriter { cache: Vec::new() };
     let mut cert = method_json(&c.method);
     if let Value::Object(m) = &mut cert {
         m.insert(
             "critical_values".into(),
             Value::Array(
-                c.critical_values
-                    .iter()
-                    .map(crate::report::alg_json)
-                    .collect(),
+                c.critical_values.iter().map(|v| algs.json(v)).collect(),
             ),
         );
         m.insert(
@@ -250,7 +275,7 @@ pub fn tangent_json(r: &TangentReport) -> Value {
             Value::Array(
                 c.nonreal_point_values
                     .iter()
-                    .map(crate::report::alg_json)
+                    .map(|v| algs.json(v))
                     .collect(),
             ),
         );
@@ -263,8 +288,8 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         "touching": r.touching,
         "side": side_str(r.side),
         "containment": r.containment.map(|c| c.as_str()),
-        "min": r.min.as_ref().map(crate::report::alg_json),
-        "max": r.max.as_ref().map(crate::report::alg_json),
+        "min": r.min.as_ref().map(|v| algs.json(v)),
+        "max": r.max.as_ref().map(|v| algs.json(v)),
         "judging_poly": upoly_string(&r.judging_poly, U),
         "certificate": cert,
         "verdict": r.verdict.as_str(),

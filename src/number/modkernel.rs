@@ -1,0 +1,289 @@
+//! Vector kernels modulo a word prime `p < 2^31` (see [`Fp`]): the
+//! product in `F_p[T]/(m)`, the matrix–vector product and the
+//! Gauss–Jordan solve of the multi-modular routes.
+//!
+//! Key idea: every inner loop has the shape `x ← x + a·b` with `a, b < p`
+//! (so `a·b < 2^62`) and `x` kept below `p²` by one conditional
+//! subtraction, the reduction modulo p done once per output.  Written on
+//! 32-bit factors, such loops vectorise (`vpmuludq` multiplies four 32-bit
+//! pairs into 64-bit lanes); each kernel is compiled twice, for the base
+//! target and for AVX2, and the AVX2 copy is chosen at run time when the
+//! processor has it.  The results are identical (exact arithmetic).
+
+use super::reconstruct::Fp;
+
+/// Defines `pub fn $name` that runs an AVX2-compiled copy of `$generic`
+/// when the processor supports it, the generic code otherwise.
+macro_rules! dispatch {
+    ($(#[$m:meta])* pub fn $name:ident / $avx:ident / $generic:ident ($($arg:ident : $ty:ty),*) -> $ret:ty) => {
+        $(#[$m])*
+        pub fn $name($($arg: $ty),*) -> $ret {
+            #[cfg(target_arch = "x86_64")]
+            {
+                if std::is_x86_feature_detected!("avx2") {
+                    // SAFETY: the processor supports AVX2 (checked above);
+                    // the function only enables code generation for it.
+                    return unsafe { $avx($($arg),*) };
+                }
+            }
+            $generic($($arg),*)
+        }
+
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2")]
+        unsafe fn $avx($($arg: $ty),*) -> $ret {
+            $generic($($arg),*)
+        }
+    };
+}
+
+dispatch! {
+    /// `a·b mod m` in `F_p[T]` for a monic `m = T^n − Σ c_j T^j` (`c` of
+    /// length n; `a`, `b` of length ≤ n, entries in `[0, p)`): the product
+    /// by the schoolbook rule, then the top half folded down from the top.
+    pub fn mulmod / mulmod_avx2 / mulmod_generic(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64>
+}
+
+#[inline(always)]
+fn mulmod_generic(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
+    let n = c.len();
+    let p2 = fp.p2;
+    let b32: Vec<u32> = b.iter().map(|&x| x as u32).collect();
+    let c32: Vec<u32> = c.iter().map(|&x| x as u32).collect();
+    let mut r = vec![0u64; 2 * n];
+    for (i, &ai) in a.iter().enumerate() {
+        let ai = ai as u32 as u64;
+        if ai == 0 {
+            continue;
+        }
+        let row = &mut r[i..i + b32.len()];
+        for (x, &bj) in row.iter_mut().zip(&b32) {
+            let t = *x + ai * bj as u64;
+            *x = if t >= p2 { t - p2 } else { t };
+        }
+    }
+    for k in (n..2 * n).rev() {
+        let top = fp.reduce(r[k]);
+        if top == 0 {
+            continue;
+        }
+        let row = &mut r[k - n..k];
+        for (x, &cj) in row.iter_mut().zip(&c32) {
+            let t = *x + top * cj as u64;
+            *x = if t >= p2 { t - p2 } else { t };
+        }
+    }
+    r.truncate(n);
+    r.iter_mut().for_each(|x| *x = fp.reduce(*x));
+    r
+}
+
+dispatch! {
+    /// `M·v` for a matrix stored by columns (entries in `[0, p)`).
+    pub fn mat_vec / mat_vec_avx2 / mat_vec_generic(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64>
+}
+
+#[inline(always)]
+fn mat_vec_generic(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64> {
+    let p2 = fp.p2;
+    let mut acc = vec![0u64; cols.first().map_or(0, |c| c.len())];
+    for (col, &vj) in cols.iter().zip(v) {
+        if vj == 0 {
+            continue;
+        }
+        for (a, &m) in acc.iter_mut().zip(col) {
+            let t = *a + m as u64 * vj;
+            *a = if t >= p2 { t - p2 } else { t };
+        }
+    }
+    acc.iter().map(|&a| fp.reduce(a)).collect()
+}
+
+dispatch! {
+    /// Solves `K c = r` for the columns `k` (n vectors of length n, entries in
+    /// `[0, p)`) and each right-hand side: Gauss–Jordan on the augmented
+    /// matrix, rows kept below `p²` and reduced when they become pivots.
+    /// `None` when `K` is singular.
+    pub fn solve_columns / solve_columns_avx2 / solve_columns_generic(fp: &Fp, k: &[Vec<u64>], rhs: &[Vec<u64>]) -> Option<Vec<Vec<u64>>>
+}
+
+#[inline(always)]
+fn solve_columns_generic(fp: &Fp, k: &[Vec<u64>], rhs: &[Vec<u64>]) -> Option<Vec<Vec<u64>>> {
+    let n = k.len();
+    let w = n + rhs.len();
+    let p2 = fp.p2;
+    let mut a: Vec<Vec<u64>> = (0..n)
+        .map(|i| {
+            k.iter()
+                .map(|c| c[i])
+                .chain(rhs.iter().map(|r| r[i]))
+                .collect()
+        })
+        .collect();
+    let mut prow32 = vec![0u32; w];
+    for c in 0..n {
+        crate::budget::check();
+        // entries of column c are below p² (lazy): reduce them to find a pivot
+        for row in a.iter_mut().skip(c) {
+            row[c] = fp.reduce(row[c]);
+        }
+        let piv = (c..n).find(|&i| a[i][c] != 0)?;
+        a.swap(c, piv);
+        let inv = fp.inv(a[c][c]).expect("non-zero pivot");
+        for x in a[c][c..].iter_mut() {
+            *x = fp.mul(fp.reduce(*x), inv);
+        }
+        for (d, &s) in prow32[c..].iter_mut().zip(&a[c][c..]) {
+            *d = s as u32;
+        }
+        for i in 0..n {
+            if i == c {
+                continue;
+            }
+            let f = fp.reduce(a[i][c]);
+            if f == 0 {
+                continue;
+            }
+            let f = fp.neg(f);
+            for (x, &y) in a[i][c..].iter_mut().zip(&prow32[c..]) {
+                let t = *x + f * y as u64;
+                *x = if t >= p2 { t - p2 } else { t };
+            }
+        }
+    }
+    Some(
+        (0..rhs.len())
+            .map(|r| (0..n).map(|i| fp.reduce(a[i][n + r])).collect())
+            .collect(),
+    )
+}
+
+dispatch! {
+    /// `acc ← acc + a·x` entrywise, `acc` kept below `p²` (lazy: reduce
+    /// with [`Fp::reduce`] before use); `a` and the entries of `x` in
+    /// `[0, p)`.
+    pub fn axpy_lazy / axpy_lazy_avx2 / axpy_lazy_generic(fp: &Fp, acc: &mut [u64], a: u64, x: &[u64]) -> ()
+}
+
+#[inline(always)]
+fn axpy_lazy_generic(fp: &Fp, acc: &mut [u64], a: u64, x: &[u64]) {
+    let p2 = fp.p2;
+    let a = a as u32 as u64;
+    for (y, &xi) in acc.iter_mut().zip(x) {
+        let t = *y + a * (xi as u32 as u64);
+        *y = if t >= p2 { t - p2 } else { t };
+    }
+}
+
+dispatch! {
+    /// `Σ aᵢ·bᵢ mod p` (entries in `[0, p)`), in four lazy lanes.
+    pub fn dot / dot_avx2 / dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64
+}
+
+#[inline(always)]
+fn dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
+    let p2 = fp.p2;
+    let mut lanes = [0u64; 4];
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ra, rb) = (ca.remainder(), cb.remainder());
+    for (x, y) in ca.zip(cb) {
+        for l in 0..4 {
+            let t = lanes[l] + (x[l] as u32 as u64) * (y[l] as u32 as u64);
+            lanes[l] = if t >= p2 { t - p2 } else { t };
+        }
+    }
+    let mut acc = 0u64;
+    for l in lanes {
+        acc = fp.add(acc, fp.reduce(l));
+    }
+    for (&x, &y) in ra.iter().zip(rb) {
+        acc = fp.add(acc, fp.mul(x, y));
+    }
+    acc
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::reconstruct::prime31;
+
+    fn rand_vec(seed: &mut u64, n: usize, p: u64) -> Vec<u64> {
+        (0..n)
+            .map(|_| {
+                *seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                (*seed >> 33) % p
+            })
+            .collect()
+    }
+
+    /// The vectorised product equals the plain definition: the schoolbook
+    /// product reduced by `T^n = Σ c_j T^j`, one step at a time.
+    #[test]
+    fn mulmod_agrees_with_the_definition() {
+        let fp = Fp::new(prime31(3));
+        let mut seed = 5;
+        for n in [1usize, 2, 7, 31, 64, 65] {
+            let a = rand_vec(&mut seed, n, fp.p);
+            let b = rand_vec(&mut seed, n, fp.p);
+            let c = rand_vec(&mut seed, n, fp.p);
+            let mut r = vec![0u64; 2 * n];
+            for i in 0..n {
+                for j in 0..n {
+                    r[i + j] = fp.add(r[i + j], fp.mul(a[i], b[j]));
+                }
+            }
+            for k in (n..2 * n).rev() {
+                let t = r[k];
+                r[k] = 0;
+                for j in 0..n {
+                    r[k - n + j] = fp.add(r[k - n + j], fp.mul(t, c[j]));
+                }
+            }
+            r.truncate(n);
+            assert_eq!(mulmod(&fp, &a, &b, &c), r, "n = {n}");
+            assert_eq!(mulmod_generic(&fp, &a, &b, &c), r, "n = {n}");
+        }
+    }
+
+    /// `solve_columns` solves: `K·x = r` holds for every right-hand side,
+    /// and a singular matrix gives `None`.
+    #[test]
+    fn axpy_and_dot_agree_with_the_definition() {
+        let fp = Fp::new(prime31(2));
+        let mut seed = 3;
+        for n in [0usize, 1, 5, 16, 33] {
+            let a = rand_vec(&mut seed, n, fp.p);
+            let b = rand_vec(&mut seed, n, fp.p);
+            let want = a.iter().zip(&b).fold(0, |s, (&x, &y)| fp.add(s, fp.mul(x, y)));
+            assert_eq!(dot(&fp, &a, &b), want);
+            let mut acc = b.clone();
+            axpy_lazy(&fp, &mut acc, 12345, &a);
+            axpy_lazy(&fp, &mut acc, fp.p - 1, &a);
+            for i in 0..n {
+                let w = fp.add(b[i], fp.mul(12344, a[i]));
+                assert_eq!(fp.reduce(acc[i]), w);
+            }
+        }
+    }
+
+    #[test]
+    fn solve_columns_solves() {
+        let fp = Fp::new(prime31(1));
+        let mut seed = 11;
+        for n in [1usize, 3, 20, 41] {
+            let k: Vec<Vec<u64>> = (0..n).map(|_| rand_vec(&mut seed, n, fp.p)).collect();
+            let rhs: Vec<Vec<u64>> = (0..3).map(|_| rand_vec(&mut seed, n, fp.p)).collect();
+            let sol = solve_columns(&fp, &k, &rhs).expect("random matrices are invertible");
+            for (r, x) in rhs.iter().zip(&sol) {
+                let cols: Vec<Vec<u32>> =
+                    k.iter().map(|c| c.iter().map(|&v| v as u32).collect()).collect();
+                assert_eq!(&mat_vec(&fp, &cols, x), r);
+            }
+        }
+        let mut k: Vec<Vec<u64>> = (0..4).map(|_| rand_vec(&mut seed, 4, fp.p)).collect();
+        k[3] = k[1].clone();
+        assert!(solve_columns(&fp, &k, &[vec![1, 2, 3, 4]]).is_none());
+    }
+}
