@@ -15,11 +15,13 @@ use std::fmt;
 #[derive(Clone, Debug)]
 pub(crate) enum Request {
     /// Ellipsoid vs surface (both in the input syntax, numbers read in
-    /// `mode`).
+    /// `mode`); `values: false` asks for the verdict only (no D(u), ν, μ
+    /// when they cost extra).
     Tangent {
         ellipsoid: String,
         surface: String,
         mode: NumberMode,
+        values: bool,
     },
     /// Two natural quadrics; `components: false` asks for the class and
     /// counts only (the fast route).
@@ -45,7 +47,7 @@ pub(crate) enum Answer {
 
 /// The operations by name, with the fields of their batch lines.
 pub(crate) const OPS: [(&str, &[&str]); 4] = [
-    ("tangent", &["ellipsoid", "surface", "float"]),
+    ("tangent", &["ellipsoid", "surface", "values", "float"]),
     ("natural", &["a", "b", "components", "float"]),
     ("roots", &["poly"]),
     ("resultant", &["f", "g", "var"]),
@@ -76,6 +78,7 @@ impl Request {
                 ellipsoid,
                 surface,
                 mode,
+                values,
             } => {
                 let parse = |t: &str, what: &str| {
                     crate::poly::parse_poly_in(t, &crate::poly::Limits::default(), *mode)
@@ -84,7 +87,8 @@ impl Request {
                 let e = Ellipsoid::from_poly(&parse(ellipsoid, "in the ellipsoid")?)
                     .map_err(|x| x.context("in the ellipsoid"))?;
                 let s = parse(surface, "in the surface")?;
-                let options = TangentOptions::with_budget(budget.clone());
+                let mut options = TangentOptions::with_budget(budget.clone());
+                options.values = *values;
                 Answer::Tangent(crate::tangent::decide_with(
                     &e,
                     &crate::poly::Polynomial::from_inner(s),
@@ -203,6 +207,7 @@ mod json {
                     ellipsoid: text(obj, "ellipsoid")?,
                     surface: text(obj, "surface")?,
                     mode: mode(obj)?,
+                    values: flag(obj, "values", true)?,
                 },
                 "natural" => Request::Natural {
                     a: natural(obj, "a", mode(obj)?)?,

@@ -80,6 +80,15 @@ enum Command {
         /// ties to even), i.e. the numbers a program reading them would use.
         #[arg(long)]
         float: bool,
+        /// Compute the exact critical values: D(u), min and max (the default).
+        #[arg(long, overrides_with = "no_values")]
+        values: bool,
+        /// The verdict and its certificate only: for deg S ≥ 3 in general
+        /// position, D(u) and the exact min and max are not computed (min,
+        /// max and judging_poly are null); S's sign at each real critical
+        /// point is proven by an interval enclosure.
+        #[arg(long, overrides_with = "values")]
+        no_values: bool,
     },
     /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
     Natural {
@@ -196,6 +205,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             json,
             float,
             limits,
+            values: _,
+            no_values,
         } => answer(
             json,
             &limits,
@@ -203,6 +214,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 ellipsoid,
                 surface,
                 mode: number_mode(float),
+                values: !no_values,
             },
         )?,
         Command::Natural {

@@ -717,6 +717,21 @@ impl SparseMult {
         Some(SparseMult { unit, dense })
     }
 
+    /// `Mᵀ·x` (entries in `[0, p)`): a unit column gives one entry, a
+    /// dense column a dot product.
+    pub fn apply_transposed(&self, fp: &Fp, x: &[u64]) -> Vec<u64> {
+        let mut y = vec![0u64; x.len()];
+        for (j, &i) in self.unit.iter().enumerate() {
+            if i != u32::MAX {
+                y[j] = x[i as usize];
+            }
+        }
+        for (j, col) in &self.dense {
+            y[*j] = crate::number::modkernel::dot(fp, col, x);
+        }
+        y
+    }
+
     /// `M·x` (entries in `[0, p)`).
     pub fn apply(&self, fp: &Fp, x: &[u64]) -> Vec<u64> {
         let mut y = vec![0u64; x.len()];

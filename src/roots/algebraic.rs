@@ -226,6 +226,22 @@ impl RealAlg {
         }
     }
 
+    /// Refines the isolating interval in place to a width of about
+    /// `2^-bits` relative to the magnitude of its ends.
+    pub(crate) fn refine_relative(&mut self, bits: u32) {
+        if let Repr::Root { lo, hi, .. } = &self.repr {
+            let mag = lo.numer().bits().max(hi.numer().bits()) as i64
+                - lo.denom().bits().min(hi.denom().bits()) as i64;
+            let e = mag - bits as i64;
+            let w = if e >= 0 {
+                Q::from_integer(BigInt::one() << e as usize)
+            } else {
+                Q::new(BigInt::one(), BigInt::one() << (-e) as usize)
+            };
+            self.refine_to(&w);
+        }
+    }
+
     /// Refines the isolating interval in place so that later
     /// [`RealAlg::approx`] calls with `digits` digits (on this number or its
     /// clones) need no further refinement.

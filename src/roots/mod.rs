@@ -11,6 +11,7 @@
 mod algebraic;
 mod enclose;
 mod isolate;
+pub mod krawczyk;
 pub mod modrur;
 pub mod poisson;
 mod newton;

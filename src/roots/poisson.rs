@@ -58,6 +58,23 @@ impl PoissonRur {
         self.w.lc()
     }
 
+    /// The zero at a rational τ rounded down to dyadics of scale `2^-k`
+    /// (integer arithmetic only; `None` where `w′(τ) = 0`).
+    pub fn point_dyadic(&self, t: &Q, k: usize) -> Option<crate::roots::krawczyk::Dyadic3> {
+        let (dn, dd) = self.wd.eval_homogeneous(t.numer(), t.denom());
+        if dn.is_zero() {
+            return None;
+        }
+        let mut num: [BigInt; 3] = std::array::from_fn(|_| BigInt::zero());
+        let mut den: [BigInt; 3] = std::array::from_fn(|_| BigInt::zero());
+        for i in 0..3 {
+            let (n, d) = self.v[i].eval_homogeneous(t.numer(), t.denom());
+            num[i] = n * &dd;
+            den[i] = d * &dn;
+        }
+        Some(crate::roots::krawczyk::Dyadic3::floor_ratio(&num, &den, k))
+    }
+
     /// The zero at a rational τ (exact; `None` where `w′(τ) = 0`).
     pub fn point_at(&self, t: &Q) -> Option<[Q; 3]> {
         let (dn, dd) = self.wd.eval_homogeneous(t.numer(), t.denom());
@@ -193,16 +210,36 @@ pub(crate) fn kronecker_sparse(
     let n = basis.len();
     let mult = SparseMult::new(gb, basis, var)?;
     let coords = variable_coords(gb, basis)?;
+    // forward vectors v_j = Mʲ·1 and transposed rows r_j = (Mᵀ)ʲ·e₀
+    // (j < n): φ(ℓᵏ) = r_⌈k/2⌉ · v_⌊k/2⌋ for k < 2n, and
+    // φ(u·ℓᵏ) = r_k · (coordinates of u) for k < n
+    let mut fwd: Vec<Vec<u64>> = Vec::with_capacity(n);
+    let mut rows: Vec<Vec<u64>> = Vec::with_capacity(n);
     let mut v = vec![0u64; n];
     v[0] = 1;
-    let mut a = Vec::with_capacity(2 * n);
-    for k in 0..2 * n {
-        a.push(v[0]);
-        if k + 1 < 2 * n {
-            crate::budget::check();
-            v = mult.apply(fp, &v);
-        }
+    let mut r = v.clone();
+    for j in 0..n {
+        crate::budget::check();
+        let (nv, nr) = if j + 1 < n {
+            (mult.apply(fp, &v), mult.apply_transposed(fp, &r))
+        } else {
+            (Vec::new(), Vec::new())
+        };
+        fwd.push(std::mem::replace(&mut v, nv));
+        rows.push(std::mem::replace(&mut r, nr));
     }
+    let dot = crate::number::modkernel::dot;
+    let a: Vec<u64> = (0..2 * n)
+        .map(|k| {
+            let (i, j) = (k.div_ceil(2), k / 2);
+            if i < n {
+                dot(fp, &rows[i], &fwd[j])
+            } else {
+                // k = 2n − 1: r_n is not kept; use r_(n−1)·(M·v_(n−1))
+                dot(fp, &rows[n - 1], &mult.apply(fp, &fwd[j]))
+            }
+        })
+        .collect();
     let f = berlekamp_massey(fp, &a);
     if f.len() != n + 1 {
         return None;
@@ -215,7 +252,7 @@ pub(crate) fn kronecker_sparse(
     // N[i] = Σ_{j=i+1}^{n} f_j s_{j−i−1}
     let numer = |s: &[u64]| -> Vec<u64> {
         (0..n)
-            .map(|i| crate::number::modkernel::dot(fp, &f[i + 1..=n], &s[..n - i]))
+            .map(|i| dot(fp, &f[i + 1..=n], &s[..n - i]))
             .collect()
     };
     let n1 = numer(&a[..n]);
@@ -226,15 +263,7 @@ pub(crate) fn kronecker_sparse(
         let s: Vec<u64> = if u == var {
             a[1..=n].to_vec()
         } else {
-            let mut w = coords[u].clone();
-            let mut s = Vec::with_capacity(n);
-            for k in 0..n {
-                s.push(w[0]);
-                if k + 1 < n {
-                    w = mult.apply(fp, &w);
-                }
-            }
-            s
+            rows.iter().map(|rk| dot(fp, rk, &coords[u])).collect()
         };
         alg.mul(&numer(&s), &scale)
     });
@@ -781,21 +810,43 @@ pub fn value_bound_bits(sys: &SquareSystem, h: &ZMPoly) -> u64 {
 
 
 #[cfg(test)]
-mod timing_probe {
+mod tests {
+    use super::*;
+    use crate::elim::poisson::SquareSystem;
+    use crate::poly::parse_poly;
+
+    /// Berlekamp–Massey finds the recurrence of a sequence built from one:
+    /// `a_{k+3} = 5a_{k+2} − 2a_{k+1} + 7a_k` (minimal polynomial
+    /// `T³ − 5T² + 2T − 7`).
     #[test]
-    #[ignore]
-    fn approx_cost() {
-        let text = std::fs::read_to_string("/tmp/cubic_D.txt").unwrap();
-        let p: crate::poly::IntPoly = text.parse().unwrap();
-        let t = std::time::Instant::now();
-        let roots = p.real_roots();
-        println!("isolate {:?} {}", t.elapsed(), roots.len());
-        for r in &roots {
-            let t = std::time::Instant::now();
-            let mut c = r.clone();
-            println!("interval {:?}", c.interval());
-            c.refine_for_approx(20);
-            println!("refine {:?} {:?}", t.elapsed(), c.interval().0.denom().bits());
+    fn berlekamp_massey_finds_the_recurrence() {
+        let fp = Fp::new(prime31(4));
+        let mut a = vec![1u64, 2, 3];
+        for k in 0..20 {
+            let next = fp.add(
+                fp.sub(fp.mul(5, a[k + 2]), fp.mul(2, a[k + 1])),
+                fp.mul(7, a[k]),
+            );
+            a.push(next);
+        }
+        let m = berlekamp_massey(&fp, &a);
+        assert_eq!(m, vec![fp.neg(7), 2, fp.neg(5), 1]);
+    }
+
+    /// The sparse Kronecker images (ℓ = z, Berlekamp–Massey on the sparse
+    /// multiplication matrix) equal the dense ones (Krylov and a solve).
+    #[test]
+    fn sparse_and_dense_kronecker_agree() {
+        let gens = ["x^2 + 2y^2 + 3z^2 - 6", "x^3 - 2x*y + z - 1", "y^3 + x*z - 2"]
+            .map(|g| parse_poly(g).unwrap().to_primitive_z().0);
+        let sys = SquareSystem::new(gens).unwrap();
+        for k in 0..3 {
+            let fp = Fp::new(prime31(k));
+            let (gb, basis) = sys.quotient_mod(&fp).unwrap();
+            let sparse = kronecker_sparse(&fp, &gb, &basis, 2).unwrap();
+            let quo = ModQuotient::new(&gb).unwrap();
+            let dense = kronecker_mod(&fp, &quo, [0, 0, 1]).unwrap();
+            assert_eq!(sparse, dense);
         }
     }
 }

@@ -213,18 +213,53 @@ impl fmt::Display for Undecided {
 }
 
 /// Options of [`decide_with`].
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct TangentOptions {
     /// The compute budget (default: [`Budget::default`]).  When it runs out
     /// the answer is [`Verdict::Undecided`] with [`Undecided::Budget`].
     pub budget: Budget,
+    /// Compute the exact critical values: D(u), ν and μ as real algebraic
+    /// numbers (default `true`).  With `false` (see
+    /// [`TangentOptions::without_values`]) a surface of degree ≥ 3 in
+    /// general position is decided from the signs of S at its exactly
+    /// known real critical points, and D(u) — the largest object of the
+    /// computation — is skipped; `min`, `max` are then `None`.
+    pub values: bool,
+}
+
+impl Default for TangentOptions {
+    fn default() -> TangentOptions {
+        TangentOptions {
+            budget: Budget::default(),
+            values: true,
+        }
+    }
 }
 
 impl TangentOptions {
     /// Options with the given budget.
     pub fn with_budget(budget: Budget) -> TangentOptions {
-        TangentOptions { budget }
+        TangentOptions {
+            budget,
+            ..TangentOptions::default()
+        }
+    }
+
+    /// The verdict and its certificate only (no exact critical values when
+    /// they cost extra): see [`TangentOptions::values`].
+    ///
+    /// ```
+    /// use quadsect::{TangentOptions, Verdict};
+    /// let e = "x^2 + 2y^2 + 3z^2 - 6".parse().unwrap();
+    /// let s = "x^3 - 2x*y + z^2 + y*z - 1".parse().unwrap();
+    /// let r = quadsect::decide_with(&e, &s, &TangentOptions::default().without_values()).unwrap();
+    /// assert_eq!(r.verdict(), Verdict::Intersecting);
+    /// assert!(r.certificate().negative_witness().is_some());
+    /// ```
+    pub fn without_values(mut self) -> TangentOptions {
+        self.values = false;
+        self
     }
 }
 
@@ -371,7 +406,9 @@ impl TangentReport {
 
     /// The judging polynomial D(u): square-free, primitive; its real roots
     /// include every critical value (and possibly values at non-real
-    /// critical points, listed in the certificate).
+    /// critical points, listed in the certificate).  The constant 1 when
+    /// undecided or when the values were skipped
+    /// ([`TangentReport::values_skipped`]).
     pub fn judging_poly(&self) -> IntPoly {
         IntPoly::from_inner(self.judging_poly.clone())
     }
@@ -394,6 +431,14 @@ impl TangentReport {
     /// Why no verdict was given (only for [`Verdict::Undecided`]).
     pub fn undecided(&self) -> Option<&Undecided> {
         self.reason.as_ref()
+    }
+
+    /// True when the verdict was decided without the exact critical values
+    /// ([`TangentOptions::without_values`]): `min`, `max` are `None` and
+    /// [`TangentReport::judging_poly`] is the constant 1; the certificate
+    /// holds the real critical points with the sign of S at each.
+    pub fn values_skipped(&self) -> bool {
+        matches!(&self.certificate.method, Analysis::Poisson(an) if an.judging.is_none())
     }
 }
 
@@ -454,7 +499,9 @@ pub fn decide_with(
     s: &Polynomial,
     options: &TangentOptions,
 ) -> Result<TangentReport, Error> {
-    match crate::budget::run(&options.budget, || decide_validated(e, s.inner())) {
+    match crate::budget::run(&options.budget, || {
+        decide_validated(e, s.inner(), options.values)
+    }) {
         Ok(r) => r,
         Err(exhausted) => Ok(undecided_report(
             e.poly.clone(),
@@ -467,10 +514,10 @@ pub fn decide_with(
 /// Decides E against S given as internal polynomials (E is validated).
 pub(crate) fn decide_poly(ellipsoid: &QMPoly, surface: &QMPoly) -> Result<TangentReport, Error> {
     let e = Ellipsoid::from_poly(ellipsoid).map_err(|x| x.context("in the ellipsoid"))?;
-    decide_validated(&e, surface)
+    decide_validated(&e, surface, true)
 }
 
-fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Error> {
+fn decide_validated(e: &Ellipsoid, surface: &QMPoly, values: bool) -> Result<TangentReport, Error> {
     crate::budget::check_now();
     if surface.vars().iter().any(|&v| v > 2) {
         return Err(Error::new(
@@ -552,13 +599,15 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly) -> Result<TangentReport, Er
             Analysis::Lambda(an),
             WitnessFinder::Lambda,
         )
-    } else if let Ok(an) = poisson::analyze(&e, surface) {
+    } else if let Ok(an) = poisson::analyze(&e, surface, values) {
+        let Some(j) = an.judging.clone() else {
+            return Ok(finish_signs(&e, surface, an));
+        };
         let (vals, nonreal) = if an.separates() {
             (an.real_values(), vec![])
         } else {
-            split_values(&an.real_values(), &an.judging)
+            split_values(&an.real_values(), &j)
         };
-        let j = an.judging.clone();
         (
             vals,
             nonreal,
@@ -816,6 +865,56 @@ fn finish(
             negative_witness: negw,
             positive_witness: posw,
             method,
+            notes,
+        },
+        reason: None,
+    }
+}
+
+/// The verdict from the signs of S at the real critical points (no exact
+/// values: [`TangentOptions::without_values`]).  Every sign is decided
+/// (the analysis computes the values when one is not), and zero is never
+/// one of them, so the verdict is `separated` or `intersecting`.
+fn finish_signs(e: &Ellipsoid, surface: &QMPoly, an: poisson::PoissonAnalysis) -> TangentReport {
+    let signs: Vec<i32> = an.enclosures.iter().map(|(s, _)| *s).collect();
+    let (neg, pos) = (signs.contains(&-1), signs.contains(&1));
+    let (verdict, intersect, side) = match (neg, pos) {
+        (true, true) => (Verdict::Intersecting, true, None),
+        (false, _) => (Verdict::Separated, false, Some(1)),
+        (true, false) => (Verdict::Separated, false, Some(-1)),
+    };
+    // witnesses at the extreme real critical points (by their enclosures)
+    let extreme = |want: i32| -> Option<WitnessPoint> {
+        let i = (0..signs.len())
+            .filter(|&i| signs[i] == want)
+            .max_by(|&i, &j| {
+                let (a, b) = (&an.enclosures[i].1, &an.enclosures[j].1);
+                if want < 0 { b.0.cmp(&a.0) } else { a.1.cmp(&b.1) }
+            })?;
+        an.witness_at(i, e, surface, want)
+    };
+    let negw = if neg { extreme(-1) } else { None };
+    let posw = if pos { extreme(1) } else { None };
+    let notes = vec![
+        "verdict only: D(u) and the exact critical values were not computed; S has the sign of its enclosure at every real critical point".to_string(),
+    ];
+    TangentReport {
+        ellipsoid: e.poly.clone(),
+        surface: surface.clone(),
+        verdict,
+        intersect: Some(intersect),
+        touching: Some(false),
+        side,
+        containment: if intersect { None } else { containment_of(e, surface, side.unwrap_or(0)) },
+        min: None,
+        max: None,
+        judging_poly: ZPoly::constant(num_bigint::BigInt::from(1)),
+        certificate: Certificate {
+            critical_values: vec![],
+            nonreal_point_values: vec![],
+            negative_witness: negw,
+            positive_witness: posw,
+            method: Analysis::Poisson(Box::new(an)),
             notes,
         },
         reason: None,

@@ -35,6 +35,7 @@ use crate::roots::poisson::{
     ModAlgebra, PoissonRur, ValueMap, poly_gcd_mod, solve_square, value_bound_bits,
     value_polynomial, zpoly_mod,
 };
+use crate::roots::krawczyk::{System, ZeroBox, eval_box};
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -79,8 +80,13 @@ pub struct PoissonAnalysis {
     /// twice); empty otherwise, when the real critical values are exactly
     /// the real roots of D(u), one per real critical point.
     pub values: Vec<RealAlg>,
-    /// D(u): the critical values (complex points included), square-free.
-    pub judging: ZPoly,
+    /// D(u): the critical values (complex points included), square-free;
+    /// `None` when only the verdict was asked for and every sign was decided
+    /// without it.
+    pub judging: Option<ZPoly>,
+    /// Without D(u): per real critical point (order of `real_points`) the
+    /// sign of S there and an enclosure of its value.
+    pub enclosures: Vec<(i32, (Q, Q))>,
     /// Sombra's bound (bits) on `Res(u − S′, F)` behind D(u).
     pub value_bound_bits: u64,
     /// The number of primes of D(u).
@@ -98,11 +104,21 @@ impl PoissonAnalysis {
     /// The values attained by real critical points (with
     /// [`PoissonAnalysis::separates`]: all real roots of D(u), increasing).
     pub fn real_values(&self) -> Vec<RealAlg> {
-        if self.separates() {
-            RealAlg::roots_of(&self.judging)
-        } else {
-            self.values.clone()
+        match &self.judging {
+            Some(j) if self.separates() => RealAlg::roots_of(j),
+            _ => self.values.clone(),
         }
+    }
+
+    /// A witness with S of sign `want` near real critical point `i`.
+    pub fn witness_at(
+        &self,
+        i: usize,
+        e: &Ellipsoid,
+        s: &QMPoly,
+        want: i32,
+    ) -> Option<WitnessPoint> {
+        find_witness(e, s, want, false, &|bits| self.approx_point(i, bits))
     }
 
     /// The number of complex critical points.
@@ -186,7 +202,8 @@ fn approx_value(p: &QMPoly, pt: &[Q; 3]) -> Q {
 
 /// A basis `a, b` of the plane orthogonal to `n ≠ 0` (integer vectors).
 fn orthogonal_basis(n: [i64; 3]) -> ([i64; 3], [i64; 3]) {
-    // the two largest-index coordinates give independent cross products
+    // e_i × n and e_j × n (i, j the coordinates other than k) are
+    // independent exactly when n_k ≠ 0: take k with |n_k| largest
     let k = (0..3).max_by_key(|&i| n[i].abs()).expect("three coordinates");
     let e = |i: usize| {
         let mut v = [0i64; 3];
@@ -216,7 +233,7 @@ fn combine(v: [i64; 3], m: &[QMPoly; 3]) -> QMPoly {
 
 /// The Poisson analysis, or why it does not apply (the caller then uses
 /// another route).
-pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<PoissonAnalysis, Declined> {
+pub fn analyze(e: &Ellipsoid, s: &QMPoly, values: bool) -> Result<PoissonAnalysis, Declined> {
     let m = cross_gradients(s, &e.poly);
     let (ez, _) = e.poly.to_primitive_z();
     let grad_e = crate::geom::gradient(&e.poly);
@@ -233,17 +250,14 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<PoissonAnalysis, Declined> {
         let Some(mut sys) = SquareSystem::new(gens.clone()) else {
             continue;
         };
-        let t0 = std::time::Instant::now();
-        let rur = solve_square(&mut sys, &FORMS, MAX_PRIMES);
-        if std::env::var("QS_PROFILE").is_ok() { eprintln!("rur {:?}", t0.elapsed()); }
-        let rur = match rur {
+        let rur = match solve_square(&mut sys, &FORMS, MAX_PRIMES) {
             Ok(r) => r,
             Err(d) => {
                 last = d;
                 continue;
             }
         };
-        match finish(&e.poly, s, n, &m, &grad_e, gens, &sys, rur) {
+        match finish(&e.poly, s, n, &m, &grad_e, gens, &sys, rur, values) {
             Ok(an) => return Ok(an),
             Err(d) => last = d,
         }
@@ -291,7 +305,11 @@ fn nonzero_at_roots(rur: &PoissonRur, g: &ZPoly, h: &ZMPoly) -> Option<u64> {
         };
         let xs: Vec<Vec<u64>> = rur.v.iter().map(|v| alg.mul(&reduce(v), &dinv)).collect();
         let val = alg.eval(&zmpoly_mod(&fp, h), [&xs[0], &xs[1], &xs[2]]);
-        return (poly_gcd_mod(&fp, &gm, &val).len() == 1).then_some(fp.p);
+        // a common root over Q̄ stays one modulo every such prime; a common
+        // factor modulo p alone only makes this prime unlucky
+        if poly_gcd_mod(&fp, &gm, &val).len() == 1 {
+            return Some(fp.p);
+        }
     }
     None
 }
@@ -327,10 +345,9 @@ fn finish(
     generators: [ZMPoly; 3],
     sys: &SquareSystem,
     rur: PoissonRur,
+    values: bool,
 ) -> Result<PoissonAnalysis, Declined> {
     let decline = |s: &str| Err(Declined(s.into()));
-    let t0 = std::time::Instant::now();
-    let prof = std::env::var("QS_PROFILE").is_ok();
     // the extra points: roots of w where n·∇E vanishes
     let l = combine(n, grad_e);
     let lv = linear_at_rur(&l, &rur);
@@ -351,9 +368,33 @@ fn finish(
     if critical.degree().unwrap_or(0) == 0 {
         return decline("no critical point");
     }
-    if prof { eprintln!("extras+div {:?}", t0.elapsed()); }
     let real_points = RealAlg::roots_of(&critical);
-    if prof { eprintln!("real roots {:?}", t0.elapsed()); }
+    if real_points.is_empty() {
+        // S attains its extremes on the compact E at real critical points
+        return decline("no real critical point (inconsistent)");
+    }
+    if !values {
+        // the verdict from the signs of S at the real critical points; D(u)
+        // only when a sign is not decided (a critical value 0, or nearly)
+        let l_int = l.to_primitive_z().0;
+        let boxed = box_signs(&generators, &l_int, &rur, s, &real_points);
+        if let Some(enclosures) = boxed.or_else(|| point_signs(&rur, s, &real_points)) {
+            return Ok(PoissonAnalysis {
+                direction: n,
+                generators,
+                rur,
+                extras,
+                extras_prime,
+                critical,
+                real_points,
+                values: Vec::new(),
+                judging: None,
+                enclosures,
+                value_bound_bits: 0,
+                value_primes: 0,
+            });
+        }
+    }
     // D(u) for the integer S′ (S = k·S′), then scaled to S
     let (sz, k) = s.to_primitive_z();
     let bits = value_bound_bits(sys, &sz);
@@ -367,16 +408,13 @@ fn finish(
     };
     let (t, value_primes) =
         value_polynomial(&rur, &critical, &map, bits, sys.bezout(), MAX_PRIMES)?;
-    if prof { eprintln!("value poly {:?} ({} primes)", t0.elapsed(), value_primes); }
     let d_prime = t.primitive_part();
     let judging = scale_roots(&d_prime, &k).squarefree_part();
-    if prof { eprintln!("judging {:?}", t0.elapsed()); }
     let values = if judging.degree() == critical.degree() {
         Vec::new()
     } else {
         identify_values(&rur, &real_points, s, &judging)?
     };
-    if prof { eprintln!("identify {:?}", t0.elapsed()); }
     Ok(PoissonAnalysis {
         direction: n,
         generators,
@@ -386,7 +424,8 @@ fn finish(
         critical,
         real_points,
         values,
-        judging,
+        judging: Some(judging),
+        enclosures: Vec::new(),
         value_bound_bits: bits,
         value_primes,
     })
@@ -532,6 +571,136 @@ fn enclose_value(rur: &PoissonRur, s: &QMPoly, lo: &Q, hi: &Q) -> Option<(Q, Q)>
     Some(box_eval(s, &bx))
 }
 
+/// The signs of S at the real critical points from certified boxes of
+/// the points in the original system (Krawczyk: [`System::certify`]),
+/// started from the RUR at a 64-bit approximation of each root: one box
+/// per real root of `critical`, pairwise disjoint, each holding exactly one
+/// zero of the square system on which `n·∇E ≠ 0` (so a critical point, not
+/// an extra) — as many distinct real critical points as there are, hence
+/// all of them.  S is enclosed on each box; a sign the verdict needs is
+/// sharpened on finer boxes (to 4096 bits).  `None` when a step fails (the
+/// caller then encloses S through the RUR, or computes D(u)).
+fn box_signs(
+    gens: &[ZMPoly; 3],
+    l: &ZMPoly,
+    rur: &PoissonRur,
+    s: &QMPoly,
+    points: &[RealAlg],
+) -> Option<Vec<(i32, (Q, Q))>> {
+    let sys = System::new(gens.clone());
+    let (sz, scale) = s.to_primitive_z();
+    let sgn = if scale.is_negative() { -1 } else { 1 };
+    let mut boxes: Vec<ZeroBox> = Vec::with_capacity(points.len());
+    for a in points {
+        crate::budget::check_now();
+        let t = a.to_rational_approx(64);
+        let start = rur.point_dyadic(&t, 64)?;
+        let b = [64usize, 128, 256].iter().find_map(|&bits| {
+            let b = sys.certify(&start, bits)?;
+            (eval_box(l, &b.enclosure, b.k).sign() != 0).then_some(b)
+        })?;
+        if boxes.iter().any(|o| !o.disjoint(&b)) {
+            return None;
+        }
+        boxes.push(b);
+    }
+    let sign_on = |b: &ZeroBox| -> (i32, (Q, Q)) {
+        let v = eval_box(&sz, &b.enclosure, b.k);
+        let (lo, hi) = v.to_q(b.k);
+        let (lo, hi) = (lo * &scale, hi * &scale);
+        let iv = if sgn < 0 { (hi, lo) } else { (lo, hi) };
+        (v.sign() * sgn, iv)
+    };
+    let mut out: Vec<(i32, (Q, Q))> = boxes.iter().map(sign_on).collect();
+    let both = out.iter().any(|o| o.0 < 0) && out.iter().any(|o| o.0 > 0);
+    if !both {
+        for (o, b) in out.iter_mut().zip(&boxes) {
+            let mut bits = 128;
+            while o.0 == 0 && bits <= 4096 {
+                crate::budget::check_now();
+                let finer = sys.certify(&b.center(), bits)?;
+                *o = sign_on(&finer);
+                bits *= 2;
+            }
+            if o.0 == 0 {
+                return None;
+            }
+        }
+    }
+    Some(out)
+}
+
+/// The sign of S at every real critical point with an enclosure of the
+/// value, as far as the verdict needs it: all points up to 64 bits; once
+/// both signs occur the verdict is `intersecting` and the others may stay
+/// undecided (sign 0, an enclosure containing 0); otherwise each undecided
+/// point is refined up to 4096 bits.  `None` when a sign the verdict needs
+/// stays undecided (a critical value 0, or within about 2^-4096 of it): the
+/// exact values are needed.
+fn point_signs(rur: &PoissonRur, s: &QMPoly, points: &[RealAlg]) -> Option<Vec<(i32, (Q, Q))>> {
+    let mut out: Vec<(i32, Option<(Q, Q)>)> = points
+        .iter()
+        .map(|a| sign_at_point(rur, s, a, 64, false))
+        .collect();
+    let both = out.iter().any(|o| o.0 < 0) && out.iter().any(|o| o.0 > 0);
+    for (o, a) in out.iter_mut().zip(points) {
+        if o.0 == 0 && !(both && o.1.is_some()) {
+            // with both signs, any enclosure will do for the certificate
+            *o = sign_at_point(rur, s, a, 4096, both);
+            if !both && o.0 == 0 {
+                return None;
+            }
+        }
+    }
+    out.into_iter().map(|(sign, iv)| Some((sign, iv?))).collect()
+}
+
+/// The sign of S at the real critical point of RUR root `alpha`, with an
+/// enclosure of the value: S is enclosed on a shrinking interval of α
+/// (32, 64, … up to `max_bits` bits) until the enclosure excludes 0.  Sign 0
+/// when it never does (with the last enclosure, which contains 0, if any)
+/// and at a rational root where S is exactly 0.  With `any`, the first
+/// enclosure found is returned, whatever its sign.
+fn sign_at_point(
+    rur: &PoissonRur,
+    s: &QMPoly,
+    alpha: &RealAlg,
+    max_bits: u32,
+    any: bool,
+) -> (i32, Option<(Q, Q)>) {
+    let mut a = alpha.clone();
+    let mut bits = 32u32;
+    let mut last = None;
+    while bits <= max_bits {
+        crate::budget::check_now();
+        if let Some(x) = a.as_rational() {
+            let Some(pt) = rur.point_at(x) else {
+                return (0, None);
+            };
+            let mut full: [Q; 6] = std::array::from_fn(|_| Q::zero());
+            full[..3].clone_from_slice(&pt);
+            let v = s.eval(&full);
+            return (crate::number::sign_q(&v), Some((v.clone(), v)));
+        }
+        let (lo, hi) = a.interval();
+        if let Some((vl, vh)) = enclose_value(rur, s, &lo, &hi) {
+            if vl.is_positive() {
+                return (1, Some((vl, vh)));
+            }
+            if vh.is_negative() {
+                return (-1, Some((vl, vh)));
+            }
+            if any {
+                return (0, Some((vl, vh)));
+            }
+            last = Some((vl, vh));
+        }
+        a.refine_relative(bits);
+        bits *= 2;
+    }
+    (0, last)
+}
+
 /// S at each real critical point as a root of `judging`: the enclosure of
 /// S on a shrinking interval of τ meets exactly one isolating interval.
 fn identify_values(
@@ -577,56 +746,4 @@ fn identify_values(
         })?);
     }
     Ok(out)
-}
-
-
-#[cfg(test)]
-mod experiment {
-    use super::*;
-    use crate::number::reconstruct::CrtVec;
-    use crate::poly::parse_poly;
-
-    #[test]
-    #[ignore]
-    fn leading_resultant_structure() {
-        let text = std::fs::read_to_string("/tmp/sys/cases.jsonl").unwrap();
-        let only = std::env::var("ONLY").unwrap_or("dense6_rotated_ellipsoid".into());
-        for line in text.lines() {
-            let v: serde_json::Value = serde_json::from_str(line).unwrap();
-            if v["id"].as_str().unwrap() != only { continue; }
-            let e = parse_poly(v["ellipsoid"].as_str().unwrap()).unwrap();
-            let s = parse_poly(v["surface"].as_str().unwrap()).unwrap();
-            let ell = Ellipsoid::from_poly(&e).unwrap();
-            let an = analyze(&ell, &s).unwrap();
-            let rbar = an.rur.leading_resultant();
-            println!("direction {:?} Rbar bits {}", an.direction, rbar.bits());
-            let n = an.direction;
-            let ge = crate::geom::gradient(&e);
-            let gs = crate::geom::gradient(&s);
-            let gens = [e.to_primitive_z().0, combine(n, &ge).to_primitive_z().0, combine(n, &gs).to_primitive_z().0];
-            let mut sx = SquareSystem::new(gens).unwrap();
-            assert!(sx.choose_dehomogenisation(&[prime31(0), prime31(1)]));
-            let mut crt = CrtVec::new(1);
-            for k in 0..200 {
-                let fp = Fp::new(prime31(k));
-                if let Ok(r) = sx.leading_resultant_mod(&fp) { crt.push(&fp, &[r]); }
-            }
-            crt.flush();
-            let m = crt.modulus().clone();
-            let rx = crate::number::reconstruct::symmetric_mod(&crt.values()[0], &m);
-            println!("Rx bits {} Rx = {}", rx.bits(), rx);
-            let lcd = an.judging.lc();
-            println!("lc(D) bits {}", lcd.bits());
-            let g = num_integer::Integer::gcd(&rbar, &rx);
-            println!("gcd(R, Rx) bits {}", g.bits());
-            let mut r = rbar.clone();
-            let mut k = 0;
-            while num_integer::Integer::is_multiple_of(&r, &rx) && rx.bits() > 1 { r = &r / &rx; k += 1; }
-            println!("R = Rx^{k} * rest, rest bits {}", r.bits());
-            let rd = num_traits::pow(r.clone(), 6);
-            println!("rest^d mod lc(D) zero? {}", num_integer::Integer::is_multiple_of(&rd, &lcd));
-            let gg = num_integer::Integer::gcd(&lcd, &num_traits::pow(rbar.clone(), 6));
-            println!("gcd(lcD, R^d) bits {}", gg.bits());
-        }
-    }
 }

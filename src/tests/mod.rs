@@ -16,4 +16,5 @@ mod fuzz_props;
 mod kernel_props;
 mod kernel_reference;
 mod natural;
+mod poisson;
 mod tangent;

@@ -217,6 +217,10 @@ fn method_json(m: &Analysis) -> Value {
                 "bound_bits": {"rur": r.bound_bits, "judging": an.value_bound_bits},
                 "squarefree_prime": r.squarefree_prime,
                 "extras_prime": an.extras_prime,
+                "value_enclosures": an.enclosures.iter().map(|(sign, (lo, hi))| json!({
+                    "sign": sign,
+                    "interval": [crate::number::fmt_q(lo), crate::number::fmt_q(hi)],
+                })).collect::<Vec<_>>(),
                 "soundness": "rur_poly w(t) = Res(t − ℓ, F) and the numerators V = −∂_ε Res(t − ℓ − ε·(x, y, z), F) are resultants of F = square_system (integer polynomials in its coefficients, by the Poisson formula ± leading_resultant · charpoly(ℓ) and the Kronecker numerators on Q[x, y, z]/F); their residues modulo primes where the quotient has dimension zeros = d1·d2·d3 are the residues computed there, and the CRT modulus exceeds twice Sombra's bound (bound_bits.rur), so they are exact; w is square-free modulo squarefree_prime, so the zeros of F are exactly (x, y, z) = rur_coordinates(t) / w′(t) over the roots t of w, all simple",
                 "extras": "a zero of F with m = ∇S × ∇E ≠ 0 has m ∥ n, hence n·∇E = n·∇S = 0; extra_factor = gcd(w, (n·∇E)(x(t), y(t), z(t))·w′(t)) holds those zeros, and n·m does not vanish at any of them (modulo extras_prime), so none is critical: the critical points are the roots of critical_factor = w / extra_factor",
                 "judging": "judging_poly is the primitive part (scaled to S) of leading_resultant^d · ∏ (u − S′(ξ)) over the critical points ξ, an integer polynomial (Gauss's lemma on Res(u − S′, F)) whose residues are the characteristic polynomials of S′(ξ(t)) modulo critical_factor; the CRT modulus exceeds the bound 2^(N + bound_bits.judging)·√(zeros + 1) (Landau, Sombra)",
@@ -290,7 +294,12 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         "containment": r.containment.map(|c| c.as_str()),
         "min": r.min.as_ref().map(|v| algs.json(v)),
         "max": r.max.as_ref().map(|v| algs.json(v)),
-        "judging_poly": upoly_string(&r.judging_poly, U),
+        // null: the caller asked for the verdict only and D(u) was skipped
+        "judging_poly": if r.values_skipped() {
+            Value::Null
+        } else {
+            json!(upoly_string(&r.judging_poly, U))
+        },
         "certificate": cert,
         "verdict": r.verdict.as_str(),
     });

@@ -67,7 +67,11 @@ pub fn tangent_human(r: &TangentReport) -> String {
     if let Some(m) = &r.max {
         s.push_str(&format!("max S|E   {}\n", alg_human(m)));
     }
-    s.push_str(&format!("D(u)      {}\n", upoly_string(&r.judging_poly, U)));
+    if r.values_skipped() {
+        s.push_str("D(u)      not computed (verdict only)\n");
+    } else {
+        s.push_str(&format!("D(u)      {}\n", upoly_string(&r.judging_poly, U)));
+    }
     let c = &r.certificate;
     s.push_str("certificate\n");
     let method = match &c.method {
