@@ -506,7 +506,9 @@ int qs_tangent_json(const char *ellipsoid,
                     struct qs_error **err);
 
 /**
- * `qs_tangent_json` with options (`opts` NULL: the defaults).
+ * `qs_tangent_json` with options (`opts` NULL: the defaults): the budget,
+ * and with `qs_options_set_values(opts, 0, …)` the verdict only (`min`,
+ * `max` and `judging_poly` null when skipping them saves time).
  *
  * # Safety
  * As `qs_tangent_json`; `opts` is NULL or a live `qs_options`.
@@ -606,6 +608,20 @@ int qs_options_set_size_limits(struct qs_options *opts,
                                uint64_t max_terms,
                                uint64_t max_bits,
                                struct qs_error **err);
+
+/**
+ * Whether `qs_tangent_json_opts` computes the exact critical values
+ * (`values` non-zero, the default) or gives the verdict and its
+ * certificate only (`values` = 0): for a surface of degree ≥ 3 in general
+ * position the judging polynomial D(u) and the exact `min`/`max` are then
+ * skipped (`null` in the JSON) and the sign of S at each real critical
+ * point is proven by an interval enclosure — about twice as fast.
+ *
+ * # Safety
+ * `opts` is NULL or a live `qs_options` that no call is using; `err` is
+ * NULL or writable.
+ */
+int qs_options_set_values(struct qs_options *opts, int values, struct qs_error **err);
 
 /**
  * Cancels every call running (or started later) with these options: they

@@ -3,7 +3,7 @@
 //! the answers are exactly those of `quadsect batch`.
 
 use crate::boundary::{Answer, answer_into, host_string, input_error, qs_error, read_str};
-use crate::options::{budget_of, qs_options};
+use crate::options::{budget_of, qs_options, values_of};
 use engine::{Error, ErrorKind};
 use serde_json::{Map, Value};
 use std::ffi::{CStr, c_char, c_int};
@@ -16,11 +16,15 @@ fn run_json(
     op: &str,
     fields: &[(&str, &str)],
     budget: &engine::Budget,
+    values: bool,
 ) -> Result<Answer<String>, Error> {
     let mut obj = Map::new();
     obj.insert("op".into(), Value::from(op));
     for (name, text) in fields {
         obj.insert((*name).into(), Value::from(*text));
+    }
+    if op == "tangent" && !values {
+        obj.insert("values".into(), Value::from(false));
     }
     let answer = engine::batch::run_op_within(&obj, budget)?;
     let reason = &answer["reason"];
@@ -51,8 +55,12 @@ unsafe fn json_entry(
         answer_into(out_json, "out_json", ptr::null_mut(), err, || {
             let a = read_str(args[0].1, args[0].0)?;
             let b = read_str(args[1].1, args[1].0)?;
-            let (json, exhausted) =
-                run_json(op, &[(args[0].0, a), (args[1].0, b)], &budget_of(opts))?;
+            let (json, exhausted) = run_json(
+                op,
+                &[(args[0].0, a), (args[1].0, b)],
+                &budget_of(opts),
+                values_of(opts),
+            )?;
             Ok((host_string(&json), exhausted))
         })
     }
@@ -85,7 +93,9 @@ pub unsafe extern "C" fn qs_tangent_json(
     unsafe { qs_tangent_json_opts(ellipsoid, surface, ptr::null(), out_json, err) }
 }
 
-/// `qs_tangent_json` with options (`opts` NULL: the defaults).
+/// `qs_tangent_json` with options (`opts` NULL: the defaults): the budget,
+/// and with `qs_options_set_values(opts, 0, …)` the verdict only (`min`,
+/// `max` and `judging_poly` null when skipping them saves time).
 ///
 /// # Safety
 /// As `qs_tangent_json`; `opts` is NULL or a live `qs_options`.
@@ -306,6 +316,36 @@ mod tests {
         assert_eq!(unsafe { qs_batch_line(ptr::null(), &mut out) }, 2);
         assert!(out.is_null());
         assert_eq!(unsafe { qs_batch_line(line.as_ptr(), ptr::null_mut()) }, 2);
+    }
+
+    #[test]
+    fn the_values_option_gives_the_verdict_only() {
+        let opts = crate::options::qs_options_new();
+        let (e, s) = (
+            CString::new("x^2 + 2y^2 + 3z^2 - 6").unwrap(),
+            CString::new("x^3 - 2x*y + z^2 + y*z - 1").unwrap(),
+        );
+        let run = |o: *const qs_options| -> Value {
+            let mut out = ptr::null_mut();
+            let code = unsafe {
+                qs_tangent_json_opts(e.as_ptr(), s.as_ptr(), o, &mut out, ptr::null_mut())
+            };
+            assert_eq!(code, 0);
+            serde_json::from_str(&owned(out)).unwrap()
+        };
+        let full = run(opts);
+        assert!(full["judging_poly"].is_string() && full["min"].is_object());
+        unsafe { crate::options::qs_options_set_values(opts, 0, ptr::null_mut()) };
+        let vo = run(opts);
+        assert_eq!(vo["verdict"], full["verdict"]);
+        assert!(vo["judging_poly"].is_null() && vo["min"].is_null());
+        assert!(
+            !vo["certificate"]["value_enclosures"]
+                .as_array()
+                .unwrap()
+                .is_empty()
+        );
+        unsafe { crate::options::qs_options_free(opts) };
     }
 
     #[test]

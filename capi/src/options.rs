@@ -21,6 +21,7 @@ use std::time::Duration;
 pub struct qs_options {
     budget: Budget,
     cancel: Arc<AtomicBool>,
+    values: bool,
 }
 
 impl qs_options {
@@ -29,8 +30,19 @@ impl qs_options {
         qs_options {
             budget: Budget::default().with_cancel_flag(cancel.clone()),
             cancel,
+            values: true,
         }
     }
+}
+
+/// Whether the tangent point method computes the exact critical values
+/// (NULL: the default, yes).
+///
+/// # Safety
+/// `opts` is NULL or a live `qs_options`.
+pub(crate) unsafe fn values_of(opts: *const qs_options) -> bool {
+    // SAFETY: the caller's contract
+    unsafe { opts.as_ref() }.is_none_or(|o| o.values)
 }
 
 /// The budget of `opts` (NULL: the defaults).
@@ -126,6 +138,31 @@ pub unsafe extern "C" fn qs_options_set_size_limits(
     }
 }
 
+/// Whether `qs_tangent_json_opts` computes the exact critical values
+/// (`values` non-zero, the default) or gives the verdict and its
+/// certificate only (`values` = 0): for a surface of degree ≥ 3 in general
+/// position the judging polynomial D(u) and the exact `min`/`max` are then
+/// skipped (`null` in the JSON) and the sign of S at each real critical
+/// point is proven by an interval enclosure — about twice as fast.
+///
+/// # Safety
+/// `opts` is NULL or a live `qs_options` that no call is using; `err` is
+/// NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn qs_options_set_values(
+    opts: *mut qs_options,
+    values: c_int,
+    err: *mut *mut qs_error,
+) -> c_int {
+    // SAFETY: `err` by the caller's contract
+    unsafe {
+        guard(err, || {
+            opts_mut(opts)?.values = values != 0;
+            Ok(())
+        })
+    }
+}
+
 /// Cancels every call running (or started later) with these options: they
 /// stop at their next budget check, as if a limit had run out.  Safe to
 /// call from any thread while calls run.  `qs_options_reset_cancel` clears
@@ -182,6 +219,13 @@ mod tests {
             assert_eq!(qs_options_set_time_limit(o, -1.0, ptr::null_mut()), 2);
             assert_eq!(qs_options_set_size_limits(o, 0, 99, ptr::null_mut()), 0);
             assert_eq!(budget_of(o).size_limits(), (None, Some(99)));
+            assert!(values_of(o) && values_of(ptr::null()));
+            assert_eq!(qs_options_set_values(o, 0, ptr::null_mut()), 0);
+            assert!(!values_of(o));
+            assert_eq!(
+                qs_options_set_values(ptr::null_mut(), 0, ptr::null_mut()),
+                2
+            );
             assert_eq!(
                 qs_options_set_time_limit(ptr::null_mut(), 1.0, ptr::null_mut()),
                 2

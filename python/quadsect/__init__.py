@@ -375,9 +375,17 @@ class TangentResult(_Result):
         return self._json["containment"]
 
     @property
-    def judging_poly(self) -> str:
-        """The judging polynomial D(u) (square-free, integer coefficients)."""
+    def judging_poly(self) -> Optional[str]:
+        """The judging polynomial D(u) (square-free, integer coefficients);
+        ``None`` when the values were skipped (``values=False``)."""
         return self._json["judging_poly"]
+
+    @property
+    def values_skipped(self) -> bool:
+        """True when the verdict was decided without the exact critical
+        values (``tangent(..., values=False)``): ``min``, ``max`` and
+        ``judging_poly`` are then ``None``."""
+        return self._json["judging_poly"] is None
 
     @property
     def certificate(self) -> Dict[str, Any]:
@@ -588,7 +596,13 @@ class ResultantResult(_Result):
 # --------------------------------------------------------------- jobs
 
 
-def tangent(ellipsoid: str, surface: str, *, time_limit: Optional[float] = None) -> TangentResult:
+def tangent(
+    ellipsoid: str,
+    surface: str,
+    *,
+    time_limit: Optional[float] = None,
+    values: bool = True,
+) -> TangentResult:
     """How the ellipsoid ``E = 0`` and the surface ``S = 0`` meet (the tangent
     point method), exactly.
 
@@ -597,13 +611,22 @@ def tangent(ellipsoid: str, surface: str, *, time_limit: Optional[float] = None)
     ``verdict == "undecided"`` with ``undecided_kind == "budget"`` and the
     ``reason``.  Bad input raises :class:`InputError`.
 
+    ``values=False`` asks for the verdict and its certificate only: for a
+    surface of degree ≥ 3 in general position the judging polynomial D(u)
+    and the exact ``min``/``max`` are then skipped (``None``;
+    ``values_skipped`` is true) and the sign of S at each real critical
+    point is proven by an interval enclosure — about twice as fast.
+
     >>> r = quadsect.tangent("x^2+y^2+z^2-25", "(x-6)^2/9+y^2/4+z^2/16-1")
     >>> r.verdict, r.intersect, r.side
     ('intersecting', True, None)
     >>> r.min < 0 < r.max
     True
+    >>> v = quadsect.tangent("x^2+2y^2+3z^2-6", "x^3-2x*y+z^2+y*z-1", values=False)
+    >>> v.verdict, v.values_skipped, v.min
+    ('intersecting', True, None)
     """
-    return TangentResult(*_quadsect.tangent(ellipsoid, surface, time_limit))
+    return TangentResult(*_quadsect.tangent(ellipsoid, surface, time_limit, values))
 
 
 def natural(

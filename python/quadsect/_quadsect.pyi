@@ -60,7 +60,10 @@ class Batch(Iterator[str]):
     def __next__(self) -> str: ...
 
 def tangent(
-    ellipsoid: str, surface: str, time_limit: Optional[float] = None
+    ellipsoid: str,
+    surface: str,
+    time_limit: Optional[float] = None,
+    values: bool = True,
 ) -> Tuple[
     str,
     str,

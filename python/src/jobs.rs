@@ -33,20 +33,25 @@ type TangentParts = (
     Option<(String, String)>,
 );
 
-/// tangent(ellipsoid, surface, time_limit) -> (json, text, min, max,
-/// critical_values, nonreal_point_values, undecided)
+/// tangent(ellipsoid, surface, time_limit, values) -> (json, text, min,
+/// max, critical_values, nonreal_point_values, undecided)
 ///
 /// `undecided` is `None` or `(kind, reason)` with kind `budget` or
-/// `no-certificate`.
+/// `no-certificate`; `values = False` asks for the verdict only (no D(u),
+/// min, max when they cost extra).
 #[pyfunction]
-#[pyo3(signature = (ellipsoid, surface, time_limit = None))]
+#[pyo3(signature = (ellipsoid, surface, time_limit = None, values = true))]
 pub(crate) fn tangent(
     py: Python<'_>,
     ellipsoid: &str,
     surface: &str,
     time_limit: Option<f64>,
+    values: bool,
 ) -> PyResult<TangentParts> {
-    let options = TangentOptions::with_budget(guard::budget(py, time_limit)?);
+    let mut options = TangentOptions::with_budget(guard::budget(py, time_limit)?);
+    if !values {
+        options = options.without_values();
+    }
     guard::run(py, || {
         let e: Ellipsoid = parse(ellipsoid, "in the ellipsoid")?;
         let s: Polynomial = parse(surface, "in the surface")?;

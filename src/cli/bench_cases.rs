@@ -207,17 +207,35 @@ pub fn time_case(
     c: &Case,
     limit: std::time::Duration,
 ) -> (f64, Option<crate::tangent::TangentReport>) {
-    use crate::budget::{self, Budget};
-    let b = Budget::unlimited().with_time_limit(Some(limit));
+    time_case_with(c, limit, true)
+}
+
+/// [`time_case`] with or without the exact values (`values = false`: the
+/// verdict only, [`crate::tangent::TangentOptions::without_values`]).
+pub fn time_case_with(
+    c: &Case,
+    limit: std::time::Duration,
+    values: bool,
+) -> (f64, Option<crate::tangent::TangentReport>) {
+    use crate::budget::Budget;
+    let e = match Ellipsoid::from_poly(&c.e) {
+        Ok(e) => e,
+        Err(_) => return (0.0, None),
+    };
+    let s = crate::poly::Polynomial::from_inner(c.s.clone());
+    let mut opts = crate::tangent::TangentOptions::with_budget(
+        Budget::unlimited().with_time_limit(Some(limit)),
+    );
+    opts.values = values;
     let mut times = Vec::new();
     let mut last = None;
     let start = std::time::Instant::now();
     while times.len() < 3 || (start.elapsed().as_secs_f64() < 0.05 && times.len() < 101) {
         let t = std::time::Instant::now();
-        let r = budget::run(&b, || crate::tangent::decide_poly(&c.e, &c.s));
+        let r = crate::tangent::decide_with(&e, &s, &opts);
         times.push(t.elapsed().as_secs_f64());
         match r {
-            Ok(Ok(rep)) => last = Some(rep),
+            Ok(rep) if rep.undecided().is_none() => last = Some(rep),
             _ => return (t.elapsed().as_secs_f64(), None),
         }
         if start.elapsed().as_secs_f64() > 30.0 {
@@ -297,13 +315,16 @@ pub fn general_position_suite(rows: &mut Vec<Row>) {
             (t, i, describe(&r))
         })
         .collect();
-    let modular = per.iter().filter(|p| p.2.contains("modular")).count();
+    let modular = per
+        .iter()
+        .filter(|p| p.2.contains("modular") || p.2.contains("poisson"))
+        .count();
     per.sort_by(|a, b| a.0.total_cmp(&b.0));
     rows.push(Row {
         suite: "tangent",
         id: "quartic_pairs_median".into(),
         desc: format!(
-            "full verdict, quartic S vs general ellipsoid: median over 100 random pairs ({modular} by the modular route)"
+            "full verdict, quartic S vs general ellipsoid: median over 100 random pairs ({modular} by a modular route)"
         ),
         median: per[per.len() / 2].0,
         samples: per.len(),
@@ -316,6 +337,27 @@ pub fn general_position_suite(rows: &mut Vec<Row>) {
         desc: format!("the slowest of the 100 pairs (pair {i}: {d})"),
         median: t,
         samples: per.len(),
+        extra: Default::default(),
+    });
+    let mut vo: Vec<f64> = pairs
+        .iter()
+        .map(|c| time_case_with(c, limit, false).0)
+        .collect();
+    vo.sort_by(|a, b| a.total_cmp(b));
+    rows.push(Row {
+        suite: "tangent",
+        id: "quartic_pairs_verdict_only_median".into(),
+        desc: "verdict only (no exact values), the same 100 pairs: median".into(),
+        median: vo[vo.len() / 2],
+        samples: vo.len(),
+        extra: Default::default(),
+    });
+    rows.push(Row {
+        suite: "tangent",
+        id: "quartic_pairs_verdict_only_max".into(),
+        desc: "verdict only, the same 100 pairs: the slowest".into(),
+        median: *vo.last().expect("100 pairs"),
+        samples: vo.len(),
         extra: Default::default(),
     });
     let mut singles = vec![issue_example()];
@@ -331,6 +373,15 @@ pub fn general_position_suite(rows: &mut Vec<Row>) {
             suite: "tangent",
             id: c.id.clone(),
             desc: format!("full verdict ({})", describe(&r)),
+            median: t,
+            samples: 3,
+            extra: Default::default(),
+        });
+        let (t, r) = time_case_with(&c, limit, false);
+        rows.push(Row {
+            suite: "tangent",
+            id: format!("{}_verdict_only", c.id),
+            desc: format!("verdict only, no exact values ({})", describe(&r)),
             median: t,
             samples: 3,
             extra: Default::default(),

@@ -10,8 +10,8 @@
 //! exponentially as naive Euclid over Q would.
 
 pub mod f4;
-pub mod poisson;
 pub mod groebner;
+pub mod poisson;
 pub mod quotient;
 
 use crate::number::modular::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};

@@ -33,7 +33,9 @@
 //! det(F₃(x, y, 1) on K[x, y]/(F₁(x, y, 1), F₂(x, y, 1)))` when the binary
 //! resultant is non-zero (else another variable plays z).
 
-use super::f4::{ModGb, ModPoly, ModQuotient, Mono, exps, groebner_mod, mono, normalize, zmpoly_mod};
+use super::f4::{
+    ModGb, ModPoly, ModQuotient, Mono, exps, groebner_mod, mono, normalize, zmpoly_mod,
+};
 use crate::number::reconstruct::Fp;
 use crate::poly::ZMPoly;
 use crate::poly::mpoly::{X, Y, Z};

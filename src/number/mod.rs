@@ -12,11 +12,11 @@
 pub(crate) mod filter;
 pub mod fixed;
 pub(crate) mod float;
+pub(crate) mod modkernel;
 pub mod modular;
 mod parse;
 pub mod qsqrt;
 pub(crate) mod reconstruct;
-pub(crate) mod modkernel;
 mod sign;
 
 pub use float::double_value;

@@ -256,7 +256,10 @@ mod tests {
         for n in [0usize, 1, 5, 16, 33] {
             let a = rand_vec(&mut seed, n, fp.p);
             let b = rand_vec(&mut seed, n, fp.p);
-            let want = a.iter().zip(&b).fold(0, |s, (&x, &y)| fp.add(s, fp.mul(x, y)));
+            let want = a
+                .iter()
+                .zip(&b)
+                .fold(0, |s, (&x, &y)| fp.add(s, fp.mul(x, y)));
             assert_eq!(dot(&fp, &a, &b), want);
             let mut acc = b.clone();
             axpy_lazy(&fp, &mut acc, 12345, &a);
@@ -277,8 +280,10 @@ mod tests {
             let rhs: Vec<Vec<u64>> = (0..3).map(|_| rand_vec(&mut seed, n, fp.p)).collect();
             let sol = solve_columns(&fp, &k, &rhs).expect("random matrices are invertible");
             for (r, x) in rhs.iter().zip(&sol) {
-                let cols: Vec<Vec<u32>> =
-                    k.iter().map(|c| c.iter().map(|&v| v as u32).collect()).collect();
+                let cols: Vec<Vec<u32>> = k
+                    .iter()
+                    .map(|c| c.iter().map(|&v| v as u32).collect())
+                    .collect();
                 assert_eq!(&mat_vec(&fp, &cols, x), r);
             }
         }

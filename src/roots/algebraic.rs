@@ -254,7 +254,7 @@ impl RealAlg {
                 return;
             };
             let w = Self::approx_width(lo, hi, digits);
-            if &(hi - lo) <= &w {
+            if (hi - lo) <= w {
                 return;
             }
             self.refine_to(&w);

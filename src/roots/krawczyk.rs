@@ -53,7 +53,10 @@ impl Fix {
     /// The ends as rationals.
     pub fn to_q(&self, k: usize) -> (Q, Q) {
         let d = BigInt::one() << k;
-        (Q::new(self.lo.clone(), d.clone()), Q::new(self.hi.clone(), d))
+        (
+            Q::new(self.lo.clone(), d.clone()),
+            Q::new(self.hi.clone(), d),
+        )
     }
 
     fn add(&self, o: &Fix) -> Fix {
@@ -136,7 +139,11 @@ pub fn eval_box(p: &ZMPoly, bx: &[Fix; 3], k: usize) -> Fix {
                     let sq = h.mul(h, k);
                     // an even power is ≥ 0
                     Fix {
-                        lo: if h.contains_zero() { BigInt::zero() } else { sq.lo },
+                        lo: if h.contains_zero() {
+                            BigInt::zero()
+                        } else {
+                            sq.lo
+                        },
                         hi: sq.hi,
                     }
                 } else {
@@ -263,7 +270,11 @@ impl Fix {
 
 /// `⌊n·2^e / d⌋` for `d ≠ 0` (e may be negative: then `⌊n / (d·2^-e)⌋`).
 fn floor_scaled(n: &BigInt, d: &BigInt, e: i64) -> BigInt {
-    let (n, d) = if d.is_negative() { (-n, -d) } else { (n.clone(), d.clone()) };
+    let (n, d) = if d.is_negative() {
+        (-n, -d)
+    } else {
+        (n.clone(), d.clone())
+    };
     if e >= 0 {
         (n << e as usize).div_floor(&d)
     } else {
@@ -302,7 +313,8 @@ impl System {
                 v
             })
             .collect();
-        let mut monos: std::collections::HashMap<[u32; 3], BigInt> = std::collections::HashMap::new();
+        let mut monos: std::collections::HashMap<[u32; 3], BigInt> =
+            std::collections::HashMap::new();
         let mut mono = |ex: [u32; 3]| -> BigInt {
             monos
                 .entry(ex)
@@ -340,7 +352,7 @@ impl System {
             let rs: Vec<usize> = (0..3).filter(|&t| t != r).collect();
             let cs: Vec<usize> = (0..3).filter(|&t| t != c).collect();
             let v = &j[rs[0]][cs[0]] * &j[rs[1]][cs[1]] - &j[rs[0]][cs[1]] * &j[rs[1]][cs[0]];
-            if (r + c) % 2 == 0 { v } else { -v }
+            if (r + c).is_multiple_of(2) { v } else { -v }
         };
         let adj: [[BigInt; 3]; 3] = std::array::from_fn(|a| std::array::from_fn(|b| cof(b, a)));
         let det = &j[0][0] * &adj[0][0] + &j[0][1] * &adj[1][0] + &j[0][2] * &adj[2][0];
@@ -377,7 +389,14 @@ impl System {
     /// `2^-k`, with the preconditioner `y` at scale `2^-ky`: the box with
     /// the enclosure `K(X) ∩ X` when `K(X)` lies in the interior of X
     /// (exactly one zero in X), `None` otherwise.
-    fn krawczyk(&self, c: &Dyadic3, r: &BigInt, y: &[[Fix; 3]; 3], ky: usize, k: usize) -> Option<ZeroBox> {
+    fn krawczyk(
+        &self,
+        c: &Dyadic3,
+        r: &BigInt,
+        y: &[[Fix; 3]; 3],
+        ky: usize,
+        k: usize,
+    ) -> Option<ZeroBox> {
         let cf = c.at_scale(k);
         let xb: [Fix; 3] = std::array::from_fn(|i| Fix {
             lo: &cf[i] - r,
@@ -473,7 +492,12 @@ mod tests {
     fn certifies_the_zero_it_should() {
         // zeros (±√2, 1, ±√2 + 1)
         let s = sys(["x^2 - 2", "y - 1", "z - x - 1"]);
-        let b = s.certify(&Dyadic3::floor_of(&[q(141, 100), q(1, 1), q(241, 100)], 30), 60).unwrap();
+        let b = s
+            .certify(
+                &Dyadic3::floor_of(&[q(141, 100), q(1, 1), q(241, 100)], 30),
+                60,
+            )
+            .unwrap();
         let (lo, hi) = b.enclosure[0].to_q(b.k);
         // √2 ∈ [lo, hi]: lo² ≤ 2 ≤ hi², and the box is narrow
         assert!(&lo * &lo <= q(2, 1) && &hi * &hi >= q(2, 1));
@@ -488,14 +512,22 @@ mod tests {
             assert!(&l * &l <= q(2, 1) && &h * &h >= q(2, 1));
         }
         // two zeros give disjoint boxes
-        let c = s.certify(&Dyadic3::floor_of(&[q(-141, 100), q(1, 1), q(-41, 100)], 30), 60).unwrap();
+        let c = s
+            .certify(
+                &Dyadic3::floor_of(&[q(-141, 100), q(1, 1), q(-41, 100)], 30),
+                60,
+            )
+            .unwrap();
         assert!(b.disjoint(&c));
     }
 
     /// The enclosure of a polynomial on a box contains its values there.
     #[test]
     fn eval_box_encloses() {
-        let p = parse_poly("x^3 - 2*x*y + z^2 - 3").unwrap().to_primitive_z().0;
+        let p = parse_poly("x^3 - 2*x*y + z^2 - 3")
+            .unwrap()
+            .to_primitive_z()
+            .0;
         let k = 20;
         let bx = [
             Fix::of_q(&q(-1, 2), k),
@@ -510,7 +542,11 @@ mod tests {
         let e = eval_box(&p, &wide, k);
         for corner in 0..8 {
             let pt: [Q; 3] = std::array::from_fn(|i| {
-                let v = if corner >> i & 1 == 1 { &wide[i].hi } else { &wide[i].lo };
+                let v = if corner >> i & 1 == 1 {
+                    &wide[i].hi
+                } else {
+                    &wide[i].lo
+                };
                 Q::new(v.clone(), BigInt::one() << k)
             });
             let mut full: [Q; crate::poly::mpoly::NVARS] = std::array::from_fn(|_| Q::zero());

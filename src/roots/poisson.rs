@@ -20,12 +20,12 @@
 //!   inequality by Sombra's bound on `Res(u − h, f)`.
 
 use super::modrur::Declined;
-use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
 use crate::elim::f4::{
     ModGb, ModPoly, ModQuotient, Mono, SparseMult, exps, mono, rank, zmpoly_mod,
 };
 use crate::elim::poisson::{PrimeFail, SquareSystem, max_coeff, resultant_bound_bits};
 use crate::number::Q;
+use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
 use crate::number::reconstruct::{CrtVec, Fp, prime31, symmetric_mod};
 use crate::poly::{ZMPoly, ZPoly};
 use num_bigint::BigInt;
@@ -478,9 +478,8 @@ impl ModAlgebra {
         let n = self.n();
         // terms by exponent of x, then y; inner sums are combinations of
         // the powers of z (no products)
-        let mut terms: Vec<([u32; 3], u64)> =
-            p.iter().map(|&(m, c)| (exps(m), c as u64)).collect();
-        terms.sort_by(|a, b| b.0.cmp(&a.0));
+        let mut terms: Vec<([u32; 3], u64)> = p.iter().map(|&(m, c)| (exps(m), c as u64)).collect();
+        terms.sort_by_key(|t| std::cmp::Reverse(t.0));
         let dz = terms.iter().map(|t| t.0[2]).max().unwrap_or(0) as usize;
         let mut zp: Vec<Vec<u64>> = Vec::with_capacity(dz + 1);
         let mut one = vec![0u64; n];
@@ -752,7 +751,10 @@ pub fn value_polynomial(
         let fp = Fp::new(prime31(k));
         let fm = zpoly_mod(&fp, f);
         let r = fp.reduce_big(&rbar);
-        let (sn, sd) = (fp.reduce_big(map.scale.numer()), fp.reduce_big(map.scale.denom()));
+        let (sn, sd) = (
+            fp.reduce_big(map.scale.numer()),
+            fp.reduce_big(map.scale.denom()),
+        );
         if fm.last() == Some(&0) || r == 0 || sn == 0 || sd == 0 {
             continue;
         }
@@ -792,7 +794,9 @@ pub fn value_polynomial(
             return Ok((ZPoly::new(vals), crt.primes()));
         }
     }
-    Err(Declined("the prime limit was reached (value polynomial)".into()))
+    Err(Declined(
+        "the prime limit was reached (value polynomial)".into(),
+    ))
 }
 
 /// Sombra's bound (bits) on the coefficients of `Res(u − h, system)`.
@@ -807,7 +811,6 @@ pub fn value_bound_bits(sys: &SquareSystem, h: &ZMPoly) -> u64 {
     ];
     resultant_bound_bits(&degs, &bounds)
 }
-
 
 #[cfg(test)]
 mod tests {
@@ -837,8 +840,12 @@ mod tests {
     /// multiplication matrix) equal the dense ones (Krylov and a solve).
     #[test]
     fn sparse_and_dense_kronecker_agree() {
-        let gens = ["x^2 + 2y^2 + 3z^2 - 6", "x^3 - 2x*y + z - 1", "y^3 + x*z - 2"]
-            .map(|g| parse_poly(g).unwrap().to_primitive_z().0);
+        let gens = [
+            "x^2 + 2y^2 + 3z^2 - 6",
+            "x^3 - 2x*y + z - 1",
+            "y^3 + x*z - 2",
+        ]
+        .map(|g| parse_poly(g).unwrap().to_primitive_z().0);
         let sys = SquareSystem::new(gens).unwrap();
         for k in 0..3 {
             let fp = Fp::new(prime31(k));

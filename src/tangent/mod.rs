@@ -889,7 +889,11 @@ fn finish_signs(e: &Ellipsoid, surface: &QMPoly, an: poisson::PoissonAnalysis) -
             .filter(|&i| signs[i] == want)
             .max_by(|&i, &j| {
                 let (a, b) = (&an.enclosures[i].1, &an.enclosures[j].1);
-                if want < 0 { b.0.cmp(&a.0) } else { a.1.cmp(&b.1) }
+                if want < 0 {
+                    b.0.cmp(&a.0)
+                } else {
+                    a.1.cmp(&b.1)
+                }
             })?;
         an.witness_at(i, e, surface, want)
     };
@@ -905,7 +909,11 @@ fn finish_signs(e: &Ellipsoid, surface: &QMPoly, an: poisson::PoissonAnalysis) -
         intersect: Some(intersect),
         touching: Some(false),
         side,
-        containment: if intersect { None } else { containment_of(e, surface, side.unwrap_or(0)) },
+        containment: if intersect {
+            None
+        } else {
+            containment_of(e, surface, side.unwrap_or(0))
+        },
         min: None,
         max: None,
         judging_poly: ZPoly::constant(num_bigint::BigInt::from(1)),

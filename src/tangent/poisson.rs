@@ -30,12 +30,12 @@ use crate::number::reconstruct::{Fp, prime31};
 use crate::number::{Q, dyadic_floor, qi};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
+use crate::roots::krawczyk::{System, ZeroBox, eval_box};
 use crate::roots::modrur::Declined;
 use crate::roots::poisson::{
     ModAlgebra, PoissonRur, ValueMap, poly_gcd_mod, solve_square, value_bound_bits,
     value_polynomial, zpoly_mod,
 };
-use crate::roots::krawczyk::{System, ZeroBox, eval_box};
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -169,9 +169,10 @@ impl PoissonAnalysis {
             })
             .collect();
         order.sort();
-        order.into_iter().take(3).find_map(|(_, i)| {
-            find_witness(e, s, want, false, &|bits| self.approx_point(i, bits))
-        })
+        order
+            .into_iter()
+            .take(3)
+            .find_map(|(_, i)| find_witness(e, s, want, false, &|bits| self.approx_point(i, bits)))
     }
 }
 
@@ -204,7 +205,9 @@ fn approx_value(p: &QMPoly, pt: &[Q; 3]) -> Q {
 fn orthogonal_basis(n: [i64; 3]) -> ([i64; 3], [i64; 3]) {
     // e_i × n and e_j × n (i, j the coordinates other than k) are
     // independent exactly when n_k ≠ 0: take k with |n_k| largest
-    let k = (0..3).max_by_key(|&i| n[i].abs()).expect("three coordinates");
+    let k = (0..3)
+        .max_by_key(|&i| n[i].abs())
+        .expect("three coordinates");
     let e = |i: usize| {
         let mut v = [0i64; 3];
         v[i] = 1;
@@ -447,10 +450,16 @@ fn reduce_mod_ellipsoid(s: &QMPoly, e: &QMPoly) -> QMPoly {
         x2[X] = 2;
         x2
     }))
-    .scale(&(-Q::one() / &e2));
+        .scale(&(-Q::one() / &e2));
     let mut r = s.clone();
     loop {
-        let Some(top) = r.terms().iter().filter(|(ex, _)| ex[X] >= 2).max_by_key(|(ex, _)| ex[X]).cloned() else {
+        let Some(top) = r
+            .terms()
+            .iter()
+            .filter(|(ex, _)| ex[X] >= 2)
+            .max_by_key(|(ex, _)| ex[X])
+            .cloned()
+        else {
             return r;
         };
         // replace every term with x^a, a ≥ 2, of the highest a at once
@@ -489,7 +498,12 @@ struct FixIv {
 
 impl FixIv {
     fn mul(&self, o: &FixIv, k: usize) -> FixIv {
-        let c = [&self.lo * &o.lo, &self.lo * &o.hi, &self.hi * &o.lo, &self.hi * &o.hi];
+        let c = [
+            &self.lo * &o.lo,
+            &self.lo * &o.hi,
+            &self.hi * &o.lo,
+            &self.hi * &o.hi,
+        ];
         let lo = c.iter().min().expect("four").clone();
         let hi = c.iter().max().expect("four").clone();
         // floor(lo / 2^k) and ceil(hi / 2^k); `>>` rounds towards −∞
@@ -511,14 +525,22 @@ fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
         .max()
         .unwrap_or(1) as usize;
     // ⌊q·2^k⌋ and ⌈q·2^k⌉ (exact for the dyadic ends this is used with)
-    let fix_lo = |q: &Q| -> BigInt { num_integer::Integer::div_floor(&(q.numer() << k), q.denom()) };
-    let fix_hi = |q: &Q| -> BigInt { -num_integer::Integer::div_floor(&(-q.numer() << k), q.denom()) };
+    let fix_lo =
+        |q: &Q| -> BigInt { num_integer::Integer::div_floor(&(q.numer() << k), q.denom()) };
+    let fix_hi =
+        |q: &Q| -> BigInt { -num_integer::Integer::div_floor(&(-q.numer() << k), q.denom()) };
     let d = pz.total_degree().unwrap_or(0) as usize;
-    let one = FixIv { lo: BigInt::one() << k, hi: BigInt::one() << k };
+    let one = FixIv {
+        lo: BigInt::one() << k,
+        hi: BigInt::one() << k,
+    };
     let pows: Vec<Vec<FixIv>> = bx
         .iter()
         .map(|(a, b)| {
-            let base = FixIv { lo: fix_lo(a), hi: fix_hi(b) };
+            let base = FixIv {
+                lo: fix_lo(a),
+                hi: fix_hi(b),
+            };
             let mut v = vec![one.clone()];
             for e in 1..=d {
                 let next = if e % 2 == 0 {
@@ -526,9 +548,15 @@ fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
                     let h = &v[e / 2];
                     let sq = h.mul(h, k);
                     if h.lo.is_negative() && h.hi.is_positive() {
-                        FixIv { lo: BigInt::zero(), hi: sq.hi }
+                        FixIv {
+                            lo: BigInt::zero(),
+                            hi: sq.hi,
+                        }
                     } else if v[1].lo.is_negative() && v[1].hi.is_positive() {
-                        FixIv { lo: BigInt::zero().max(sq.lo), hi: sq.hi }
+                        FixIv {
+                            lo: BigInt::zero().max(sq.lo),
+                            hi: sq.hi,
+                        }
                     } else {
                         sq
                     }
@@ -652,7 +680,9 @@ fn point_signs(rur: &PoissonRur, s: &QMPoly, points: &[RealAlg]) -> Option<Vec<(
             }
         }
     }
-    out.into_iter().map(|(sign, iv)| Some((sign, iv?))).collect()
+    out.into_iter()
+        .map(|(sign, iv)| Some((sign, iv?)))
+        .collect()
 }
 
 /// The sign of S at the real critical point of RUR root `alpha`, with an
@@ -720,7 +750,14 @@ fn identify_values(
                 let pt = rur
                     .point_at(x)
                     .ok_or_else(|| Declined("w′ vanishes at a rational root".into()))?;
-                let mut full = [Q::zero(), Q::zero(), Q::zero(), Q::zero(), Q::zero(), Q::zero()];
+                let mut full = [
+                    Q::zero(),
+                    Q::zero(),
+                    Q::zero(),
+                    Q::zero(),
+                    Q::zero(),
+                    Q::zero(),
+                ];
                 full[..3].clone_from_slice(&pt);
                 found = Some(RealAlg::rational(s.eval(&full)));
                 break;

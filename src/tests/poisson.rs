@@ -32,8 +32,16 @@ const FORMS: [[i64; 3]; 6] = crate::tangent::poisson::FORMS;
 fn the_rur_is_exact() {
     for gens in [
         ["x^2 - 2", "y - x - 1", "z^2 - 3"],
-        ["x^2 + 2y^2 + 3z^2 - 6", "x^3 - 2x*y + z - 1", "y^3 + x*z - 2"],
-        ["2x^2 + y^2 + z^2 + x*y - 5", "x^2*y - z^3 + y - 1", "x*z^2 + y^2 - 3z + 2"],
+        [
+            "x^2 + 2y^2 + 3z^2 - 6",
+            "x^3 - 2x*y + z - 1",
+            "y^3 + x*z - 2",
+        ],
+        [
+            "2x^2 + y^2 + z^2 + x*y - 5",
+            "x^2*y - z^3 + y - 1",
+            "x*z^2 + y^2 - 3z + 2",
+        ],
     ] {
         let f = gens.map(zpoly);
         let mut sys = SquareSystem::new(f.clone()).unwrap();
@@ -48,14 +56,10 @@ fn the_rur_is_exact() {
                 u_coef: BigInt::zero(),
             })
             .collect();
-        vanish_on_roots(&rur.w, &rur.v, &rur.wd, &checks).unwrap_or_else(|e| {
-            panic!("{gens:?}: a generator does not vanish at the RUR ({e:?})")
-        });
+        vanish_on_roots(&rur.w, &rur.v, &rur.wd, &checks)
+            .unwrap_or_else(|e| panic!("{gens:?}: a generator does not vanish at the RUR ({e:?})"));
         // ℓ(ξ(τ)) = τ: the separating form maps back to the root
-        let l = format!(
-            "{}*x + {}*y + {}*z",
-            rur.form[0], rur.form[1], rur.form[2]
-        );
+        let l = format!("{}*x + {}*y + {}*z", rur.form[0], rur.form[1], rur.form[2]);
         let lcheck = Check {
             p: zpoly(&l),
             k: 1,
@@ -203,7 +207,10 @@ fn agrees_with_the_exact_route(e: &str, s: &str) {
 fn poisson_route_agrees_on_fixed_cases() {
     for (e, s) in [
         ("x^2 + 2y^2 + 3z^2 + x*z - 6", "x^3 - 2x*y + z^2 + y*z - 1"),
-        ("2x^2 + y^2 + 3z^2 + x*y - y*z - 7", "x^3 + y^3 - z^3 + x*z - 2y + 1"),
+        (
+            "2x^2 + y^2 + 3z^2 + x*y - y*z - 7",
+            "x^3 + y^3 - z^3 + x*z - 2y + 1",
+        ),
         // a critical point on the silhouette z = 0 of the first direction
         // (the extras of n = e_z are then not simple): another direction
         ("x^2 + y^2 + z^2 - 1", "x^3 + y^3 + z^3 + x*y/3"),
@@ -221,12 +228,15 @@ fn poisson_route_agrees_on_fixed_cases() {
 #[test]
 fn multiple_critical_points_are_declined() {
     let (e, s) = ("x^2 + y^2 + z^2 - 1", "x^3 - 2y*z + x*y*z + 5");
-    let d = crate::tangent::poisson::analyze(&ellipsoid(e), &parse_poly(s).unwrap(), true)
-        .unwrap_err();
+    let d =
+        crate::tangent::poisson::analyze(&ellipsoid(e), &parse_poly(s).unwrap(), true).unwrap_err();
     assert!(d.0.contains("multiple zeros"), "{d:?}");
     let r = crate::tangent::decide_str(e, s).unwrap();
     assert_eq!(r.verdict(), Verdict::Separated);
-    assert_eq!(r.certificate().method(), crate::tangent::Method::CriticalIdeal);
+    assert_eq!(
+        r.certificate().method(),
+        crate::tangent::Method::CriticalIdeal
+    );
 }
 
 proptest! {

@@ -270,9 +270,7 @@ pub fn tangent_json(r: &TangentReport) -> Value {
     if let Value::Object(m) = &mut cert {
         m.insert(
             "critical_values".into(),
-            Value::Array(
-                c.critical_values.iter().map(|v| algs.json(v)).collect(),
-            ),
+            Value::Array(c.critical_values.iter().map(|v| algs.json(v)).collect()),
         );
         m.insert(
             "nonreal_point_values".into(),
