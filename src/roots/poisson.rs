@@ -417,7 +417,10 @@ impl ModAlgebra {
         let fp = &self.fp;
         let n = self.n();
         let t = self.traces(2 * n - 1);
-        let r = ((n + 1) as f64).sqrt().ceil() as usize;
+        // r = ⌈√(n + 1)⌉ baby steps
+        let r = (1..)
+            .find(|&r: &usize| r * r > n)
+            .expect("r² > n for some r");
         // baby steps s^0 … s^(r−1) and H·s^i (H_ij = Tr(T^(i+j)))
         let mut one = vec![0u64; n];
         one[0] = 1;
@@ -742,7 +745,8 @@ pub fn value_polynomial(
         return Ok((ZPoly::constant(BigInt::one()), 0));
     }
     // ‖R̄^e·A‖∞ ≤ 2^deg A · √(deg Q_h + 1) · 2^resultant_bits (Landau)
-    let sqrt_bits = (((bezout + 1) as f64).log2() / 2.0).ceil() as u64 + 1;
+    // √(deg Q_h + 1) < 2^⌈bits(deg Q_h + 1)/2⌉
+    let sqrt_bits = (usize::BITS - (bezout + 1).leading_zeros()).div_ceil(2) as u64;
     let target = resultant_bits + nf as u64 + sqrt_bits;
     let rbar = rur.leading_resultant();
     let mut crt = CrtVec::new(nf + 1);
