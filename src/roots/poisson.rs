@@ -624,22 +624,40 @@ pub fn solve_square(
     for k in 0..max_primes {
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
+        // R̄ mod p first (a small computation): R̄ ≡ 0 means zeros at infinity
+        // modulo p, and the Gröbner basis is not needed to see it
+        let zeros_at_infinity = |dim_fails: &mut usize| -> Option<Result<PoissonRur, Declined>> {
+            *dim_fails += 1;
+            (chosen.is_none() && *dim_fails >= 3).then(|| {
+                decline(
+                    "zeros at infinity: the leading forms have a common zero modulo three primes",
+                )
+            })
+        };
+        let r = match sys.leading_resultant_mod(&fp) {
+            Ok(0) => {
+                if let Some(d) = zeros_at_infinity(&mut dim_fails) {
+                    return d;
+                }
+                continue;
+            }
+            Ok(r) => r,
+            Err(PrimeFail::TooLarge) => return decline("degree too large for the modular route"),
+            Err(_) => {
+                fails += 1;
+                continue;
+            }
+        };
         let (gb, basis) = match sys.quotient_mod(&fp) {
             Ok(q) => q,
             Err(PrimeFail::TooLarge) => return decline("degree too large for the modular route"),
             Err(_) => {
-                dim_fails += 1;
-                if chosen.is_none() && dim_fails >= 3 {
-                    return decline(
-                        "zeros at infinity: the quotient modulo three primes is not of the Bézout dimension",
-                    );
+                // R̄ ≢ 0 gives the Bézout dimension: only a bug gets here
+                if let Some(d) = zeros_at_infinity(&mut dim_fails) {
+                    return d;
                 }
                 continue;
             }
-        };
-        let Ok(r) = sys.leading_resultant_mod(&fp) else {
-            fails += 1;
-            continue;
         };
         let candidates: Vec<usize> = match chosen {
             Some(i) => vec![i],
@@ -659,7 +677,7 @@ pub fn solve_square(
         });
         let Some((i, (f_low, g))) = got else {
             fails += 1;
-            if chosen.is_none() && fails >= 3 {
+            if chosen.is_none() && fails >= 2 {
                 return decline(
                     "no linear form tried separates the zeros (multiple zeros or a symmetric system)",
                 );

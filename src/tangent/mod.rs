@@ -783,13 +783,6 @@ fn finish(
     {
         notes.push("curves of critical points on a branch with two free coordinates; every critical value is exact".into());
     }
-    // the report prints each value with 20 digits: refine once here, not
-    // in every printed clone
-    let mut values = values;
-    let mut nonreal = nonreal;
-    for v in values.iter_mut().chain(nonreal.iter_mut()) {
-        v.refine_for_approx(20);
-    }
     let (min, max) = match (values.first(), values.last()) {
         (Some(a), Some(b)) => (a.simplify(), b.simplify()),
         _ => {

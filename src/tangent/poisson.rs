@@ -46,14 +46,7 @@ pub const DIRECTIONS: [[i64; 3]; 4] = [[0, 0, 1], [1, 2, 3], [3, -1, 2], [-2, 5,
 /// The separating linear forms tried in turn: single variables first
 /// (their multiplication matrices are sparse), z first (the smallest in
 /// grevlex: the fewest dense columns).
-pub const FORMS: [[i64; 3]; 6] = [
-    [0, 0, 1],
-    [0, 1, 0],
-    [1, 0, 0],
-    [1, 3, -2],
-    [2, -1, 5],
-    [1, 7, 3],
-];
+pub const FORMS: [[i64; 3]; 4] = [[0, 0, 1], [0, 1, 0], [1, 0, 0], [1, 3, -2]];
 
 /// The largest number of primes of one lifting.
 pub const MAX_PRIMES: usize = 20_000;

@@ -22,7 +22,7 @@ fn zpoly(s: &str) -> ZMPoly {
 }
 
 /// The forms of `solve_square` used by the tangent route.
-const FORMS: [[i64; 3]; 6] = crate::tangent::poisson::FORMS;
+const FORMS: [[i64; 3]; 4] = crate::tangent::poisson::FORMS;
 
 /// The RUR satisfies every equation at every root, exactly: `w` divides
 /// the homogenised compositions `W^k·f(V/W)` at `(V, w′)` in Z[u] (the

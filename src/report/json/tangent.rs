@@ -1,6 +1,6 @@
 //! JSON of `quadsect tangent` (contract §3 JSON and the human summary).
 
-use crate::number::QSqrt;
+use crate::number::{Q, QSqrt};
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{L, MPoly, T, U};
 use crate::report::upoly_string;
@@ -240,24 +240,35 @@ fn method_json(m: &Analysis) -> Value {
 /// decimal digits are written once.
 struct AlgWriter {
     cache: Vec<(ZPoly, String)>,
+    /// The 20-digit approximations by (polynomial index, interval): min
+    /// and max repeat critical values, each root is refined once.
+    approx: Vec<(usize, (Q, Q), String)>,
 }
 
 impl AlgWriter {
     fn json(&mut self, a: &RealAlg) -> Value {
         let p = a.poly();
-        let poly = match self.cache.iter().find(|(q, _)| *q == p) {
-            Some((_, s)) => s.clone(),
+        let k = match self.cache.iter().position(|(q, _)| *q == p) {
+            Some(k) => k,
             None => {
                 let s = MPoly::from_univariate(&p, U).to_string_canonical();
-                self.cache.push((p, s.clone()));
+                self.cache.push((p, s));
+                self.cache.len() - 1
+            }
+        };
+        let iv = a.interval();
+        let approx = match self.approx.iter().find(|(j, b, _)| *j == k && *b == iv) {
+            Some((_, _, s)) => s.clone(),
+            None => {
+                let s = a.approx(20);
+                self.approx.push((k, iv.clone(), s.clone()));
                 s
             }
         };
-        let (lo, hi) = a.interval();
         json!({
-            "poly": poly,
-            "interval": [crate::number::fmt_q(&lo), crate::number::fmt_q(&hi)],
-            "approx": a.approx(20),
+            "poly": self.cache[k].1,
+            "interval": [crate::number::fmt_q(&iv.0), crate::number::fmt_q(&iv.1)],
+            "approx": approx,
         })
     }
 }
@@ -265,7 +276,10 @@ impl AlgWriter {
 /// `quadsect tangent --json`.
 pub fn tangent_json(r: &TangentReport) -> Value {
     let c = &r.certificate;
-    let mut algs = AlgWriter { cache: Vec::new() };
+    let mut algs = AlgWriter {
+        cache: Vec::new(),
+        approx: Vec::new(),
+    };
     let mut cert = method_json(&c.method);
     if let Value::Object(m) = &mut cert {
         m.insert(
