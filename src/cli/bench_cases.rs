@@ -302,10 +302,6 @@ pub fn dump_systems(dir: &std::path::Path) -> std::io::Result<usize> {
 /// The rows of the general-position benchmark (issue 17).
 pub fn general_position_suite(rows: &mut Vec<Row>) {
     let limit = std::time::Duration::from_secs(10);
-    let describe = |r: &Option<crate::tangent::TangentReport>| match r {
-        Some(r) => format!("{}, {}", r.verdict().as_str(), method_name(r)),
-        None => "undecided: budget (10 s)".into(),
-    };
     let pairs = quartic_pairs();
     let mut per: Vec<(f64, usize, String)> = pairs
         .iter()
@@ -365,8 +361,6 @@ pub fn general_position_suite(rows: &mut Vec<Row>) {
     for d in [5, 6, 8] {
         singles.extend(dense_cases(d));
     }
-    singles.push(big_cubic(300));
-    singles.push(big_cubic(3));
     for c in singles {
         let (t, r) = time_case(&c, limit);
         rows.push(Row {
@@ -384,6 +378,67 @@ pub fn general_position_suite(rows: &mut Vec<Row>) {
             desc: format!("verdict only, no exact values ({})", describe(&r)),
             median: t,
             samples: 3,
+            extra: Default::default(),
+        });
+    }
+    cubic_rows(rows, limit);
+}
+
+/// The verdict and the route of a timed case's report.
+fn describe(r: &Option<crate::tangent::TangentReport>) -> String {
+    match r {
+        Some(r) => format!("{}, {}", r.verdict().as_str(), method_name(r)),
+        None => "undecided: budget (10 s)".into(),
+    }
+}
+
+/// The 300-bit and the 3-bit cubic, timed alternately (7 rounds of each),
+/// so that their ratio — what coefficient size costs — is measured under
+/// the same machine conditions; the ratio is in the description and in
+/// the row's `ratio_to_3bit`.
+fn cubic_rows(rows: &mut Vec<Row>, limit: std::time::Duration) {
+    let (big, small) = (big_cubic(300), big_cubic(3));
+    for values in [true, false] {
+        let (mut tb, mut ts) = (Vec::new(), Vec::new());
+        let (mut rb, mut rs) = (None, None);
+        for _ in 0..7 {
+            let (t, r) = time_case_with(&big, limit, values);
+            tb.push(t);
+            rb = r;
+            let (t, r) = time_case_with(&small, limit, values);
+            ts.push(t);
+            rs = r;
+        }
+        let median = |v: &mut Vec<f64>| {
+            v.sort_by(|a, b| a.total_cmp(b));
+            v[v.len() / 2]
+        };
+        let (mb, ms) = (median(&mut tb), median(&mut ts));
+        let ratio = if ms > 0.0 { mb / ms } else { f64::NAN };
+        let (what, suffix) = if values {
+            ("full verdict", "")
+        } else {
+            ("verdict only, no exact values", "_verdict_only")
+        };
+        let mut extra = serde_json::Map::new();
+        extra.insert("ratio_to_3bit".into(), serde_json::json!(ratio));
+        rows.push(Row {
+            suite: "tangent",
+            id: format!("{}{suffix}", big.id),
+            desc: format!(
+                "{what} ({}; {ratio:.1}x the 3-bit cubic, timed alternately)",
+                describe(&rb)
+            ),
+            median: mb,
+            samples: 7,
+            extra,
+        });
+        rows.push(Row {
+            suite: "tangent",
+            id: format!("{}{suffix}", small.id),
+            desc: format!("{what} ({})", describe(&rs)),
+            median: ms,
+            samples: 7,
             extra: Default::default(),
         });
     }

@@ -283,8 +283,25 @@ fn floor_scaled(n: &BigInt, d: &BigInt, e: i64) -> BigInt {
 }
 
 impl System {
-    /// The system `f` (three polynomials in x, y, z).
+    /// The system `f` (three polynomials in x, y, z).  Each equation is
+    /// multiplied by a power of two that brings its largest coefficient to
+    /// the size of the largest of all (same zeros): the rows of the
+    /// Jacobian are then of comparable size, and the approximate inverse,
+    /// kept to a number of bits relative to its largest entry, loses none
+    /// of its columns (with one equation of 3-bit and two of 300-bit
+    /// coefficients it otherwise would, and the test would fail).
     pub fn new(f: [ZMPoly; 3]) -> System {
+        let bits = f
+            .clone()
+            .map(|p| p.terms().iter().map(|(_, c)| c.bits()).max().unwrap_or(0));
+        let top = bits.iter().copied().max().unwrap_or(0);
+        let f: [ZMPoly; 3] = std::array::from_fn(|i| {
+            let sh = (top - bits[i]) as usize;
+            if sh == 0 {
+                return f[i].clone();
+            }
+            f[i].scale(&(BigInt::one() << sh))
+        });
         let jac = std::array::from_fn(|i| std::array::from_fn(|j| f[i].derivative([X, Y, Z][j])));
         System { f, jac }
     }

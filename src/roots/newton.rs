@@ -4,14 +4,15 @@
 //! Each round evaluates p and p' at the midpoint `m/2^k` (one Horner pass
 //! over the integers `2^{kn} p(m/2^k)` and `2^{k(n−1)} p'(m/2^k)`).  The
 //! sign of p there halves the interval, as plain bisection would.  The
-//! Newton point `x_N = m/2^k − p/p'`, rounded to a finer dyadic `t/2^K`
-//! (K about twice k, so that quadratic convergence is used), is then
-//! *verified*: when p has the sign of the left end at `(t − 1)/2^K` and the
-//! opposite sign at `(t + 1)/2^K`, both inside the interval, the unique root
-//! lies between them and the interval shrinks to width `2^{1−K}` at once.
+//! Newton point `x_N = m/2^k − p/p'`, rounded to a grid `t·2^e` finer than
+//! the interval by `g` bits (g doubling on success: quadratic convergence,
+//! whatever the root's magnitude), is then
+//! *verified*: when p has the sign of the left end at `(t − 1)·2^e` and the
+//! opposite sign at `(t + 1)·2^e`, both inside the interval, the unique root
+//! lies between them and the interval shrinks to width `2^{e+1}` at once.
 //! A failed check costs two sign evaluations and changes nothing, so the
-//! result is exactly that of bisection, only reached in far fewer rounds
-//! (about log₂(bits) instead of bits).
+//! result is an isolating interval as bisection's, only reached in far
+//! fewer rounds (about log₂(bits) instead of bits).
 
 use super::isolate::{DyadicBracket, Halved};
 use crate::number::{Q, sign_z};
@@ -47,6 +48,14 @@ fn eval_with_derivative(p: &ZPoly, m: &BigInt, k: u64) -> (BigInt, BigInt) {
 /// Refines the bracket `br` around a simple root of `p` (`s_lo` = sign of p
 /// at its lower end, non-zero) until its width is at most `width`; sets
 /// `iv` to the result (an exact root if one is hit).
+///
+/// The Newton bracket is sized relative to the current width, not to an
+/// absolute grid: with the width about `2^L`, the Newton point is rounded
+/// to multiples of `2^e`, `e = L − g`, and bracketed by its neighbours.  The
+/// gain `g` doubles on success (quadratic convergence) and halves on
+/// failure (Abbott's quadratic interval refinement), so roots of any
+/// magnitude (e.g. 2^300 for the values of a big-coefficient S) converge in
+/// about log₂(bits) rounds.
 pub(crate) fn refine_dyadic_newton(
     p: &ZPoly,
     signs: &DyadicSigner,
@@ -56,13 +65,12 @@ pub(crate) fn refine_dyadic_newton(
     width: &Q,
 ) {
     let (wn, wd) = (width.numer(), width.denom());
-    // smallest K with 2^{1−K} ≤ wn/wd (or a little more)
-    let k_target = ((wd << 1usize).bits() as i64 - wn.bits() as i64 + 1).max(0) as u64;
-    // `slack`: bits of Newton's gain given up (grows when a check fails,
-    // e.g. near clustered roots); `wait`: rounds of plain bisection before
-    // the next attempt (doubles on failure), so a failing Newton costs
-    // a bounded fraction of the work
-    let (mut slack, mut wait, mut backoff) = (0u64, 0u32, 1u32);
+    // the finest grid needed: 2^(e_min + 1) ≤ wn/wd
+    let e_min = wn.bits() as i64 - wd.bits() as i64 - 2;
+    // `gain`: bits asked of the next Newton step; `wait`: rounds of plain
+    // bisection before the next attempt (doubles on failure), so a failing
+    // Newton costs a bounded fraction of the work
+    let (mut gain, mut wait, mut backoff) = (4i64, 0u32, 1u32);
     let exact = |iv: &mut RootInterval, x: Q| {
         *iv = RootInterval {
             lo: x.clone(),
@@ -87,29 +95,49 @@ pub(crate) fn refine_dyadic_newton(
         if dv.is_zero() {
             continue;
         }
-        // Newton from the midpoint, verified at ±2^-kn
-        let kn = (2 * km + 2).saturating_sub(slack).min(k_target).max(km + 2);
-        let t = ((&m * &dv - &v) << (kn - km) as usize).div_floor(&dv);
-        let (tl, th) = (&t - 1, &t + 1);
-        let up = (kn - br.k) as usize;
-        let inside = tl > (&br.a << up) && th < (&br.b << up);
-        let ok = inside && {
-            let (sl, sr) = (signs.sign_at(&tl, kn), signs.sign_at(&th, kn));
+        // the width is in (2^(l−1), 2^l]; Newton's point rounded to the
+        // grid 2^e, bracketed by its two neighbours on that grid
+        let l = (&br.b - &br.a).bits() as i64 - br.k as i64;
+        let e = (l - gain).max(e_min);
+        if e >= l - 1 {
+            continue;
+        }
+        // x_N = (m·dv − v) / (dv·2^km); t = ⌊x_N / 2^e⌋
+        let num = &m * &dv - &v;
+        let sh = km as i64 + e;
+        let t = if sh >= 0 {
+            num.div_floor(&(&dv << sh as usize))
+        } else {
+            (num << (-sh) as usize).div_floor(&dv)
+        };
+        // the candidate [(t−1)·2^e, (t+1)·2^e] as a dyadic bracket over
+        // 2^kc, clamped to the current one (whose ends' signs are known)
+        let kk = (-e).max(0) as u64;
+        let kc = br.k.max(kk);
+        let up = e.max(0) as usize + (kc - kk) as usize;
+        let (tl, th) = ((&t - 1) << up, (&t + 1) << up);
+        let (a, b) = (&br.a << (kc - br.k) as usize, &br.b << (kc - br.k) as usize);
+        let (lo_in, hi_in) = (tl > a, th < b);
+        let ok = (lo_in || hi_in) && tl < b && th > a && {
+            let sl = if lo_in { signs.sign_at(&tl, kc) } else { s_lo };
+            let sr = if hi_in { signs.sign_at(&th, kc) } else { -s_lo };
             if sl == 0 || sr == 0 {
-                let root = if sl == 0 { tl } else { th };
-                return exact(iv, crate::number::dyadic(root, kn as usize));
+                let root = if sl == 0 { tl.clone() } else { th.clone() };
+                return exact(iv, crate::number::dyadic(root, kc as usize));
             }
             sl == s_lo && sr == -s_lo
         };
+        let (tl, th) = (if lo_in { tl } else { a }, if hi_in { th } else { b });
         if ok {
             br = DyadicBracket {
                 a: tl,
                 b: th,
-                k: kn,
+                k: kc,
             };
+            gain = (gain * 2).min(1 << 20);
             backoff = 1;
         } else {
-            slack += 2;
+            gain = (gain / 2).max(2);
             wait = backoff;
             backoff = (backoff * 2).min(8);
         }

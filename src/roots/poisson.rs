@@ -26,7 +26,7 @@ use crate::elim::f4::{
 use crate::elim::poisson::{PrimeFail, SquareSystem, max_coeff, resultant_bound_bits};
 use crate::number::Q;
 use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
-use crate::number::reconstruct::{CrtVec, Fp, prime31, symmetric_mod};
+use crate::number::reconstruct::{BlockResidues, CrtVec, Fp, prime31, symmetric_mod};
 use crate::poly::{ZMPoly, ZPoly};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
@@ -768,31 +768,45 @@ pub fn value_polynomial(
     let target = resultant_bits + nf as u64 + sqrt_bits;
     let rbar = rur.leading_resultant();
     let mut crt = CrtVec::new(nf + 1);
+    // every big integer of a prime's step, reduced a block of primes at a
+    // time: f, w′, the numerators v, then R̄ and the scale
+    let polys = [f, &rur.wd, &rur.v[0], &rur.v[1], &rur.v[2]];
+    let ints: Vec<&BigInt> = polys
+        .iter()
+        .flat_map(|p| p.coeffs())
+        .chain([&rbar, map.scale.numer(), map.scale.denom()])
+        .collect();
+    let mut blocks = BlockResidues::new(ints);
     for k in 0..max_primes {
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
-        let fm = zpoly_mod(&fp, f);
-        let r = fp.reduce_big(&rbar);
-        let (sn, sd) = (
-            fp.reduce_big(map.scale.numer()),
-            fp.reduce_big(map.scale.denom()),
-        );
+        let all = blocks.residues(k, &fp);
+        let mut parts = Vec::with_capacity(polys.len());
+        let mut at = 0;
+        for p in polys {
+            parts.push(&all[at..at + p.coeffs().len()]);
+            at += p.coeffs().len();
+        }
+        let (r, sn, sd) = (all[at], all[at + 1], all[at + 2]);
+        let fm = parts[0];
         if fm.last() == Some(&0) || r == 0 || sn == 0 || sd == 0 {
             continue;
         }
-        let Some(alg) = ModAlgebra::from_poly(fp, &fm) else {
+        let Some(alg) = ModAlgebra::from_poly(fp, fm) else {
             continue;
         };
-        let reduce = |p: &ZPoly| -> Vec<u64> {
-            let a = zpoly_mod(&fp, p);
-            let (_, mut rem) = divrem_mod(&fp, &a, &fm);
+        let reduce = |a: &[u64]| -> Vec<u64> {
+            let (_, mut rem) = divrem_mod(&fp, a, fm);
             rem.resize(nf, 0);
             rem
         };
-        let Some(dinv) = alg.inv(&reduce(&rur.wd)) else {
+        let Some(dinv) = alg.inv(&reduce(parts[1])) else {
             continue;
         };
-        let xs: Vec<Vec<u64>> = rur.v.iter().map(|v| alg.mul(&reduce(v), &dinv)).collect();
+        let xs: Vec<Vec<u64>> = parts[2..]
+            .iter()
+            .map(|v| alg.mul(&reduce(v), &dinv))
+            .collect();
         let s = alg.eval(&zmpoly_mod(&fp, map.eval), [&xs[0], &xs[1], &xs[2]]);
         let chi = alg.charpoly(&s);
         // ∏(u − σ·s_j) = Σ σ^(N−i) χ_i u^i, times R̄^e

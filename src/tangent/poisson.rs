@@ -154,7 +154,13 @@ impl PoissonAnalysis {
         // the points in the order of their approximate values' distance to
         // `value`: the nearest is the one (a witness is checked exactly, so
         // an imprecise choice can only cost a retry, never a wrong answer)
-        let target = value.to_rational_approx(48);
+        // (relative precision: values of big-coefficient S are big, and
+        // 2^-48 absolute would cost hundreds of bits of refinement)
+        let target = {
+            let mut v = value.clone();
+            v.refine_for_approx(15);
+            v.midpoint()
+        };
         let mut order: Vec<(Q, usize)> = (0..self.real_points.len())
             .filter_map(|i| {
                 let v = approx_value(s, &self.approx_point(i, 32)?);
