@@ -422,6 +422,31 @@ pub fn symmetric_mod(a: &BigInt, m: &BigInt) -> BigInt {
 mod tests {
     use super::*;
 
+    /// Block residues equal the residues one prime at a time, for big and
+    /// small, positive and negative integers, across block boundaries.
+    #[test]
+    fn block_residues_match_direct_reduction() {
+        let big = (BigInt::from(3) << 4000usize) - BigInt::from(12345);
+        let ints = [
+            big.clone(),
+            -big.clone(),
+            BigInt::zero(),
+            BigInt::from(-5),
+            BigInt::from(prime31(3)) * BigInt::from(prime31(9)),
+            -(big << 64usize) + BigInt::one(),
+        ];
+        let mut blocks = BlockResidues::new(ints.iter().collect());
+        for k in [0usize, 1, 7, 8, 9, 3, 17, 40] {
+            let fp = Fp::new(prime31(k));
+            let want: Vec<u64> = ints.iter().map(|x| fp.reduce_big(x)).collect();
+            assert_eq!(blocks.residues(k, &fp), want, "prime index {k}");
+            for x in &ints {
+                let r = x.mod_floor(&BigInt::from(fp.p));
+                assert_eq!(BigInt::from(fp.reduce_big(x)), r);
+            }
+        }
+    }
+
     #[test]
     fn barrett_reduction_matches_remainder() {
         for i in [0usize, 1, 7] {

@@ -538,6 +538,35 @@ mod tests {
         assert!(b.disjoint(&c));
     }
 
+    /// Equations of very different coefficient sizes (one with 3-bit, two
+    /// with 300-bit coefficients, as E against a big-coefficient S) are
+    /// certified as well as the balanced system with the same zeros.
+    #[test]
+    fn unbalanced_rows_are_certified() {
+        let big = BigInt::one() << 300usize;
+        let scaled = |t: &str| {
+            parse_poly(t)
+                .unwrap()
+                .to_primitive_z()
+                .0
+                .scale(&(&big + BigInt::from(7)))
+        };
+        let plain = |t: &str| parse_poly(t).unwrap().to_primitive_z().0;
+        let eqs = ["x^2 + y^2 + z^2 - 4", "x*y - 1", "z - x + y"];
+        let start = Dyadic3::floor_of(&[q(1618, 1000), q(618, 1000), q(1, 1)], 30);
+        let balanced = System::new(eqs.map(plain));
+        let b = balanced.certify(&start, 64).expect("balanced system");
+        let unbalanced = System::new([plain(eqs[0]), scaled(eqs[1]), scaled(eqs[2])]);
+        let c = unbalanced.certify(&start, 64).expect("unbalanced system");
+        // the same zero: the enclosures overlap in every coordinate
+        for i in 0..3 {
+            let (l1, h1) = b.enclosure[i].to_q(b.k);
+            let (l2, h2) = c.enclosure[i].to_q(c.k);
+            assert!(l1 <= h2 && l2 <= h1, "coordinate {i}");
+            assert!(&h2 - &l2 < q(1, 1 << 40));
+        }
+    }
+
     /// The enclosure of a polynomial on a box contains its values there.
     #[test]
     fn eval_box_encloses() {

@@ -152,6 +152,37 @@ mod tests {
     use crate::roots::{isolate_real_roots, refine};
     use num_bigint::BigInt;
 
+    /// Roots of magnitude 2^300 (the values of a big-coefficient S) are
+    /// refined to relative precision in a few Newton rounds: a sign change
+    /// remains, and the width is as asked.
+    #[test]
+    fn huge_roots_refine_relative() {
+        // (x − 3·2^300)(x − (3·2^300 + 2^280))(x + 5·2^299)(x² + 2^600)
+        let a = BigInt::from(3) << 300usize;
+        let b = &a + (BigInt::from(1) << 280usize);
+        let c = -(BigInt::from(5) << 299usize);
+        let lin = |r: &BigInt| ZPoly::new(vec![-r.clone(), BigInt::from(1)]);
+        let quad = ZPoly::new(vec![
+            BigInt::from(1) << 600usize,
+            BigInt::from(0),
+            BigInt::from(1),
+        ]);
+        let p = &(&(&lin(&a) * &lin(&b)) * &lin(&c)) * &quad;
+        let roots = isolate_real_roots(&p);
+        assert_eq!(roots.len(), 3);
+        // 2^-100 relative to 2^300: width 2^200
+        let w = Q::from_integer(BigInt::from(1) << 200usize);
+        for mut iv in roots {
+            refine(&p, &mut iv, &w);
+            if iv.is_exact() {
+                assert_eq!(p.sign_at(&iv.lo), 0);
+                continue;
+            }
+            assert!(&iv.hi - &iv.lo <= w);
+            assert!(p.sign_at(&iv.lo) * p.sign_at(&iv.hi) < 0);
+        }
+    }
+
     /// Refining every isolating interval to 2^-bits keeps exactly one sign
     /// change (or finds the rational root), for clustered and spread roots.
     #[test]
