@@ -475,6 +475,67 @@ impl ModAlgebra {
         e
     }
 
+    /// [`ModAlgebra::eval`] when coordinate `sep` is T itself (the
+    /// separating coordinate of a RUR; `xyz[sep]` is not read): the
+    /// polynomials in T are placed, not multiplied, and multiplying by them
+    /// costs `n·deg` — full products only for the powers of one other
+    /// coordinate and for Horner in the third.
+    pub(crate) fn eval_sep(&self, p: &ModPoly, xyz: [&[u64]; 3], sep: usize) -> Vec<u64> {
+        let fp = &self.fp;
+        let n = self.n();
+        let terms: Vec<([u32; 3], u64)> = p.iter().map(|&(m, c)| (exps(m), c as u64)).collect();
+        let deg = |v: usize| terms.iter().map(|t| t.0[v]).max().unwrap_or(0) as usize;
+        if deg(sep) >= n {
+            return self.eval(p, xyz);
+        }
+        let others: Vec<usize> = (0..3).filter(|&v| v != sep).collect();
+        // Horner in u1 (the lower degree), powers of u2
+        let (u1, u2) = if deg(others[0]) <= deg(others[1]) {
+            (others[0], others[1])
+        } else {
+            (others[1], others[0])
+        };
+        let (d1, d2, ds) = (deg(u1), deg(u2), deg(sep));
+        let mut one = vec![0u64; n];
+        one[0] = 1;
+        let mut pw: Vec<Vec<u64>> = vec![one];
+        for k in 1..=d2 {
+            crate::budget::check();
+            let next = self.mul(&pw[k - 1], xyz[u2]);
+            pw.push(next);
+        }
+        // C_a = Σ_b u2^b · P_{a,b}(T)
+        let mut short = vec![vec![vec![0u64; ds + 1]; d2 + 1]; d1 + 1];
+        for (e, c) in &terms {
+            let x = &mut short[e[u1] as usize][e[u2] as usize][e[sep] as usize];
+            *x = fp.add(*x, *c);
+        }
+        let coeffs: Vec<Vec<u64>> = short
+            .iter()
+            .map(|row| {
+                let mut acc = vec![0u64; n];
+                for (b, pt) in row.iter().enumerate() {
+                    if pt.iter().all(|&x| x == 0) {
+                        continue;
+                    }
+                    let prod = self.mul(&pw[b], pt);
+                    for (a, x) in acc.iter_mut().zip(prod) {
+                        *a = fp.add(*a, x);
+                    }
+                }
+                acc
+            })
+            .collect();
+        let mut acc = coeffs[d1].clone();
+        for a in (0..d1).rev() {
+            acc = self.mul(&acc, xyz[u1]);
+            for (x, &y) in acc.iter_mut().zip(&coeffs[a]) {
+                *x = fp.add(*x, y);
+            }
+        }
+        acc
+    }
+
     /// The value of a polynomial in x, y, z (modulo p) at algebra elements.
     pub(crate) fn eval(&self, p: &ModPoly, xyz: [&[u64]; 3]) -> Vec<u64> {
         let fp = &self.fp;
@@ -777,6 +838,12 @@ pub fn value_polynomial(
         .chain([&rbar, map.scale.numer(), map.scale.denom()])
         .collect();
     let mut blocks = BlockResidues::new(ints);
+    let sep = match rur.form {
+        [1, 0, 0] => Some(0),
+        [0, 1, 0] => Some(1),
+        [0, 0, 1] => Some(2),
+        _ => None,
+    };
     for k in 0..max_primes {
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
@@ -803,11 +870,23 @@ pub fn value_polynomial(
         let Some(dinv) = alg.inv(&reduce(parts[1])) else {
             continue;
         };
+        // the separating coordinate (when ℓ is one) is T itself
         let xs: Vec<Vec<u64>> = parts[2..]
             .iter()
-            .map(|v| alg.mul(&reduce(v), &dinv))
+            .enumerate()
+            .map(|(i, v)| {
+                if sep == Some(i) {
+                    Vec::new()
+                } else {
+                    alg.mul(&reduce(v), &dinv)
+                }
+            })
             .collect();
-        let s = alg.eval(&zmpoly_mod(&fp, map.eval), [&xs[0], &xs[1], &xs[2]]);
+        let pm = zmpoly_mod(&fp, map.eval);
+        let s = match sep {
+            Some(v) => alg.eval_sep(&pm, [&xs[0], &xs[1], &xs[2]], v),
+            None => alg.eval(&pm, [&xs[0], &xs[1], &xs[2]]),
+        };
         let chi = alg.charpoly(&s);
         // ∏(u − σ·s_j) = Σ σ^(N−i) χ_i u^i, times R̄^e
         let sigma = fp.mul(sn, fp.inv(sd).expect("non-zero"));

@@ -5,6 +5,7 @@
 //! verification of the old modular route), the exact route over Q, direct
 //! definitions of resultants and characteristic polynomials.
 
+use crate::elim::f4::zmpoly_mod;
 use crate::elim::poisson::SquareSystem;
 use crate::number::Q;
 use crate::number::reconstruct::{Fp, prime31};
@@ -158,6 +159,25 @@ fn algebra_mod_p_is_consistent() {
             let mut t = vec![0u64; n];
             t[1] = 1;
             assert_eq!(alg.charpoly(&t), f, "charpoly(T) = f");
+            // evaluation with one coordinate T itself = the general one
+            let poly = zmpoly_mod(
+                &fp,
+                &parse_poly("3*x^2*y*z^3 - x*y^4 + 7*z^5 + y^2*z - 2*x + 5")
+                    .unwrap()
+                    .to_primitive_z()
+                    .0,
+            );
+            let (a, b) = (rnd(n), rnd(n));
+            for sep in 0..3 {
+                let mut xyz = [a.clone(), b.clone(), a.clone()];
+                xyz[sep] = t.clone();
+                let refs = [&xyz[0][..], &xyz[1][..], &xyz[2][..]];
+                assert_eq!(
+                    alg.eval_sep(&poly, refs, sep),
+                    alg.eval(&poly, refs),
+                    "eval_sep, n = {n}, sep = {sep}"
+                );
+            }
         }
     }
 }
