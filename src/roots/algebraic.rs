@@ -199,13 +199,6 @@ impl RealAlg {
         (lo + hi) / Q::from_integer(BigInt::from(2))
     }
 
-    /// The midpoint of the current isolating interval (the number itself
-    /// when rational): an approximation as good as the interval, free.
-    pub(crate) fn midpoint(&self) -> Q {
-        let (lo, hi) = self.interval();
-        (lo + hi) / Q::from_integer(BigInt::from(2))
-    }
-
     /// Decimal approximation with `digits` significant digits.
     pub fn approx(&self, digits: usize) -> String {
         match &self.repr {

@@ -152,19 +152,22 @@ impl PoissonAnalysis {
             });
         }
         // the points in the order of their approximate values' distance to
-        // `value`: the nearest is the one (a witness is checked exactly, so
-        // an imprecise choice can only cost a retry, never a wrong answer)
-        // (relative precision: values of big-coefficient S are big, and
-        // 2^-48 absolute would cost hundreds of bits of refinement)
-        let target = {
-            let mut v = value.clone();
-            v.refine_for_approx(15);
-            v.midpoint()
-        };
+        // the isolating interval of `value` (0 inside): the nearest is the
+        // one (a witness is checked exactly, so an imprecise choice can
+        // only cost a retry, never a wrong answer).  No refinement of
+        // `value`: a root of D(u) of high degree is costly to refine.
+        let (lo, hi) = value.interval();
         let mut order: Vec<(Q, usize)> = (0..self.real_points.len())
             .filter_map(|i| {
                 let v = approx_value(s, &self.approx_point(i, 32)?);
-                Some(((v - &target).abs(), i))
+                let d = if v < lo {
+                    &lo - &v
+                } else if v > hi {
+                    &v - &hi
+                } else {
+                    Q::zero()
+                };
+                Some((d, i))
             })
             .collect();
         order.sort();
