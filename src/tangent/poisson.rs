@@ -30,7 +30,7 @@ use crate::number::reconstruct::{Fp, prime31};
 use crate::number::{Q, dyadic_floor, qi};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
-use crate::roots::krawczyk::{System, ZeroBox, eval_box};
+use crate::roots::krawczyk::{Fix, System, ZeroBox, eval_box};
 use crate::roots::modrur::Declined;
 use crate::roots::poisson::{
     ModAlgebra, PoissonRur, ValueMap, poly_gcd_mod, solve_square, value_bound_bits,
@@ -490,35 +490,9 @@ fn scale_roots(p: &ZPoly, k: &Q) -> ZPoly {
     ZPoly::new(c).primitive_part()
 }
 
-/// An interval `[lo, hi]·2^-k` with integer ends (fixed point: products
-/// are rounded outward back to `2^-k`, so no gcd is ever computed).
-#[derive(Clone, Debug)]
-struct FixIv {
-    lo: BigInt,
-    hi: BigInt,
-}
-
-impl FixIv {
-    fn mul(&self, o: &FixIv, k: usize) -> FixIv {
-        let c = [
-            &self.lo * &o.lo,
-            &self.lo * &o.hi,
-            &self.hi * &o.lo,
-            &self.hi * &o.hi,
-        ];
-        let lo = c.iter().min().expect("four").clone();
-        let hi = c.iter().max().expect("four").clone();
-        // floor(lo / 2^k) and ceil(hi / 2^k); `>>` rounds towards −∞
-        FixIv {
-            lo: lo >> k,
-            hi: -((-hi) >> k),
-        }
-    }
-}
-
 /// An enclosure of `p` on a box with dyadic ends, in fixed-point interval
 /// arithmetic at the finest scale `2^-k` of the ends (exact conversion,
-/// outward rounding of each product).
+/// outward rounding of each product: [`eval_box`]).
 fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
     let (pz, scale) = p.to_primitive_z();
     let k = bx
@@ -531,63 +505,12 @@ fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
         |q: &Q| -> BigInt { num_integer::Integer::div_floor(&(q.numer() << k), q.denom()) };
     let fix_hi =
         |q: &Q| -> BigInt { -num_integer::Integer::div_floor(&(-q.numer() << k), q.denom()) };
-    let d = pz.total_degree().unwrap_or(0) as usize;
-    let one = FixIv {
-        lo: BigInt::one() << k,
-        hi: BigInt::one() << k,
-    };
-    let pows: Vec<Vec<FixIv>> = bx
-        .iter()
-        .map(|(a, b)| {
-            let base = FixIv {
-                lo: fix_lo(a),
-                hi: fix_hi(b),
-            };
-            let mut v = vec![one.clone()];
-            for e in 1..=d {
-                let next = if e % 2 == 0 {
-                    // an even power of an interval around 0 starts at 0
-                    let h = &v[e / 2];
-                    let sq = h.mul(h, k);
-                    if h.lo.is_negative() && h.hi.is_positive() {
-                        FixIv {
-                            lo: BigInt::zero(),
-                            hi: sq.hi,
-                        }
-                    } else if v[1].lo.is_negative() && v[1].hi.is_positive() {
-                        FixIv {
-                            lo: BigInt::zero().max(sq.lo),
-                            hi: sq.hi,
-                        }
-                    } else {
-                        sq
-                    }
-                } else {
-                    v[e - 1].mul(&base, k)
-                };
-                v.push(next);
-            }
-            if v.len() > 1 {
-                v[1] = base;
-            }
-            v
-        })
-        .collect();
-    let (mut lo, mut hi) = (BigInt::zero(), BigInt::zero());
-    for (ex, c) in pz.terms() {
-        let t = pows[0][ex[X] as usize]
-            .mul(&pows[1][ex[Y] as usize], k)
-            .mul(&pows[2][ex[Z] as usize], k);
-        if c.is_negative() {
-            lo += c * &t.hi;
-            hi += c * &t.lo;
-        } else {
-            lo += c * &t.lo;
-            hi += c * &t.hi;
-        }
-    }
-    let den = BigInt::one() << k;
-    let (a, b) = (Q::new(lo, den.clone()) * &scale, Q::new(hi, den) * &scale);
+    let fbox: [Fix; 3] = std::array::from_fn(|i| Fix {
+        lo: fix_lo(&bx[i].0),
+        hi: fix_hi(&bx[i].1),
+    });
+    let (a, b) = eval_box(&pz, &fbox, k).to_q(k);
+    let (a, b) = (a * &scale, b * &scale);
     if scale.is_negative() { (b, a) } else { (a, b) }
 }
 
