@@ -149,9 +149,25 @@ fn roots_of_degree_6667_is_a_budget_error_within_its_budget() {
     assert_eq!(out[1]["result"]["distinct_real"], 2);
 }
 
-/// A dense S of degree 10 (286 terms).
-fn dense_degree_10() -> String {
-    dense_degree(10)
+/// `quadsect tangent --json` on the dense surface of degree `d` against a
+/// fixed ellipsoid under a 2 s time limit, checked to end within it.
+fn dense_within_two_seconds(d: u32) -> Run {
+    let s = dense_degree(d);
+    let r = run(
+        &[
+            "tangent",
+            "--time-limit",
+            "2",
+            "--json",
+            "--ellipsoid",
+            "x^2+2y^2+3z^2-5",
+            "--surface",
+            &s,
+        ],
+        None,
+    );
+    within(&r, Duration::from_secs(2));
+    r
 }
 
 /// A dense surface of degree `d` with pseudo-random coefficients in −9…9.
@@ -178,21 +194,7 @@ fn dense_degree(d: u32) -> String {
 #[test]
 fn a_dense_degree_10_surface_ends_within_its_budget() {
     let _serial = serial();
-    let s = dense_degree_10();
-    let r = run(
-        &[
-            "tangent",
-            "--time-limit",
-            "2",
-            "--json",
-            "--ellipsoid",
-            "x^2+2y^2+3z^2-5",
-            "--surface",
-            &s,
-        ],
-        None,
-    );
-    within(&r, Duration::from_secs(2));
+    let r = dense_within_two_seconds(10);
     let v = json(&r.stdout);
     match r.status {
         0 => assert_ne!(v["verdict"], "undecided"),
@@ -204,21 +206,7 @@ fn a_dense_degree_10_surface_ends_within_its_budget() {
 #[test]
 fn a_dense_degree_12_surface_is_undecided_within_its_budget() {
     let _serial = serial();
-    let s = dense_degree(12);
-    let r = run(
-        &[
-            "tangent",
-            "--time-limit",
-            "2",
-            "--json",
-            "--ellipsoid",
-            "x^2+2y^2+3z^2-5",
-            "--surface",
-            &s,
-        ],
-        None,
-    );
-    within(&r, Duration::from_secs(2));
+    let r = dense_within_two_seconds(12);
     assert_eq!(r.status, 3);
     let v = json(&r.stdout);
     assert_eq!(v["verdict"], "undecided");

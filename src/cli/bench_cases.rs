@@ -362,26 +362,39 @@ pub fn general_position_suite(rows: &mut Vec<Row>) {
         singles.extend(dense_cases(d));
     }
     for c in singles {
-        let (t, r) = time_case(&c, limit);
-        rows.push(Row {
-            suite: "tangent",
-            id: c.id.clone(),
-            desc: format!("full verdict ({})", describe(&r)),
-            median: t,
-            samples: 3,
-            extra: Default::default(),
-        });
-        let (t, r) = time_case_with(&c, limit, false);
-        rows.push(Row {
-            suite: "tangent",
-            id: format!("{}_verdict_only", c.id),
-            desc: format!("verdict only, no exact values ({})", describe(&r)),
-            median: t,
-            samples: 3,
-            extra: Default::default(),
-        });
+        for values in [true, false] {
+            let (t, r) = time_case_with(&c, limit, values);
+            let (what, suffix) = mode(values);
+            rows.push(tangent_row(
+                format!("{}{suffix}", c.id),
+                format!("{what} ({})", describe(&r)),
+                t,
+                3,
+            ));
+        }
     }
     cubic_rows(rows, limit);
+}
+
+/// The description and the id suffix of a timed mode (full or verdict only).
+fn mode(values: bool) -> (&'static str, &'static str) {
+    if values {
+        ("full verdict", "")
+    } else {
+        ("verdict only, no exact values", "_verdict_only")
+    }
+}
+
+/// A row of the tangent suite.
+fn tangent_row(id: String, desc: String, median: f64, samples: usize) -> Row {
+    Row {
+        suite: "tangent",
+        id,
+        desc,
+        median,
+        samples,
+        extra: Default::default(),
+    }
 }
 
 /// The verdict and the route of a timed case's report.
@@ -415,32 +428,25 @@ fn cubic_rows(rows: &mut Vec<Row>, limit: std::time::Duration) {
         };
         let (mb, ms) = (median(&mut tb), median(&mut ts));
         let ratio = if ms > 0.0 { mb / ms } else { f64::NAN };
-        let (what, suffix) = if values {
-            ("full verdict", "")
-        } else {
-            ("verdict only, no exact values", "_verdict_only")
-        };
-        let mut extra = serde_json::Map::new();
-        extra.insert("ratio_to_3bit".into(), serde_json::json!(ratio));
-        rows.push(Row {
-            suite: "tangent",
-            id: format!("{}{suffix}", big.id),
-            desc: format!(
+        let (what, suffix) = mode(values);
+        let mut row = tangent_row(
+            format!("{}{suffix}", big.id),
+            format!(
                 "{what} ({}; {ratio:.1}x the 3-bit cubic, timed alternately)",
                 describe(&rb)
             ),
-            median: mb,
-            samples: 7,
-            extra,
-        });
-        rows.push(Row {
-            suite: "tangent",
-            id: format!("{}{suffix}", small.id),
-            desc: format!("{what} ({})", describe(&rs)),
-            median: ms,
-            samples: 7,
-            extra: Default::default(),
-        });
+            mb,
+            7,
+        );
+        row.extra
+            .insert("ratio_to_3bit".into(), serde_json::json!(ratio));
+        rows.push(row);
+        rows.push(tangent_row(
+            format!("{}{suffix}", small.id),
+            format!("{what} ({})", describe(&rs)),
+            ms,
+            7,
+        ));
     }
 }
 

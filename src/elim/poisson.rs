@@ -299,9 +299,3 @@ pub fn max_coeff(p: &ZMPoly) -> BigInt {
         .max()
         .unwrap_or_else(BigInt::zero)
 }
-
-/// Unused monomial helper kept private.
-#[allow(dead_code)]
-fn mono_of(m: Mono) -> [u32; 3] {
-    exps(m)
-}

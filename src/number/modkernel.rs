@@ -62,13 +62,13 @@ fn mulmod_generic(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
             *x = if t >= p2 { t - p2 } else { t };
         }
     }
+    let fold = fold_row_kernel();
     for k in (n..2 * n).rev() {
-        // below p < 2^31: as a 32-bit factor the loop vectorises (vpmuludq)
-        let top = fp.reduce(r[k]) as u32 as u64;
+        let top = fp.reduce(r[k]);
         if top == 0 {
             continue;
         }
-        fold_row(&mut r[k - n..k], top, &c32, p2);
+        fold(&mut r[k - n..k], top, &c32, p2);
     }
     r.truncate(n);
     r.iter_mut().for_each(|x| *x = fp.reduce(*x));
@@ -80,18 +80,20 @@ fn mulmod_generic(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
 /// vectorise this loop by itself (it does the product's), so on AVX2 it is
 /// written with intrinsics: four lanes of `vpmuludq`, the conditional
 /// subtraction as a compare and a masked subtract (every value is below
-/// 2^63, so the signed compare is exact).
+/// 2^63, so the signed compare is exact).  The kernel for this processor
+/// is chosen once per product, not per row.
 #[inline(always)]
-fn fold_row(row: &mut [u64], a: u64, c: &[u32], p2: u64) {
+fn fold_row_kernel() -> fn(&mut [u64], u64, &[u32], u64) {
     #[cfg(target_arch = "x86_64")]
     {
         if std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the processor supports AVX2 (checked above).
-            unsafe { fold_row_avx2(row, a, c, p2) };
-            return;
+            return |row, a, c, p2| {
+                // SAFETY: the processor supports AVX2 (checked above).
+                unsafe { fold_row_avx2(row, a, c, p2) }
+            };
         }
     }
-    fold_row_generic(row, a, c, p2);
+    fold_row_generic
 }
 
 #[inline(always)]
@@ -367,7 +369,7 @@ mod fold_tests {
             let a = rnd(fp.p);
             let mut r1 = row0.clone();
             let mut r2 = row0.clone();
-            fold_row(&mut r1, a, &c, fp.p2);
+            fold_row_kernel()(&mut r1, a, &c, fp.p2);
             fold_row_generic(&mut r2, a, &c, fp.p2);
             assert_eq!(r1, r2, "len {len}");
         }

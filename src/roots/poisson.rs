@@ -372,9 +372,7 @@ impl ModAlgebra {
             return None;
         }
         let k = fp.inv(r0[0])?;
-        let mut out: Vec<u64> = s0[..n].iter().map(|&x| fp.mul(x, k)).collect();
-        out.truncate(n);
-        Some(out)
+        Some(s0[..n].iter().map(|&x| fp.mul(x, k)).collect())
     }
 
     /// `Tr(T^m)` for `m < count` (power sums of the roots of f, Newton).

@@ -378,26 +378,28 @@ fn finish(
         // S attains its extremes on the compact E at real critical points
         return decline("no real critical point (inconsistent)");
     }
+    let mut an = PoissonAnalysis {
+        direction: n,
+        generators,
+        rur,
+        extras,
+        extras_prime,
+        critical,
+        real_points,
+        values: Vec::new(),
+        judging: None,
+        enclosures: Vec::new(),
+        value_bound_bits: 0,
+        value_primes: 0,
+    };
     if !values {
         // the verdict from the signs of S at the real critical points; D(u)
         // only when a sign is not decided (a critical value 0, or nearly)
         let l_int = l.to_primitive_z().0;
-        let boxed = box_signs(&generators, &l_int, &rur, s, &real_points);
-        if let Some(enclosures) = boxed.or_else(|| point_signs(&rur, s, &real_points)) {
-            return Ok(PoissonAnalysis {
-                direction: n,
-                generators,
-                rur,
-                extras,
-                extras_prime,
-                critical,
-                real_points,
-                values: Vec::new(),
-                judging: None,
-                enclosures,
-                value_bound_bits: 0,
-                value_primes: 0,
-            });
+        let boxed = box_signs(&an.generators, &l_int, &an.rur, s, &an.real_points);
+        if let Some(enclosures) = boxed.or_else(|| point_signs(&an.rur, s, &an.real_points)) {
+            an.enclosures = enclosures;
+            return Ok(an);
         }
     }
     // D(u) for the integer S′ (S = k·S′), then scaled to S
@@ -412,28 +414,16 @@ fn finish(
         scale: &(&kr / &k),
     };
     let (t, value_primes) =
-        value_polynomial(&rur, &critical, &map, bits, sys.bezout(), MAX_PRIMES)?;
+        value_polynomial(&an.rur, &an.critical, &map, bits, sys.bezout(), MAX_PRIMES)?;
     let d_prime = t.primitive_part();
     let judging = scale_roots(&d_prime, &k).squarefree_part();
-    let values = if judging.degree() == critical.degree() {
-        Vec::new()
-    } else {
-        identify_values(&rur, &real_points, s, &judging)?
-    };
-    Ok(PoissonAnalysis {
-        direction: n,
-        generators,
-        rur,
-        extras,
-        extras_prime,
-        critical,
-        real_points,
-        values,
-        judging: Some(judging),
-        enclosures: Vec::new(),
-        value_bound_bits: bits,
-        value_primes,
-    })
+    if judging.degree() != an.critical.degree() {
+        an.values = identify_values(&an.rur, &an.real_points, s, &judging)?;
+    }
+    an.judging = Some(judging);
+    an.value_bound_bits = bits;
+    an.value_primes = value_primes;
+    Ok(an)
 }
 
 /// The remainder of `s` by `e` as polynomials in x (`e` of degree 2 in x
