@@ -143,7 +143,7 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.count.prime
         ),
         Analysis::Poisson(an) => format!(
-            "critical points as zeros of the square system E = 0, a·m = b·m = 0 (m = ∇S×∇E, a, b ⊥ n = ({}, {}, {})) with no zeros at infinity: {} zeros, {} of them extra (n·∇E = n·∇S = 0, none critical), {} critical points, {} real; RUR in t = {}·x + {}·y + {}·z and D(u) are resultants, computed modulo {} and {} primes beyond Sombra's bounds of {} and {} bits (exact, no verification needed)",
+            "critical points as zeros of the square system E = 0, a·m = b·m = 0 (m = ∇S×∇E, a, b ⊥ n = ({}, {}, {})) with no zeros at infinity: {} zeros, {} of them extra (n·∇E = n·∇S = 0, none critical), {} critical points, {} real; {}",
             an.direction[0],
             an.direction[1],
             an.direction[2],
@@ -151,13 +151,27 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.extras.degree().unwrap_or(0),
             an.points(),
             an.real_points.len(),
-            an.rur.form[0],
-            an.rur.form[1],
-            an.rur.form[2],
-            an.rur.primes,
-            an.value_primes,
-            an.rur.bound_bits,
-            an.value_bound_bits
+            if an.judging.is_some() {
+                format!(
+                    "RUR in t = {}·x + {}·y + {}·z and D(u) are resultants, computed modulo {} and {} primes beyond Sombra's bounds of {} and {} bits (exact, no verification needed)",
+                    an.rur.form[0],
+                    an.rur.form[1],
+                    an.rur.form[2],
+                    an.rur.primes,
+                    an.value_primes,
+                    an.rur.bound_bits,
+                    an.value_bound_bits
+                )
+            } else {
+                format!(
+                    "RUR in t = {}·x + {}·y + {}·z, a resultant computed modulo {} primes beyond Sombra's bound of {} bits (exact, no verification needed); signs of S proven on enclosures of the real critical points (value_enclosures)",
+                    an.rur.form[0],
+                    an.rur.form[1],
+                    an.rur.form[2],
+                    an.rur.primes,
+                    an.rur.bound_bits
+                )
+            }
         ),
         Analysis::LevelSets(ls) => format!(
             "curves of critical points: {} level curves tested",
