@@ -81,9 +81,10 @@ fn mulmod_generic(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
 /// written with intrinsics: four lanes of `vpmuludq`, the conditional
 /// subtraction as a compare and a masked subtract (every value is below
 /// 2^63, so the signed compare is exact).  The kernel for this processor
-/// is chosen once per product, not per row.
+/// is chosen once per product, not per row.  Euclid's algorithm modulo p
+/// ([`crate::roots::poisson`]) uses the same kernel for its row updates.
 #[inline(always)]
-fn fold_row_kernel() -> fn(&mut [u64], u64, &[u32], u64) {
+pub fn fold_row_kernel() -> fn(&mut [u64], u64, &[u32], u64) {
     #[cfg(target_arch = "x86_64")]
     {
         if std::is_x86_feature_detected!("avx2") {

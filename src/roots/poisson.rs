@@ -338,41 +338,14 @@ impl ModAlgebra {
     pub(crate) fn inv(&self, a: &[u64]) -> Option<Vec<u64>> {
         let fp = &self.fp;
         let n = self.n();
-        // Euclid one leading term at a time, in place; invariant
-        // sᵢ·a ≡ rᵢ (mod f), the cofactors kept to length n
-        let mut r0 = self.full();
-        let mut r1 = trimmed(a);
-        let mut s0 = vec![0u64; n + 1];
-        let mut s1 = vec![0u64; n + 1];
-        s1[0] = 1;
-        while !r1.is_empty() {
-            let inv = fp.inv(*r1.last().expect("non-empty")).expect("trimmed");
-            while r0.len() >= r1.len() {
-                let k = r0.len() - r1.len();
-                let t = fp.mul(*r0.last().expect("non-empty"), inv);
-                for (x, &y) in r0[k..].iter_mut().zip(&r1) {
-                    *x = fp.sub(*x, fp.mul(t, y));
-                }
-                // s0 −= t·T^k·s1 (degrees stay below n + 1)
-                for (x, &y) in s0[k..].iter_mut().zip(&s1) {
-                    *x = fp.sub(*x, fp.mul(t, y));
-                }
-                while r0.last() == Some(&0) {
-                    r0.pop();
-                }
-                if r0.is_empty() {
-                    break;
-                }
-            }
-            std::mem::swap(&mut r0, &mut r1);
-            std::mem::swap(&mut s0, &mut s1);
-        }
-        // r0 = gcd(f, a), s0·a ≡ r0
-        if r0.len() != 1 {
+        let (g, s) = euclid(fp, self.full(), a.to_vec(), Some(n));
+        // g = gcd(f, a) (not normalised), s·a ≡ g (mod f)
+        if g.len() != 1 {
             return None;
         }
-        let k = fp.inv(r0[0])?;
-        Some(s0[..n].iter().map(|&x| fp.mul(x, k)).collect())
+        let k = fp.inv(g[0])?;
+        let s = s.expect("cofactor requested");
+        Some(s.iter().map(|&x| fp.mul(x, k)).collect())
     }
 
     /// `Tr(T^m)` for `m < count` (power sums of the roots of f, Newton).
@@ -611,38 +584,119 @@ fn trimmed(a: &[u64]) -> Vec<u64> {
     v
 }
 
-/// `(q, r)` with `a = q·b + r` modulo p (ascending, `b` trimmed, non-zero).
-fn divrem_mod(fp: &Fp, a: &[u64], b: &[u64]) -> (Vec<u64>, Vec<u64>) {
-    let mut r = trimmed(a);
-    let db = b.len() - 1;
-    if r.len() < b.len() {
-        return (vec![], r);
-    }
-    let inv = fp.inv(b[db]).expect("non-zero leading coefficient");
-    let mut q = vec![0u64; r.len() - db];
-    while r.len() > db {
-        let k = r.len() - 1 - db;
-        let t = fp.mul(*r.last().expect("non-empty"), inv);
-        q[k] = t;
-        for j in 0..db {
-            r[k + j] = fp.sub(r[k + j], fp.mul(t, b[j]));
-        }
-        r.pop();
-        while r.last() == Some(&0) {
-            r.pop();
-        }
-    }
-    (trimmed(&q), r)
+/// `a rem b` modulo p (ascending, trimmed; `b` non-zero).
+fn rem_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
+    let mut r = a.to_vec();
+    let b: Vec<u32> = trimmed(b).iter().map(|&x| x as u32).collect();
+    let il = fp
+        .inv(*b.last().expect("non-zero divisor") as u64)
+        .expect("non-zero");
+    divide_lazy(fp, &mut r, &b, il, None);
+    reduced_trimmed(fp, &r)
 }
 
 /// The gcd modulo p (not normalised; ascending, trimmed).
 pub(crate) fn poly_gcd_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
-    let (mut a, mut b) = (trimmed(a), trimmed(b));
-    while !b.is_empty() {
-        let (_, r) = divrem_mod(fp, &a, &b);
-        a = std::mem::replace(&mut b, r);
+    euclid(fp, a.to_vec(), b.to_vec(), None).0
+}
+
+/// Euclid's algorithm modulo p on `(a, b)`: the gcd (reduced, trimmed, not
+/// normalised) and, when `cofactor = Some(len)`, an `s` of length `len`
+/// with `s·b ≡ gcd (mod a)` (cofactors truncated to `len` terms, which
+/// is exact when `len > deg a`).
+///
+/// Rows are kept lazily below p² and updated by the vector kernel of the
+/// modular product (`row ← row + t·d` with the divisor `d` made monic and
+/// stored on 32 bits); only leading coefficients are reduced on the way,
+/// and a remainder once, when it becomes the next divisor.
+fn euclid(
+    fp: &Fp,
+    a: Vec<u64>,
+    b: Vec<u64>,
+    cofactor: Option<usize>,
+) -> (Vec<u64>, Option<Vec<u64>>) {
+    let len = cofactor.unwrap_or(0);
+    let (mut r0, mut r1) = (a, b);
+    let mut s0 = vec![0u64; len];
+    let mut s1 = vec![0u64; len];
+    if len > 0 {
+        s1[0] = 1;
     }
-    a
+    loop {
+        trim_lazy(fp, &mut r1);
+        if r1.is_empty() {
+            break;
+        }
+        // the divisor and its cofactor reduced once, on 32 bits; the
+        // quotient's terms are top·lc⁻¹
+        let d: Vec<u32> = r1.iter().map(|&x| fp.reduce(x) as u32).collect();
+        let il = fp
+            .inv(*d.last().expect("non-empty") as u64)
+            .expect("non-zero");
+        let e = (len > 0).then(|| {
+            // entries past the cofactor's degree were never touched
+            let sl = s1.iter().rposition(|&x| x != 0).map_or(0, |i| i + 1);
+            let mut e: Vec<u32> = s1[..sl].iter().map(|&x| fp.reduce(x) as u32).collect();
+            while e.last() == Some(&0) {
+                e.pop();
+            }
+            e
+        });
+        divide_lazy(fp, &mut r0, &d, il, e.as_deref().map(|e| (&mut s0[..], e)));
+        std::mem::swap(&mut r0, &mut r1);
+        std::mem::swap(&mut s0, &mut s1);
+    }
+    let g = reduced_trimmed(fp, &r0);
+    let s = (len > 0).then(|| s0.iter().map(|&x| fp.reduce(x)).collect());
+    (g, s)
+}
+
+/// `r ← r rem d` for `d` with 32-bit entries below p and leading
+/// coefficient inverse `il`, `r` with entries below p² (left so, trimmed of
+/// leading zeros modulo p); with `cof = Some((s, e))` also `s ← s − q·e`
+/// for the quotient q (terms past `s.len()` dropped).
+fn divide_lazy(
+    fp: &Fp,
+    r: &mut Vec<u64>,
+    d: &[u32],
+    il: u64,
+    mut cof: Option<(&mut [u64], &[u32])>,
+) {
+    let fold = crate::number::modkernel::fold_row_kernel();
+    let p2 = fp.p2;
+    let low = &d[..d.len() - 1];
+    trim_lazy(fp, r);
+    while r.len() >= d.len() {
+        let top = fp.reduce(*r.last().expect("non-empty"));
+        let k = r.len() - d.len();
+        let t = fp.neg(fp.mul(top, il));
+        let end = r.len() - 1;
+        fold(&mut r[k..end], t, low, p2);
+        if let Some((s, e)) = cof.as_mut()
+            && k < s.len()
+        {
+            let m = e.len().min(s.len() - k);
+            fold(&mut s[k..k + m], t, &e[..m], p2);
+        }
+        r.pop();
+        trim_lazy(fp, r);
+    }
+}
+
+/// Drops the leading entries that are zero modulo p.
+fn trim_lazy(fp: &Fp, r: &mut Vec<u64>) {
+    while let Some(&x) = r.last() {
+        if fp.reduce(x) != 0 {
+            break;
+        }
+        r.pop();
+    }
+}
+
+/// Entries reduced modulo p, leading zeros dropped.
+fn reduced_trimmed(fp: &Fp, a: &[u64]) -> Vec<u64> {
+    let r: Vec<u64> = a.iter().map(|&x| fp.reduce(x)).collect();
+    trimmed(&r)
 }
 
 /// Residues of an integer polynomial (ascending).
@@ -861,7 +915,7 @@ pub fn value_polynomial(
             continue;
         };
         let reduce = |a: &[u64]| -> Vec<u64> {
-            let (_, mut rem) = divrem_mod(&fp, a, fm);
+            let mut rem = rem_mod(&fp, a, fm);
             rem.resize(nf, 0);
             rem
         };
@@ -925,6 +979,20 @@ pub fn value_bound_bits(sys: &SquareSystem, h: &ZMPoly) -> u64 {
     resultant_bound_bits(&degs, &bounds)
 }
 
+/// `len` pseudo-random residues modulo p (a linear congruential
+/// generator on `seed`), for the tests of the arithmetic modulo p.
+#[cfg(test)]
+pub(crate) fn residues_for_tests(fp: &Fp, seed: &mut u64, len: usize) -> Vec<u64> {
+    (0..len)
+        .map(|_| {
+            *seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (*seed >> 33) % fp.p
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -947,6 +1015,60 @@ mod tests {
         }
         let m = berlekamp_massey(&fp, &a);
         assert_eq!(m, vec![fp.neg(7), 2, fp.neg(5), 1]);
+    }
+
+    /// Naive product modulo p (ascending), for the checks below.
+    fn mul_naive(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
+        let mut r = vec![0u64; a.len() + b.len() - 1];
+        for (i, &x) in a.iter().enumerate() {
+            for (j, &y) in b.iter().enumerate() {
+                r[i + j] = fp.add(r[i + j], fp.mul(x, y));
+            }
+        }
+        r
+    }
+
+    /// The lazy Euclid (rows below p², vector row updates): inverses are
+    /// inverses, a common factor is found by the gcd and blocks the
+    /// inverse, and the remainder is that of the schoolbook division.
+    #[test]
+    fn lazy_euclid_inverse_gcd_and_remainder() {
+        let fp = Fp::new(prime31(3));
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = |len: usize| residues_for_tests(&fp, &mut seed, len);
+        for n in [1usize, 2, 7, 40, 129] {
+            let mut f = rnd(n);
+            f.push(1);
+            let alg = ModAlgebra::from_poly(fp, &f).expect("monic");
+            let a = rnd(n);
+            let inv = alg.inv(&a).expect("a random element is invertible");
+            let mut one = vec![0u64; n];
+            one[0] = 1;
+            assert_eq!(alg.mul(&a, &inv), one, "degree {n}");
+            // a common factor g of degree 3: no inverse, gcd = c·g
+            let mut g = rnd(3);
+            g.push(1);
+            let mut h = rnd(n);
+            h.push(1);
+            let fg = mul_naive(&fp, &g, &h);
+            let ag = mul_naive(&fp, &g, &rnd(n.max(2) - 1));
+            let alg = ModAlgebra::from_poly(fp, &fg).expect("monic");
+            let mut ar = rem_mod(&fp, &ag, &fg);
+            ar.resize(fg.len() - 1, 0);
+            assert!(alg.inv(&ar).is_none(), "a common factor blocks the inverse");
+            let d = poly_gcd_mod(&fp, &fg, &ag);
+            assert!(d.len() >= g.len(), "the gcd contains the common factor");
+            assert!(rem_mod(&fp, &d, &g).is_empty(), "g divides the gcd");
+            // remainder: a = q·b + r with deg r < deg b
+            let b = h.clone();
+            let q = rnd(5);
+            let r = rnd(n.min(b.len() - 1));
+            let mut a2 = mul_naive(&fp, &q, &b);
+            for (x, &y) in a2.iter_mut().zip(&r) {
+                *x = fp.add(*x, y);
+            }
+            assert_eq!(rem_mod(&fp, &a2, &b), trimmed(&r));
+        }
     }
 
     /// The sparse Kronecker images (ℓ = z, Berlekamp–Massey on the sparse

@@ -373,7 +373,13 @@ fn finish(
     if critical.degree().unwrap_or(0) == 0 {
         return decline("no critical point");
     }
-    let real_points = RealAlg::roots_of(&critical);
+    let mut real_points = RealAlg::roots_of(&critical);
+    // refined once, in place, as far as the report prints them (20 digits):
+    // the start points of the boxes and the witnesses (64-bit
+    // approximations) then need no further refinement either
+    for p in real_points.iter_mut() {
+        p.refine_for_approx(20);
+    }
     if real_points.is_empty() {
         // S attains its extremes on the compact E at real critical points
         return decline("no real critical point (inconsistent)");

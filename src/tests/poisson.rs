@@ -121,16 +121,7 @@ fn leading_resultant_of_linear_forms_is_the_determinant() {
 fn algebra_mod_p_is_consistent() {
     let fp = Fp::new(prime31(5));
     let mut seed = 17u64;
-    let mut rnd = |n: usize| -> Vec<u64> {
-        (0..n)
-            .map(|_| {
-                seed = seed
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                (seed >> 33) % fp.p
-            })
-            .collect()
-    };
+    let mut rnd = |n: usize| crate::roots::poisson::residues_for_tests(&fp, &mut seed, n);
     for n in [1usize, 2, 5, 16, 33] {
         let mut f = rnd(n);
         f.push(1);
