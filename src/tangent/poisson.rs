@@ -374,11 +374,11 @@ fn finish(
         return decline("no critical point");
     }
     let mut real_points = RealAlg::roots_of(&critical);
-    // refined once, in place, as far as the report prints them (20 digits):
-    // the start points of the boxes and the witnesses (64-bit
-    // approximations) then need no further refinement either
+    // refined once, in place, to the 2^-64 the boxes start from: the boxes
+    // and the witnesses then refine no copies, and printing only finishes
+    let w64 = Q::new(BigInt::one(), BigInt::one() << 64usize);
     for p in real_points.iter_mut() {
-        p.refine_for_approx(20);
+        p.refine_to(&w64);
     }
     if real_points.is_empty() {
         // S attains its extremes on the compact E at real critical points

@@ -151,26 +151,22 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.extras.degree().unwrap_or(0),
             an.points(),
             an.real_points.len(),
-            if an.judging.is_some() {
-                format!(
-                    "RUR in t = {}·x + {}·y + {}·z and D(u) are resultants, computed modulo {} and {} primes beyond Sombra's bounds of {} and {} bits (exact, no verification needed)",
-                    an.rur.form[0],
-                    an.rur.form[1],
-                    an.rur.form[2],
-                    an.rur.primes,
-                    an.value_primes,
-                    an.rur.bound_bits,
-                    an.value_bound_bits
-                )
-            } else {
-                format!(
-                    "RUR in t = {}·x + {}·y + {}·z, a resultant computed modulo {} primes beyond Sombra's bound of {} bits (exact, no verification needed); signs of S proven on enclosures of the real critical points (value_enclosures)",
-                    an.rur.form[0],
-                    an.rur.form[1],
-                    an.rur.form[2],
-                    an.rur.primes,
-                    an.rur.bound_bits
-                )
+            {
+                let rur = format!(
+                    "RUR in t = {}·x + {}·y + {}·z",
+                    an.rur.form[0], an.rur.form[1], an.rur.form[2]
+                );
+                if an.judging.is_some() {
+                    format!(
+                        "{rur} and D(u) are resultants, computed modulo {} and {} primes beyond Sombra's bounds of {} and {} bits (exact, no verification needed)",
+                        an.rur.primes, an.value_primes, an.rur.bound_bits, an.value_bound_bits
+                    )
+                } else {
+                    format!(
+                        "{rur}, a resultant computed modulo {} primes beyond Sombra's bound of {} bits (exact, no verification needed); signs of S proven on enclosures of the real critical points (value_enclosures)",
+                        an.rur.primes, an.rur.bound_bits
+                    )
+                }
             }
         ),
         Analysis::LevelSets(ls) => format!(
