@@ -257,6 +257,29 @@ fn dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
     acc
 }
 
+dispatch! {
+    /// `y ← y·a + d (mod p)` elementwise, the Horner step of Garner's
+    /// mixed radix ([`super::reconstruct::CrtVec`]): `a < p < 2^31` with
+    /// `w = ⌊a·2^32/p⌋` (Shoup's precomputed quotient), `y < 2^32` in and
+    /// out (congruent, not reduced), `d < 2^31`.
+    pub fn shoup_horner / shoup_horner_avx2 / shoup_horner_generic(y: &mut [u32], d: &[u32], a: u64, w: u64, p: u64) -> ()
+}
+
+#[inline(always)]
+fn shoup_horner_generic(y: &mut [u32], d: &[u32], a: u64, w: u64, p: u64) {
+    // 32-bit factors, so that every product is one `vpmuludq`
+    let (a, w, p) = (a as u32 as u64, w as u32 as u64, p as u32 as u64);
+    let two_p = 2 * p;
+    for (yi, &di) in y.iter_mut().zip(d) {
+        let x = u64::from(*yi);
+        // q ≤ ⌊x·a/p⌋, q ≥ ⌊x·a/p⌋ − 1: the remainder is in [0, 2p)
+        let q = (x * w) >> 32;
+        let r = (x * a).wrapping_sub(q * p);
+        let v = r + u64::from(di);
+        *yi = if v >= two_p { v - two_p } else { v } as u32;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -353,17 +376,21 @@ mod fold_tests {
     use super::*;
     use crate::number::reconstruct::prime31;
 
+    /// A pseudo-random number below `m` (a linear congruential generator
+    /// on `seed`; `m ≤ 2^31`).
+    fn lcg(seed: &mut u64, m: u64) -> u64 {
+        *seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (*seed >> 33) % m
+    }
+
     /// The AVX2 fold step equals the portable one.
     #[test]
     fn fold_row_matches_generic() {
         let fp = Fp::new(prime31(2));
         let mut seed = 5u64;
-        let mut rnd = |m: u64| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 33) % m
-        };
+        let mut rnd = |m: u64| lcg(&mut seed, m);
         for len in [0usize, 1, 3, 4, 5, 17, 114] {
             let c: Vec<u32> = (0..len).map(|_| rnd(fp.p) as u32).collect();
             let row0: Vec<u64> = (0..len).map(|_| rnd(fp.p2)).collect();
@@ -373,6 +400,35 @@ mod fold_tests {
             fold_row_kernel()(&mut r1, a, &c, fp.p2);
             fold_row_generic(&mut r2, a, &c, fp.p2);
             assert_eq!(r1, r2, "len {len}");
+        }
+    }
+
+    /// Shoup's Horner step (dispatched, AVX2 where available) is congruent
+    /// to `y·a + d` modulo p and stays below 2^32, from the extremes of its
+    /// input ranges too (y = 2^32 − 1, a = p − 1, d = 2^31 − 1).
+    #[test]
+    fn shoup_horner_is_a_horner_step() {
+        let mut seed = 11u64;
+        // 32 random bits from two draws
+        let mut rnd = |m: u64| ((lcg(&mut seed, 1 << 31) << 1) | lcg(&mut seed, 2)) % m;
+        for k in [0usize, 5, 300] {
+            let p = prime31(k);
+            for len in [0usize, 1, 4, 7, 115] {
+                let mut y: Vec<u32> = (0..len).map(|_| rnd(1 << 32) as u32).collect();
+                let mut d: Vec<u32> = (0..len).map(|_| rnd(1 << 31) as u32).collect();
+                if len > 0 {
+                    y[0] = u32::MAX;
+                    d[0] = (1 << 31) - 1;
+                }
+                for a in [0, 1, rnd(p), p - 1] {
+                    let before = y.clone();
+                    shoup_horner(&mut y, &d, a, (a << 32) / p, p);
+                    for i in 0..len {
+                        let want = (u64::from(before[i]) * a + u64::from(d[i])) % p;
+                        assert_eq!(u64::from(y[i]) % p, want, "p {p}, a {a}, len {len}");
+                    }
+                }
+            }
         }
     }
 }

@@ -74,12 +74,6 @@ impl Modulus {
         if a == 0 { 0 } else { self.n - a }
     }
 
-    /// `a·2^64 mod n` for `a < n` (plain form in and out; no division).
-    #[inline(always)]
-    pub fn shift64(&self, a: u64) -> u64 {
-        self.mul(a, self.r2)
-    }
-
     /// Into Montgomery form.
     #[inline(always)]
     #[allow(clippy::wrong_self_convention)] // conversions need the modulus

@@ -105,22 +105,28 @@ impl Fp {
     }
 }
 
+/// Primes per block of [`BlockResidues`].
+const BLOCK: usize = 8;
+
 /// Residues of a fixed list of integers modulo the primes [`prime31`]`(k)`,
 /// `k = 0, 1, …`, a block of [`BlockResidues::BLOCK`] consecutive primes at
-/// a time: each integer is divided once by the block's product (a long
-/// division by a four-word number), then the small remainders are reduced
-/// modulo each prime of the block.  For integers of many words this is
-/// several times faster than reducing each one modulo each prime.
+/// a time: each integer's digits are read once, from the top, and folded
+/// into the eight residues together (one Barrett step per 64-bit digit and
+/// prime, independent across primes, so they overlap in the pipeline): a
+/// quarter fewer instructions than a long division by the block's product
+/// followed by reductions of the remainder (300-bit cubic), and fewer
+/// passes over memory than one pass over the digits per prime.
 pub struct BlockResidues<'a> {
     ints: Vec<&'a BigInt>,
     /// The index of the cached block (`usize::MAX`: none).
     block: usize,
-    rems: Vec<BigUint>,
+    /// Per integer, its residues modulo the block's primes (sign applied).
+    rems: Vec<[u64; BLOCK]>,
 }
 
 impl<'a> BlockResidues<'a> {
-    /// Primes per block (their product has 248 bits).
-    pub const BLOCK: usize = 8;
+    /// Primes per block.
+    pub const BLOCK: usize = BLOCK;
 
     /// The residues of `ints` will be asked for.
     pub fn new(ints: Vec<&'a BigInt>) -> Self {
@@ -136,24 +142,36 @@ impl<'a> BlockResidues<'a> {
         debug_assert_eq!(fp.p, prime31(k));
         let b = k / Self::BLOCK;
         if b != self.block {
-            let prod: BigUint = (b * Self::BLOCK..(b + 1) * Self::BLOCK)
-                .map(|j| BigUint::from(prime31(j)))
-                .product();
-            self.rems = self.ints.iter().map(|x| x.magnitude() % &prod).collect();
+            let fields: [Fp; BLOCK] =
+                std::array::from_fn(|j| Fp::new(prime31(b * Self::BLOCK + j)));
+            // 2^32 and 2^64 modulo each prime
+            let c32: [u64; BLOCK] = std::array::from_fn(|j| (1u64 << 32) % fields[j].p);
+            let c64: [u64; BLOCK] = std::array::from_fn(|j| fields[j].mul(c32[j], c32[j]));
+            self.rems = self
+                .ints
+                .iter()
+                .map(|x| {
+                    let mut acc = [0u64; BLOCK];
+                    for d in x.magnitude().iter_u64_digits().rev() {
+                        let (hi, lo) = (d >> 32, d & 0xffff_ffff);
+                        for j in 0..BLOCK {
+                            // acc·2^64 + d ≡ acc·c64 + hi·c32 + lo, below
+                            // 2^62 + 2^63 + 2^32 < 2^64: one reduction
+                            acc[j] = fields[j].reduce(acc[j] * c64[j] + hi * c32[j] + lo);
+                        }
+                    }
+                    if x.sign() == Sign::Minus {
+                        for (a, f) in acc.iter_mut().zip(&fields) {
+                            *a = f.neg(*a);
+                        }
+                    }
+                    acc
+                })
+                .collect();
             self.block = b;
         }
-        self.ints
-            .iter()
-            .zip(&self.rems)
-            .map(|(x, r)| {
-                let m = fp.reduce_biguint(r);
-                if x.sign() == Sign::Minus {
-                    fp.neg(m)
-                } else {
-                    m
-                }
-            })
-            .collect()
+        let j = k % Self::BLOCK;
+        self.rems.iter().map(|r| r[j]).collect()
     }
 }
 
@@ -237,17 +255,31 @@ pub fn prime31(i: usize) -> u64 {
     list[i]
 }
 
-/// Chinese remaindering of a vector of residues: the values are kept in
-/// `[0, M)` with `M` the product of the primes so far.  Primes are combined
-/// in pairs in machine words first (`p₁p₂ < 2^62`), so each big-integer pass
-/// (a Montgomery reduction of the digits and one multiply-add) serves two
-/// primes; call [`CrtVec::flush`] before reading.
+/// Chinese remaindering of a vector of residues modulo 31-bit primes, by
+/// Garner's mixed radix: `x = d₀ + p₀(d₁ + p₁(d₂ + …))` with digits
+/// `0 ≤ d_j < p_j`.  A new prime's digits take word operations only: the
+/// known digits are evaluated modulo it by Horner's rule, one product by a
+/// constant per digit and value (Shoup's precomputed quotient, a vector
+/// kernel).  Big integers appear only when [`CrtVec::flush`] converts the
+/// digits pushed since the previous flush (Horner in machine words over the
+/// new digits, two a step, then one multiply-add against the part already
+/// converted).  A lifting over k primes thus costs about k²/2 vector
+/// operations per value and no big-integer reduction; flushing on a
+/// geometric schedule (the modular RUR) stays cheap.  Call
+/// [`CrtVec::flush`] before reading the values.
 #[derive(Clone, Debug)]
 pub struct CrtVec {
+    /// The product of all primes pushed.
     modulus: BigInt,
+    /// The values for the primes before `converted`, in `[0, ∏ p)`.
     values: Vec<BigInt>,
-    primes: usize,
-    pending: Option<(u64, Vec<u64>)>,
+    /// The product of the primes before `converted`.
+    converted_modulus: BigInt,
+    converted: usize,
+    /// The primes, in the order pushed.
+    primes: Vec<u64>,
+    /// `digits[j][i]`: the mixed-radix digit of value i at prime j.
+    digits: Vec<Vec<u32>>,
 }
 
 impl CrtVec {
@@ -256,98 +288,121 @@ impl CrtVec {
         CrtVec {
             modulus: BigInt::one(),
             values: vec![BigInt::zero(); n],
-            primes: 0,
-            pending: None,
+            converted_modulus: BigInt::one(),
+            converted: 0,
+            primes: Vec::new(),
+            digits: Vec::new(),
         }
     }
 
     /// The number of residue vectors pushed.
     pub fn primes(&self) -> usize {
-        self.primes
+        self.primes.len()
     }
 
-    /// The bit size of the product of all primes pushed (pending included).
+    /// The bit size of the product of all primes pushed.
     pub fn modulus_bits(&self) -> u64 {
         self.modulus.bits()
-            + self
-                .pending
-                .as_ref()
-                .map_or(0, |(p, _)| 64 - p.leading_zeros() as u64)
     }
 
-    /// The product of the primes (after [`CrtVec::flush`]).
+    /// The product of the primes pushed.
     pub fn modulus(&self) -> &BigInt {
-        debug_assert!(self.pending.is_none(), "CrtVec read before flush");
         &self.modulus
     }
 
     /// The values in `[0, M)` (after [`CrtVec::flush`]).
     pub fn values(&self) -> &[BigInt] {
-        debug_assert!(self.pending.is_none(), "CrtVec read before flush");
+        debug_assert_eq!(
+            self.converted,
+            self.primes.len(),
+            "CrtVec read before flush"
+        );
         &self.values
     }
 
-    /// Adds the residues `r` (in `[0, p)`) modulo a new prime `p`.
+    /// Adds the residues `r` (in `[0, p)`) modulo a new prime `p`, distinct
+    /// from those pushed before.
     pub fn push(&mut self, fp: &Fp, r: &[u64]) {
         assert_eq!(r.len(), self.values.len());
-        self.primes += 1;
-        match self.pending.take() {
-            None => self.pending = Some((fp.p, r.to_vec())),
-            Some((p1, r1)) => {
-                // x ≡ r1 (mod p1), x ≡ r (mod p2):  x = r1 + p1·((r − r1)/p1 mod p2)
-                let inv = fp.inv(p1 % fp.p).expect("distinct primes");
-                let both: Vec<u64> = r1
-                    .iter()
-                    .zip(r)
-                    .map(|(&a, &b)| a + p1 * fp.mul(fp.sub(b, a % fp.p), inv))
-                    .collect();
-                self.combine(p1 * fp.p, &both);
-            }
-        }
-    }
-
-    /// Folds a pending single prime into the values.
-    pub fn flush(&mut self) {
-        if let Some((p, r)) = self.pending.take() {
-            self.combine(p, &r);
-        }
-    }
-
-    /// Adds residues modulo an odd `m < 2^62` coprime to the modulus.
-    fn combine(&mut self, m: u64, r: &[u64]) {
-        let mm = crate::number::modular::Modulus::new(m);
-        let single = (m < 1 << 31).then(|| Fp::new(m));
-        // x mod m for x ≥ 0 from its 64-bit digits: one prime by Barrett;
-        // a pair (m > 2^61) by acc·2^64 = redc(acc·R²) and a digit reduced
-        // by at most 7 subtractions
-        let reduce = |x: &BigInt| -> u64 {
-            if let Some(fp) = &single {
-                return fp.reduce_biguint(x.magnitude());
-            }
-            let mut acc = 0u64;
-            for d in x.magnitude().iter_u64_digits().rev() {
-                let mut dm = d;
-                while dm >= m {
-                    dm -= m;
-                }
-                let t = mm.shift64(acc) + dm;
-                acc = if t >= m { t - m } else { t };
-            }
-            acc
-        };
-        debug_assert!(!(1 << 31..=1 << 61).contains(&m));
-        let minv = inv_mod(reduce(&self.modulus), m).expect("coprime moduli");
-        for (v, &ri) in self.values.iter_mut().zip(r) {
+        let p = fp.p;
+        // y = d₀ + p₀(d₁ + … + p_{j−2} d_{j−1}) mod p, by Horner from the
+        // last digit (kept below 2^32, congruent)
+        let mut y = vec![0u32; r.len()];
+        for (t, d) in self.digits.iter().enumerate().rev() {
             crate::budget::check();
-            let cur = reduce(v);
-            let diff = if ri >= cur { ri - cur } else { ri + m - cur };
-            let t = ((diff as u128 * minv as u128) % m as u128) as u64;
-            if t != 0 {
-                *v += &self.modulus * BigInt::from(t);
+            let a = self.primes[t] % p;
+            crate::number::modkernel::shoup_horner(&mut y, d, a, (a << 32) / p, p);
+        }
+        // d_j = (r − y)·(p₀⋯p_{j−1})⁻¹ mod p
+        let prefix = self.primes.iter().fold(1u64, |acc, &q| fp.mul(acc, q % p));
+        let inv = fp.inv(prefix).expect("distinct primes");
+        let digits: Vec<u32> = y
+            .iter()
+            .zip(r)
+            .map(|(&yi, &ri)| fp.mul(fp.sub(ri, fp.reduce(u64::from(yi))), inv) as u32)
+            .collect();
+        self.digits.push(digits);
+        self.primes.push(p);
+        self.modulus *= BigInt::from(p);
+    }
+
+    /// Converts the digits pushed since the last flush into the values.
+    pub fn flush(&mut self) {
+        let (from, to) = (self.converted, self.primes.len());
+        if from == to {
+            return;
+        }
+        let primes = &self.primes[from..to];
+        let mut limbs: Vec<u64> = Vec::with_capacity((to - from).div_ceil(2) + 1);
+        for (i, v) in self.values.iter_mut().enumerate() {
+            crate::budget::check();
+            // z = d_from + p_from(d_{from+1} + …) by Horner from the top, in
+            // machine words, two digits a step
+            limbs.clear();
+            let digit = |j: usize| u64::from(self.digits[from + j][i]);
+            let mut j = primes.len();
+            if j % 2 == 1 {
+                j -= 1;
+                limbs.push(digit(j));
+            }
+            while j >= 2 {
+                j -= 2;
+                // z ← z·p_j p_{j+1} + (d_j + p_j d_{j+1})  (both < 2^62)
+                let m = primes[j] * primes[j + 1];
+                mul_add_limbs(&mut limbs, m, digit(j) + primes[j] * digit(j + 1));
+            }
+            if limbs.iter().any(|&l| l != 0) {
+                let z = BigInt::from_biguint(Sign::Plus, biguint_of_limbs(&limbs));
+                *v += &self.converted_modulus * z;
             }
         }
-        self.modulus *= BigInt::from(m);
+        for &q in primes {
+            self.converted_modulus *= BigInt::from(q);
+        }
+        self.converted = to;
     }
+}
+
+/// `z ← z·m + c` on little-endian 64-bit limbs.
+fn mul_add_limbs(z: &mut Vec<u64>, m: u64, c: u64) {
+    let mut carry = u128::from(c);
+    for l in z.iter_mut() {
+        let t = u128::from(*l) * u128::from(m) + carry;
+        *l = t as u64;
+        carry = t >> 64;
+    }
+    if carry != 0 {
+        z.push(carry as u64);
+    }
+}
+
+/// The natural number with these little-endian 64-bit limbs.
+fn biguint_of_limbs(limbs: &[u64]) -> BigUint {
+    let digits: Vec<u32> = limbs
+        .iter()
+        .flat_map(|&l| [l as u32, (l >> 32) as u32])
+        .collect();
+    BigUint::new(digits)
 }
 
 /// The rational `n/d` (`d > 0`, `gcd(n, d) = 1`) with `n ≡ a·d (mod m)` and
@@ -434,6 +489,8 @@ mod tests {
             BigInt::from(-5),
             BigInt::from(prime31(3)) * BigInt::from(prime31(9)),
             -(big << 64usize) + BigInt::one(),
+            // every digit 2^64 − 1: the largest terms of the fold
+            (BigInt::one() << 4096usize) - BigInt::one(),
         ];
         let mut blocks = BlockResidues::new(ints.iter().collect());
         for k in [0usize, 1, 7, 8, 9, 3, 17, 40] {
@@ -509,6 +566,41 @@ mod tests {
             .collect();
         assert_eq!(back, xs);
         assert_eq!(c.primes(), k);
+    }
+
+    /// Garner's digits converted in several flushes (the modular RUR's
+    /// geometric schedule) give the values of one flush at the end, which
+    /// are the residues' unique preimages in [0, M): checked against the
+    /// residues directly, for 1 to 60 primes.
+    #[test]
+    fn crt_flushed_in_steps_agrees_with_one_flush() {
+        let xs: Vec<BigInt> = vec![
+            (BigInt::one() << 1800usize) - BigInt::from(977),
+            -(BigInt::from(5u32).pow(700u32)),
+            BigInt::from(prime31(0)) * BigInt::from(prime31(1)),
+            BigInt::from(-1),
+            BigInt::zero(),
+        ];
+        let mut stepped = CrtVec::new(xs.len());
+        let mut once = CrtVec::new(xs.len());
+        for k in 0..60 {
+            let fp = Fp::new(prime31(k));
+            let r: Vec<u64> = xs.iter().map(|x| fp.reduce_big(x)).collect();
+            stepped.push(&fp, &r);
+            once.push(&fp, &r);
+            if k % 7 == 3 || k == 59 {
+                stepped.flush();
+                let m = stepped.modulus().clone();
+                assert_eq!(stepped.primes(), k + 1);
+                for (v, x) in stepped.values().iter().zip(&xs) {
+                    assert!(!v.is_negative() && v < &m);
+                    assert_eq!(v, &x.mod_floor(&m), "after {} primes", k + 1);
+                }
+            }
+        }
+        once.flush();
+        assert_eq!(once.values(), stepped.values());
+        assert_eq!(once.modulus(), stepped.modulus());
     }
 
     /// Wang's algorithm with plain Euclidean steps (the reference for the

@@ -70,7 +70,12 @@ pub(crate) fn refine_dyadic_newton(
     // `gain`: bits asked of the next Newton step; `wait`: rounds of plain
     // bisection before the next attempt (doubles on failure), so a failing
     // Newton costs a bounded fraction of the work
-    let (mut gain, mut wait, mut backoff) = (4i64, 0u32, 1u32);
+    // a bracket already narrow against its ends' magnitude (`known` bits,
+    // e.g. a root isolated earlier to 2^-64 and now printed) starts from a
+    // gain of that many bits, which Newton's quadratic step gives near a
+    // simple root; a wide one from 4
+    let known = br.a.bits().max(br.b.bits()) as i64 - (&br.b - &br.a).bits() as i64;
+    let (mut gain, mut wait, mut backoff) = (known.clamp(4, 1 << 20), 0u32, 1u32);
     let exact = |iv: &mut RootInterval, x: Q| {
         *iv = RootInterval {
             lo: x.clone(),
@@ -180,6 +185,38 @@ mod tests {
             }
             assert!(&iv.hi - &iv.lo <= w);
             assert!(p.sign_at(&iv.lo) * p.sign_at(&iv.hi) < 0);
+        }
+    }
+
+    /// A bracket already refined to 2^-40 (or 2^-64) and refined again
+    /// starts Newton with a gain of as many bits as it holds: the sign change
+    /// and the asked width survive, also where that first step must fail
+    /// (a cluster of roots 2^-40 apart, which a 40-bit gain overshoots).
+    #[test]
+    fn narrow_brackets_refine_again() {
+        // (x − 1/3)(x² − 2)(x − (1 + 2^-40))(x − 1)(x − (1 − 2^-40))
+        let cluster = |c: i64| {
+            let one = BigInt::from(1) << 40usize;
+            ZPoly::new(vec![-(&one + c), one])
+        };
+        let p = &(&(&(&ZPoly::from_i64s(&[-1, 3]) * &ZPoly::from_i64s(&[-2, 0, 1])) * &cluster(1))
+            * &ZPoly::from_i64s(&[-1, 1]))
+            * &cluster(-1);
+        let width = |bits: usize| Q::new(BigInt::from(1), BigInt::from(1) << bits);
+        let roots = isolate_real_roots(&p);
+        assert_eq!(roots.len(), 6);
+        for first in [40usize, 64] {
+            for mut iv in roots.clone() {
+                for bits in [first, 100, 200] {
+                    refine(&p, &mut iv, &width(bits));
+                    if iv.is_exact() {
+                        assert_eq!(p.sign_at(&iv.lo), 0);
+                        break;
+                    }
+                    assert!(&iv.hi - &iv.lo <= width(bits));
+                    assert!(p.sign_at(&iv.lo) * p.sign_at(&iv.hi) < 0);
+                }
+            }
         }
     }
 

@@ -84,6 +84,10 @@ pub struct PoissonAnalysis {
     pub value_bound_bits: u64,
     /// The number of primes of D(u).
     pub value_primes: usize,
+    /// S at a 2^-32 approximation of each real critical point (`None` where
+    /// w′ vanished there), made on first use by [`PoissonAnalysis::witness`]
+    /// and shared by the witnesses of min and max.
+    approx_values: std::sync::OnceLock<(QMPoly, Vec<Option<Q>>)>,
 }
 
 impl PoissonAnalysis {
@@ -157,13 +161,29 @@ impl PoissonAnalysis {
         // only cost a retry, never a wrong answer).  No refinement of
         // `value`: a root of D(u) of high degree is costly to refine.
         let (lo, hi) = value.interval();
-        let mut order: Vec<(Q, usize)> = (0..self.real_points.len())
-            .filter_map(|i| {
-                let v = approx_value(s, &self.approx_point(i, 32)?);
-                let d = if v < lo {
-                    &lo - &v
-                } else if v > hi {
-                    &v - &hi
+        let values_of = || -> Vec<Option<Q>> {
+            (0..self.real_points.len())
+                .map(|i| Some(approx_value(s, &self.approx_point(i, 32)?)))
+                .collect()
+        };
+        let cached = self.approx_values.get_or_init(|| (s.clone(), values_of()));
+        // (a caller's other S gets its own values, uncached)
+        let fresh;
+        let approx = if &cached.0 == s {
+            &cached.1
+        } else {
+            fresh = values_of();
+            &fresh
+        };
+        let mut order: Vec<(Q, usize)> = approx
+            .iter()
+            .enumerate()
+            .filter_map(|(i, v)| {
+                let v = v.as_ref()?;
+                let d = if v < &lo {
+                    &lo - v
+                } else if v > &hi {
+                    v - &hi
                 } else {
                     Q::zero()
                 };
@@ -397,6 +417,7 @@ fn finish(
         enclosures: Vec::new(),
         value_bound_bits: 0,
         value_primes: 0,
+        approx_values: std::sync::OnceLock::new(),
     };
     if !values {
         // the verdict from the signs of S at the real critical points; D(u)

@@ -294,3 +294,40 @@ proptest! {
         agrees_with_the_exact_route(&es, &s);
     }
 }
+
+/// The witnesses near the least and the greatest critical value (they share
+/// the approximate values of S at the real critical points, computed once)
+/// have the asked signs, and a witness asked for another S (here −S, whose
+/// greatest value is −min S) is searched with that S's own values: it lies
+/// near the point where S is least.
+#[test]
+fn witnesses_of_min_and_max_and_of_another_surface() {
+    let ell = ellipsoid("2x^2 + y^2 + 3z^2 + x*y - y*z - 7");
+    let sp = parse_poly("x^3 + y^3 - z^3 + x*z - 2y + 1").unwrap();
+    let an = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
+    let vals = an.real_values();
+    let (lo, hi) = (vals.first().unwrap(), vals.last().unwrap());
+    assert!(lo.signum() < 0 && hi.signum() > 0, "an intersecting pair");
+    let neg = an.witness(lo, &ell, &sp, -1).expect("a negative witness");
+    let pos = an.witness(hi, &ell, &sp, 1).expect("a positive witness");
+    assert_eq!((neg.sign, pos.sign), (-1, 1));
+    let minus = -sp.clone();
+    let an_minus = crate::tangent::poisson::analyze(&ell, &minus, true).unwrap();
+    let top = an_minus.real_values().last().unwrap().clone();
+    let w = an.witness(&top, &ell, &minus, 1).expect("a witness for −S");
+    assert_eq!(w.sign, 1);
+    let approx = |p: &crate::tangent::WitnessPoint| -> Vec<f64> {
+        p.coords
+            .iter()
+            .map(|c| c.approx(20).parse::<f64>().unwrap())
+            .collect()
+    };
+    for (a, b) in approx(&w).iter().zip(approx(&neg)) {
+        assert!(
+            (a - b).abs() < 0.05,
+            "{:?} vs {:?}",
+            approx(&w),
+            approx(&neg)
+        );
+    }
+}
