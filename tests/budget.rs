@@ -303,8 +303,11 @@ fn a_dense_degree_12_surface_stays_under_the_memory_limit() {
     let _serial = serial();
     let s = dense_degree(12);
     // the Gröbner bases modulo primes and the lifted polynomials grow past
-    // 16 MiB; the allocator's count stops them
-    tangent_under_memory_limit(16, "x^2+2y^2+3z^2-5", &s);
+    // 8 MiB; the allocator's count stops them.  (Since the CRT keeps word
+    // digits and D(u)'s roots are isolated without Descartes' rule, the
+    // computation fits in 16 MiB and the answer comes in about 3 s; its JSON,
+    // which repeats D(u) for every critical value, then takes 45 MB.)
+    tangent_under_memory_limit(8, "x^2+2y^2+3z^2-5", &s);
 }
 
 #[test]

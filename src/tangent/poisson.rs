@@ -29,6 +29,7 @@ use crate::elim::poisson::SquareSystem;
 use crate::number::reconstruct::{Fp, prime31};
 use crate::number::{Q, dyadic_floor, qi};
 use crate::poly::mpoly::{X, Y, Z};
+use crate::poly::zpoly::DyadicSigner;
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
 use crate::roots::krawczyk::{Fix, System, ZeroBox, eval_box};
 use crate::roots::modrur::Declined;
@@ -36,8 +37,9 @@ use crate::roots::poisson::{
     ModAlgebra, PoissonRur, ValueMap, poly_gcd_mod, solve_square, value_bound_bits,
     value_polynomial, zpoly_mod,
 };
-use crate::roots::{RealAlg, isolate_squarefree};
+use crate::roots::{RealAlg, RootInterval, isolate_squarefree};
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 /// The directions `n` tried in turn (the first gives the sparsest system).
@@ -88,6 +90,9 @@ pub struct PoissonAnalysis {
     /// w′ vanished there), made on first use by [`PoissonAnalysis::witness`]
     /// and shared by the witnesses of min and max.
     approx_values: std::sync::OnceLock<(QMPoly, Vec<Option<Q>>)>,
+    /// With [`PoissonAnalysis::separates`]: the real roots of D(u),
+    /// increasing (isolated once, in [`analyze`]).
+    judging_roots: Vec<RealAlg>,
 }
 
 impl PoissonAnalysis {
@@ -102,8 +107,26 @@ impl PoissonAnalysis {
     /// [`PoissonAnalysis::separates`]: all real roots of D(u), increasing).
     pub fn real_values(&self) -> Vec<RealAlg> {
         match &self.judging {
-            Some(j) if self.separates() => RealAlg::roots_of(j),
+            Some(_) if self.separates() => self.judging_roots.clone(),
             _ => self.values.clone(),
+        }
+    }
+
+    /// S at a 2^-32 approximation of each real critical point (`None`
+    /// where w′ vanished there): made once for the analysed S and shared
+    /// (by the isolation of D(u)'s roots and the witnesses of min and max);
+    /// for another S computed afresh.
+    fn approx_values(&self, s: &QMPoly) -> std::borrow::Cow<'_, [Option<Q>]> {
+        let values_of = || -> Vec<Option<Q>> {
+            (0..self.real_points.len())
+                .map(|i| Some(approx_value(s, &self.approx_point(i, 32)?)))
+                .collect()
+        };
+        let cached = self.approx_values.get_or_init(|| (s.clone(), values_of()));
+        if &cached.0 == s {
+            std::borrow::Cow::Borrowed(&cached.1)
+        } else {
+            std::borrow::Cow::Owned(values_of())
         }
     }
 
@@ -161,20 +184,7 @@ impl PoissonAnalysis {
         // only cost a retry, never a wrong answer).  No refinement of
         // `value`: a root of D(u) of high degree is costly to refine.
         let (lo, hi) = value.interval();
-        let values_of = || -> Vec<Option<Q>> {
-            (0..self.real_points.len())
-                .map(|i| Some(approx_value(s, &self.approx_point(i, 32)?)))
-                .collect()
-        };
-        let cached = self.approx_values.get_or_init(|| (s.clone(), values_of()));
-        // (a caller's other S gets its own values, uncached)
-        let fresh;
-        let approx = if &cached.0 == s {
-            &cached.1
-        } else {
-            fresh = values_of();
-            &fresh
-        };
+        let approx = self.approx_values(s);
         let mut order: Vec<(Q, usize)> = approx
             .iter()
             .enumerate()
@@ -418,6 +428,7 @@ fn finish(
         value_bound_bits: 0,
         value_primes: 0,
         approx_values: std::sync::OnceLock::new(),
+        judging_roots: Vec::new(),
     };
     if !values {
         // the verdict from the signs of S at the real critical points; D(u)
@@ -447,10 +458,118 @@ fn finish(
     if judging.degree() != an.critical.degree() {
         an.values = identify_values(&an.rur, &an.real_points, s, &judging)?;
     }
+    if an.separates() {
+        an.judging_roots = isolate_by_values(&judging, &an.approx_values(s))
+            .unwrap_or_else(|| RealAlg::roots_of(&judging));
+    }
     an.judging = Some(judging);
     an.value_bound_bits = bits;
     an.value_primes = value_primes;
     Ok(an)
+}
+
+/// The real roots of D(u) (square-free, primitive, positive leading
+/// coefficient) when S separates the critical points, isolated from
+/// approximations of S at the R real critical points instead of by
+/// Descartes' rule: D then has exactly R real roots (a real value at a
+/// non-real point would be shared by its conjugate), so separators
+/// `t₁ < … < t_{R−1}` between the sorted approximations at which D's sign
+/// alternates (starting from its sign at −∞) cut the line into R intervals
+/// with an odd number of roots each, hence exactly one.  Each root is then
+/// narrowed, when two more signs confirm it, to about 2^-24 relative around
+/// its approximation, which the printed 20 digits refine from.  The
+/// approximations only choose where D is evaluated: every conclusion rests on
+/// exact signs of D.  `None` (and Descartes' rule instead) when an
+/// approximation is missing, two coincide, or a sign does not alternate.
+pub(crate) fn isolate_by_values(d: &ZPoly, approx: &[Option<Q>]) -> Option<Vec<RealAlg>> {
+    let mut v: Vec<Q> = approx.iter().cloned().collect::<Option<_>>()?;
+    v.sort();
+    if v.is_empty() || v.windows(2).any(|w| w[0] == w[1]) {
+        return None;
+    }
+    let n = d.degree()?;
+    let lead = d.lc().sign() == num_bigint::Sign::Plus;
+    let at_minus_inf = if lead == (n % 2 == 0) { 1 } else { -1 };
+    // ends beyond every complex root: D has its signs at ±∞ there
+    let k = d.root_bound_log2()?.max(0) as usize;
+    let big = Q::from_integer(BigInt::one() << k);
+    let mut ends = vec![-big.clone()];
+    for w in v.windows(2) {
+        // the simplest rational in the middle half between neighbours
+        let q = (&w[1] - &w[0]) / Q::from_integer(BigInt::from(4));
+        ends.push(crate::roots::simplest_rational_in(
+            &(&w[0] + &q),
+            &(&w[1] - &q),
+        ));
+    }
+    ends.push(big);
+    if ends.windows(2).any(|w| w[0] >= w[1]) {
+        return None;
+    }
+    // D's signs at −2^k, t₁, …, t_{R−1}, 2^k must alternate
+    let mut sign = at_minus_inf;
+    for t in &ends[1..ends.len() - 1] {
+        let st = d.sign_at(t);
+        if st != -sign {
+            return None;
+        }
+        sign = st;
+    }
+    let at_plus_inf = if lead { 1 } else { -1 };
+    if at_plus_inf != -sign {
+        return None;
+    }
+    // every interval (ends[i], ends[i+1]) holds exactly one root; narrow it
+    // around v[i] where D's signs confirm
+    let signer = DyadicSigner::new(d);
+    let mut s_lo = at_minus_inf;
+    let roots = (0..v.len())
+        .map(|i| {
+            let (a, b) = (&ends[i], &ends[i + 1]);
+            let iv = narrow_around(&signer, &v[i], s_lo, a, b).unwrap_or_else(|| RootInterval {
+                lo: a.clone(),
+                hi: b.clone(),
+            });
+            s_lo = -s_lo;
+            RealAlg::from_primitive(d, &iv)
+        })
+        .collect();
+    Some(roots)
+}
+
+/// A bracket of about 2^-24 relative width around `v` inside `(a, b)`, on
+/// which D (of sign `s_lo` just above `a`, one root in `(a, b)`) changes
+/// sign: dyadic ends 2^8 grid steps of 2^(e−32) from `v`, `2^e` above |v|.
+fn narrow_around(signer: &DyadicSigner, v: &Q, s_lo: i32, a: &Q, b: &Q) -> Option<RootInterval> {
+    let e = v.numer().bits() as i64 - v.denom().bits() as i64 + 1;
+    let m = 32 - e; // grid 2^-m
+    let t: BigInt = if m >= 0 {
+        (v.numer() << m as usize).div_floor(v.denom())
+    } else {
+        v.numer().div_floor(&(v.denom() << (-m) as usize))
+    };
+    let (lo_m, hi_m): (BigInt, BigInt) = (&t - 256, &t + 257);
+    let (lo, hi, k) = if m >= 0 {
+        let den = BigInt::one() << m as usize;
+        (
+            Q::new(lo_m.clone(), den.clone()),
+            Q::new(hi_m.clone(), den),
+            m as u64,
+        )
+    } else {
+        let f = BigInt::one() << (-m) as usize;
+        (Q::from_integer(&lo_m * &f), Q::from_integer(&hi_m * &f), 0)
+    };
+    if &lo <= a || &hi >= b {
+        return None;
+    }
+    let (ml, mh) = if m >= 0 {
+        (lo_m, hi_m)
+    } else {
+        (lo.numer().clone(), hi.numer().clone())
+    };
+    (signer.sign_at(&ml, k) == s_lo && signer.sign_at(&mh, k) == -s_lo)
+        .then_some(RootInterval { lo, hi })
 }
 
 /// The remainder of `s` by `e` as polynomials in x (`e` of degree 2 in x

@@ -331,3 +331,50 @@ fn witnesses_of_min_and_max_and_of_another_surface() {
         );
     }
 }
+
+/// D(u)'s real roots isolated from approximations of the values: the same
+/// roots as Descartes' rule whenever the signs of D at the separators
+/// alternate (good, rough and misplaced approximations alike), narrow
+/// brackets where an approximation is within 2^-24, the isolating interval
+/// between separators otherwise, and `None` when a sign does not alternate,
+/// an approximation is missing or two coincide.
+#[test]
+fn judging_roots_from_approximate_values() {
+    use crate::tangent::poisson::isolate_by_values;
+    // (u + 2)(u − 1)(u − 3)(u² + 1): real roots −2, 1, 3
+    let d = [[2, 1], [-1, 1], [-3, 1], [1, 0]]
+        .iter()
+        .fold(crate::poly::ZPoly::from_i64s(&[1, 0, 1]), |acc, f| {
+            &acc * &crate::poly::ZPoly::from_i64s(f)
+        });
+    let exact = crate::roots::RealAlg::roots_of(&d);
+    let q = |n: i64, den: i64| Some(Q::new(BigInt::from(n), BigInt::from(den)));
+    let width = |r: &crate::roots::RealAlg| {
+        let (lo, hi) = r.interval();
+        hi - lo
+    };
+    let tiny = Q::new(BigInt::one(), BigInt::one() << 20usize);
+    // within 2^-40: narrow brackets
+    let near = [q(-2, 1), q(1_099_511_627_777, 1_099_511_627_776), q(3, 1)];
+    let roots = isolate_by_values(&d, &near).expect("isolated");
+    assert_eq!(roots, exact);
+    assert!(
+        roots
+            .iter()
+            .all(|r| width(r) <= &tiny * Q::from_integer(BigInt::from(4)))
+    );
+    // off by 10^-3: still isolated, the brackets stay between separators
+    let rough = [q(-2001, 1000), q(1001, 1000), q(2999, 1000)];
+    let roots = isolate_by_values(&d, &rough).expect("isolated");
+    assert_eq!(roots, exact);
+    assert!(roots.iter().all(|r| width(r) > tiny.clone()));
+    // 3/2 for the root 3: the signs still alternate, so still isolated
+    let misplaced = [q(-2, 1), q(1, 1), q(3, 2)];
+    assert_eq!(isolate_by_values(&d, &misplaced).expect("isolated"), exact);
+    // 3 and 5 for the roots 1 and 3: D > 0 at both separators
+    assert!(isolate_by_values(&d, &[q(-2, 1), q(3, 1), q(5, 1)]).is_none());
+    // fewer approximations than real roots: D's sign at +∞ does not match
+    assert!(isolate_by_values(&d, &[q(-2, 1), q(1, 1)]).is_none());
+    assert!(isolate_by_values(&d, &[q(-2, 1), None, q(3, 1)]).is_none());
+    assert!(isolate_by_values(&d, &[q(-2, 1), q(1, 1), q(1, 1)]).is_none());
+}
