@@ -28,6 +28,9 @@ pub struct Fp {
     pub p2: u64,
     /// `⌊(2^64 − 1)/p⌋`.
     barrett: u64,
+    /// `2^32 mod p` and `2^64 mod p` (for [`Fp::fold_digit`]).
+    c32: u64,
+    c64: u64,
 }
 
 impl Fp {
@@ -39,6 +42,8 @@ impl Fp {
             p,
             p2: p * p,
             barrett: u64::MAX / p,
+            c32: (1u64 << 32) % p,
+            c64: ((1u128 << 64) % p as u128) as u64,
         }
     }
 
@@ -94,14 +99,19 @@ impl Fp {
         }
     }
 
-    /// A natural number as an element.
+    /// A natural number as an element (one [`Fp::fold_digit`] per 64-bit
+    /// digit).
     pub fn reduce_biguint(&self, x: &BigUint) -> u64 {
-        let mut acc = 0u64;
-        for d in x.iter_u64_digits().rev() {
-            acc = self.reduce((acc << 32) | (d >> 32));
-            acc = self.reduce((acc << 32) | (d & 0xffff_ffff));
-        }
-        acc
+        x.iter_u64_digits()
+            .rev()
+            .fold(0, |acc, d| self.fold_digit(acc, d))
+    }
+
+    /// `acc·2^64 + d mod p` for `acc < p`: as `acc·(2^64 mod p) + hi·(2^32
+    /// mod p) + lo`, below 2^62 + 2^63 + 2^32 < 2^64, so one reduction.
+    #[inline(always)]
+    pub fn fold_digit(&self, acc: u64, d: u64) -> u64 {
+        self.reduce(acc * self.c64 + (d >> 32) * self.c32 + (d & 0xffff_ffff))
     }
 }
 
@@ -144,20 +154,14 @@ impl<'a> BlockResidues<'a> {
         if b != self.block {
             let fields: [Fp; BLOCK] =
                 std::array::from_fn(|j| Fp::new(prime31(b * Self::BLOCK + j)));
-            // 2^32 and 2^64 modulo each prime
-            let c32: [u64; BLOCK] = std::array::from_fn(|j| (1u64 << 32) % fields[j].p);
-            let c64: [u64; BLOCK] = std::array::from_fn(|j| fields[j].mul(c32[j], c32[j]));
             self.rems = self
                 .ints
                 .iter()
                 .map(|x| {
                     let mut acc = [0u64; BLOCK];
                     for d in x.magnitude().iter_u64_digits().rev() {
-                        let (hi, lo) = (d >> 32, d & 0xffff_ffff);
-                        for j in 0..BLOCK {
-                            // acc·2^64 + d ≡ acc·c64 + hi·c32 + lo, below
-                            // 2^62 + 2^63 + 2^32 < 2^64: one reduction
-                            acc[j] = fields[j].reduce(acc[j] * c64[j] + hi * c32[j] + lo);
+                        for (a, f) in acc.iter_mut().zip(&fields) {
+                            *a = f.fold_digit(*a, d);
                         }
                     }
                     if x.sign() == Sign::Minus {
@@ -328,13 +332,14 @@ impl CrtVec {
         // y = d₀ + p₀(d₁ + … + p_{j−2} d_{j−1}) mod p, by Horner from the
         // last digit (kept below 2^32, congruent)
         let mut y = vec![0u32; r.len()];
+        let mut prefix = 1u64; // p₀⋯p_{j−1} mod p
         for (t, d) in self.digits.iter().enumerate().rev() {
             crate::budget::check();
             let a = self.primes[t] % p;
             crate::number::modkernel::shoup_horner(&mut y, d, a, (a << 32) / p, p);
+            prefix = fp.mul(prefix, a);
         }
         // d_j = (r − y)·(p₀⋯p_{j−1})⁻¹ mod p
-        let prefix = self.primes.iter().fold(1u64, |acc, &q| fp.mul(acc, q % p));
         let inv = fp.inv(prefix).expect("distinct primes");
         let digits: Vec<u32> = y
             .iter()

@@ -27,7 +27,7 @@ use super::witness::{WitnessPoint, find_witness, witness_at_value};
 use crate::elim::f4::zmpoly_mod;
 use crate::elim::poisson::SquareSystem;
 use crate::number::reconstruct::{Fp, prime31};
-use crate::number::{Q, dyadic_floor, qi};
+use crate::number::{Q, dyadic, dyadic_floor, qi};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::zpoly::DyadicSigner;
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
@@ -86,9 +86,8 @@ pub struct PoissonAnalysis {
     pub value_bound_bits: u64,
     /// The number of primes of D(u).
     pub value_primes: usize,
-    /// S at a 2^-32 approximation of each real critical point (`None` where
-    /// w′ vanished there), made on first use by [`PoissonAnalysis::witness`]
-    /// and shared by the witnesses of min and max.
+    /// S at a 2^-32 approximation of each real critical point, with the S
+    /// it was made for (see [`PoissonAnalysis::approx_values`]).
     approx_values: std::sync::OnceLock<(QMPoly, Vec<Option<Q>>)>,
     /// With [`PoissonAnalysis::separates`]: the real roots of D(u),
     /// increasing (isolated once, in [`analyze`]).
@@ -539,36 +538,23 @@ pub(crate) fn isolate_by_values(d: &ZPoly, approx: &[Option<Q>]) -> Option<Vec<R
 
 /// A bracket of about 2^-24 relative width around `v` inside `(a, b)`, on
 /// which D (of sign `s_lo` just above `a`, one root in `(a, b)`) changes
-/// sign: dyadic ends 2^8 grid steps of 2^(e−32) from `v`, `2^e` above |v|.
+/// sign: dyadic ends about 2^8 steps of a grid of about 2^-32·|v| from `v`.
 fn narrow_around(signer: &DyadicSigner, v: &Q, s_lo: i32, a: &Q, b: &Q) -> Option<RootInterval> {
-    let e = v.numer().bits() as i64 - v.denom().bits() as i64 + 1;
-    let m = 32 - e; // grid 2^-m
-    let t: BigInt = if m >= 0 {
-        (v.numer() << m as usize).div_floor(v.denom())
+    // the grid 2^g, about 2^-32 of |v|; t = ⌊v / 2^g⌋
+    let g = v.numer().bits() as i64 - v.denom().bits() as i64 - 31;
+    let t: BigInt = if g <= 0 {
+        (v.numer() << (-g) as usize).div_floor(v.denom())
     } else {
-        v.numer().div_floor(&(v.denom() << (-m) as usize))
+        v.numer().div_floor(&(v.denom() << g as usize))
     };
-    let (lo_m, hi_m): (BigInt, BigInt) = (&t - 256, &t + 257);
-    let (lo, hi, k) = if m >= 0 {
-        let den = BigInt::one() << m as usize;
-        (
-            Q::new(lo_m.clone(), den.clone()),
-            Q::new(hi_m.clone(), den),
-            m as u64,
-        )
-    } else {
-        let f = BigInt::one() << (-m) as usize;
-        (Q::from_integer(&lo_m * &f), Q::from_integer(&hi_m * &f), 0)
-    };
+    // the ends (t − 256)·2^g and (t + 257)·2^g as numerators over 2^k
+    let (k, sh) = ((-g).max(0) as usize, g.max(0) as usize);
+    let (ml, mh): (BigInt, BigInt) = ((&t - 256) << sh, (&t + 257) << sh);
+    let (lo, hi) = (dyadic(ml.clone(), k), dyadic(mh.clone(), k));
     if &lo <= a || &hi >= b {
         return None;
     }
-    let (ml, mh) = if m >= 0 {
-        (lo_m, hi_m)
-    } else {
-        (lo.numer().clone(), hi.numer().clone())
-    };
-    (signer.sign_at(&ml, k) == s_lo && signer.sign_at(&mh, k) == -s_lo)
+    (signer.sign_at(&ml, k as u64) == s_lo && signer.sign_at(&mh, k as u64) == -s_lo)
         .then_some(RootInterval { lo, hi })
 }
 
