@@ -169,6 +169,21 @@ pub fn value_polynomial(phi: &ZPoly, num: &QPoly, den: &QPoly) -> ZPoly {
             return ZPoly::from_q(&QPoly::new(vec![-n, d])).0;
         }
     }
+    if !num.is_zero() && !den.is_zero() {
+        let (nz, kn) = ZPoly::from_q(num);
+        let (dz, kd) = ZPoly::from_q(den);
+        let sigma = kn / kd;
+        if let Some(r) =
+            super::poisson::value_resultant(phi, &nz, &dz, sigma.numer(), sigma.denom())
+        {
+            return r.primitive_part().squarefree_part();
+        }
+    }
+    value_polynomial_bivariate(phi, num, den)
+}
+
+/// [`value_polynomial`] by the general bivariate resultant.
+fn value_polynomial_bivariate(phi: &ZPoly, num: &QPoly, den: &QPoly) -> ZPoly {
     let phi_m = MPoly::from_univariate(&phi.to_q(), T);
     let u = MPoly::<Q>::var(U);
     let den_m = MPoly::from_univariate(den, T);
@@ -287,5 +302,85 @@ mod doc_examples {
         let num = QPoly::new(vec![qi(1), qi(0), qi(1)]);
         let v = value_at(&a, &num, &QPoly::constant(qi(1))).unwrap();
         assert_eq!(v.as_rational(), Some(&qi(3)));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::q;
+
+    fn zp(c: &[i64]) -> ZPoly {
+        ZPoly::from_i64s(c)
+    }
+
+    fn qp(c: &[(i64, i64)]) -> QPoly {
+        QPoly::new(c.iter().map(|&(n, d)| q(n, d)).collect())
+    }
+
+    /// The Poisson formula modulo primes and the general bivariate
+    /// resultant give the same value polynomial, including repeated values
+    /// (a smaller square-free part), big coefficients, a constant
+    /// denominator and numerators of every degree up to deg φ − 1.
+    #[test]
+    fn poisson_value_polynomial_agrees_with_the_bivariate_resultant() {
+        let big: BigInt = num_traits::pow(BigInt::from(3u8), 90) + 7;
+        let mut phi_big = zp(&[-5, 0, 3, 1, 0, 2]);
+        phi_big = &phi_big + &ZPoly::new(vec![big.clone()]);
+        let cases: Vec<(ZPoly, QPoly, QPoly)> = vec![
+            (zp(&[-2, 0, 1]), qp(&[(1, 1), (0, 1)]), qp(&[(1, 1)])),
+            (
+                zp(&[-2, 0, 1]),
+                qp(&[(0, 1), (0, 1), (1, 1)]),
+                qp(&[(1, 1)]),
+            ),
+            (
+                zp(&[1, -3, 0, 1]),
+                qp(&[(1, 2), (-2, 3), (5, 7)]),
+                qp(&[(3, 1), (1, 1)]),
+            ),
+            (
+                zp(&[-1, 0, 0, 0, 1]),
+                qp(&[(0, 1), (0, 1), (1, 1)]),
+                qp(&[(1, 1)]),
+            ),
+            (
+                zp(&[7, 1, -4, 0, 9, 2, 1]),
+                qp(&[(-1, 5), (2, 1), (0, 1), (3, 4)]),
+                qp(&[(2, 3), (0, 1), (1, 1)]),
+            ),
+            (
+                phi_big,
+                qp(&[(1, 1), (-1, 1), (1, 3), (0, 1), (2, 1)]),
+                qp(&[(-3, 2), (1, 1)]),
+            ),
+        ];
+        for (phi, num, den) in cases {
+            let (nz, kn) = ZPoly::from_q(&num);
+            let (dz, kd) = ZPoly::from_q(&den);
+            let s = kn / kd;
+            let fast = crate::roots::poisson::value_resultant(&phi, &nz, &dz, s.numer(), s.denom())
+                .expect("den is invertible modulo φ");
+            let general = value_polynomial_bivariate(&phi, &num, &den);
+            assert_eq!(fast.primitive_part().squarefree_part(), general, "{phi:?}");
+            assert_eq!(value_polynomial(&phi, &num, &den), general);
+        }
+    }
+
+    /// A denominator vanishing at a root of φ: Res(φ, den) = 0 modulo
+    /// every prime, so the general resultant answers.
+    #[test]
+    fn a_denominator_vanishing_at_a_root_declines_the_poisson_formula() {
+        let phi = zp(&[-2, -1, 1]); // roots 2 and −1
+        let num = qp(&[(1, 1), (1, 1)]);
+        let den = qp(&[(-2, 1), (1, 1)]); // zero at 2
+        let (nz, _) = ZPoly::from_q(&num);
+        let (dz, _) = ZPoly::from_q(&den);
+        let one = BigInt::one();
+        assert!(crate::roots::poisson::value_resultant(&phi, &nz, &dz, &one, &one).is_none());
+        assert_eq!(
+            value_polynomial(&phi, &num, &den),
+            value_polynomial_bivariate(&phi, &num, &den)
+        );
     }
 }

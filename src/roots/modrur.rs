@@ -17,6 +17,10 @@
 //!   number of standard monomials of the leading monomials of polynomials
 //!   computed in `I_p` bounds `dim_Q Q[x]/I` from above (docs/maths.md); when
 //!   it equals `deg D`, the `deg D` distinct verified zeros are all of them.
+//!   When the leading forms share a zero at infinity modulo every prime
+//!   tried (e.g. `S = x⁵y + …`, whose top form is singular along `x = 0`),
+//!   the bound is `dim_Q Q[x]/I` from the reduced Gröbner basis over Q,
+//!   computed once (it is cheap next to the Krylov step of the exact route).
 //!
 //! Nothing computed modulo p is trusted: a wrong or premature reconstruction
 //! fails the exact checks and the caller falls back to the exact route.
@@ -43,10 +47,13 @@ pub struct Declined(pub String);
 /// How completeness was proven.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CountCertificate {
-    /// The prime p.
-    pub prime: u64,
+    /// The prime p where the leading forms have no common zero at infinity;
+    /// `None` when they have one modulo every prime tried and the bound is
+    /// `dim_Q Q[x]/I` from the reduced Gröbner basis over Q.
+    pub prime: Option<u64>,
     /// The number of standard monomials of the leading monomials found in
-    /// `I_p`: an upper bound on the number of complex zeros over Q.
+    /// `I_p` (of the basis over Q when `prime` is `None`): an upper bound
+    /// on the number of complex zeros over Q.
     pub bound: usize,
 }
 
@@ -455,6 +462,7 @@ pub fn solve_modular_implied(
     let (mut next_probe, mut next_full) = (0u64, 0u64);
     let (mut unlucky, mut fails) = (0usize, 0usize);
     let mut tried_count = 0usize;
+    let mut exact_tried = false;
     // the separating element, fixed at the first prime that has one
     let mut chosen: Option<usize> = None;
     for k in 0..max_primes {
@@ -521,15 +529,25 @@ pub fn solve_modular_implied(
             tried_count += 1;
             if no_zeros_at_infinity(&fp, &zgens) {
                 count = Some(CountCertificate {
-                    prime: fp.p,
+                    prime: Some(fp.p),
                     bound: n,
                 });
             }
         }
         if let Some(c) = &candidate {
             if agrees_mod(&fp, c, &img.residues) {
+                // zeros at infinity modulo every prime tried: the count of
+                // the basis over Q instead (once; cheap next to the exact
+                // route that would run otherwise)
+                if count.is_none() && !exact_tried {
+                    exact_tried = true;
+                    count = super::zerodim::quotient_dimension(gens)
+                        .map(|bound| CountCertificate { prime: None, bound });
+                }
                 let Some(cc) = count.clone() else {
-                    return decline("zeros at infinity modulo every prime tried");
+                    return decline(
+                        "zeros at infinity modulo every prime tried, and infinitely many zeros over Q",
+                    );
                 };
                 let c = candidate.take().expect("present");
                 let hi = chosen.expect("an image was computed");

@@ -29,7 +29,7 @@ use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
 use crate::number::reconstruct::{BlockResidues, CrtVec, Fp, prime31, symmetric_mod};
 use crate::poly::{ZMPoly, ZPoly};
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// The exact RUR of a square system (see the module documentation).
 #[derive(Clone, Debug)]
@@ -595,6 +595,32 @@ fn rem_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
     reduced_trimmed(fp, &r)
 }
 
+/// `Res(a, b)` modulo p by Euclid's algorithm, for `a`, `b` with non-zero
+/// leading coefficients modulo p (ascending): `Res(a, b) = (−1)^(mn)
+/// lc(b)^(m − deg r)·Res(b, r)` with `r = a rem b`, down to a constant.
+pub(crate) fn resultant_mod(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
+    let pow = |x: u64, e: usize| (0..e).fold(1u64, |acc, _| fp.mul(acc, x));
+    let (mut a, mut b) = (trimmed(a), trimmed(b));
+    let mut acc = 1u64;
+    loop {
+        let (Some(m), Some(n)) = (a.len().checked_sub(1), b.len().checked_sub(1)) else {
+            return 0;
+        };
+        if n == 0 {
+            return fp.mul(acc, pow(b[0], m));
+        }
+        let r = rem_mod(fp, &a, &b);
+        if r.is_empty() {
+            return 0;
+        }
+        if m * n % 2 == 1 {
+            acc = fp.neg(acc);
+        }
+        acc = fp.mul(acc, pow(b[n], m - (r.len() - 1)));
+        (a, b) = (b, r);
+    }
+}
+
 /// The gcd modulo p (not normalised; ascending, trimmed).
 pub(crate) fn poly_gcd_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
     euclid(fp, a.to_vec(), b.to_vec(), None).0
@@ -965,6 +991,90 @@ pub fn value_polynomial(
         "the prime limit was reached (value polynomial)".into(),
     ))
 }
+
+/// `Res_λ(φ(λ), sd·u·den(λ) − sn·num(λ))` exactly, for `φ` of degree
+/// n ≥ 1 and integer `num`, `den` (not zero), by the CRT over word primes
+/// up to Hadamard's bound on the Sylvester matrix (L1 norms of the rows):
+/// modulo p it is `lc(φ)^(k − deg den)·Res(φ, den)·Σ_i sn^(n−i)·sd^i·χ_i·u^i`,
+/// k = max(deg num, deg den) and χ the characteristic polynomial of the
+/// multiplication by `num/den` in `F_p[λ]/(φ)` (Poisson's formula, ∏ over
+/// the roots of φ of `sd·den·u − sn·num`).  `None` when `Res(φ, den)`
+/// vanishes modulo the first primes (den vanishes at a root of φ, or is
+/// likely to), so that the caller's general resultant runs instead.
+pub(crate) fn value_resultant(
+    phi: &ZPoly,
+    num: &ZPoly,
+    den: &ZPoly,
+    sn: &BigInt,
+    sd: &BigInt,
+) -> Option<ZPoly> {
+    let n = phi.degree().filter(|&n| n >= 1)?;
+    let (dn, dd) = (num.degree()?, den.degree()?);
+    let k = dn.max(dd);
+    let l1 = |p: &ZPoly| -> BigInt { p.coeffs().iter().map(|c| c.abs()).sum() };
+    let g1 = sd.abs() * l1(den) + sn.abs() * l1(num);
+    let bound = k as u64 * l1(phi).bits() + n as u64 * g1.bits();
+    crate::budget::check_size("a resultant", n + 1, bound);
+    let ints: Vec<&BigInt> = [phi, num, den]
+        .iter()
+        .flat_map(|p| p.coeffs())
+        .chain([sn, sd])
+        .collect();
+    let mut blocks = BlockResidues::new(ints);
+    let mut crt = CrtVec::new(n + 1);
+    let mut degenerate = 0usize;
+    let pow = |fp: &Fp, x: u64, e: usize| (0..e).fold(1u64, |acc, _| fp.mul(acc, x));
+    for j in 0..MAX_VALUE_PRIMES {
+        crate::budget::check_now();
+        if crt.modulus_bits() > bound + 1 {
+            crt.flush();
+            let m = crt.modulus().clone();
+            return Some(ZPoly::new(
+                crt.values().iter().map(|x| symmetric_mod(x, &m)).collect(),
+            ));
+        }
+        let fp = Fp::new(prime31(j));
+        let all = blocks.residues(j, &fp);
+        let (fm, rest) = all.split_at(n + 1);
+        let (nm, rest) = rest.split_at(dn + 1);
+        let (dm, rest) = rest.split_at(dd + 1);
+        let (snp, sdp) = (rest[0], rest[1]);
+        if fm[n] == 0 || nm[dn] == 0 || dm[dd] == 0 || snp == 0 || sdp == 0 {
+            continue;
+        }
+        let res = resultant_mod(&fp, fm, dm);
+        if res == 0 {
+            degenerate += 1;
+            if crt.primes() == 0 && degenerate >= 4 {
+                return None;
+            }
+            continue;
+        }
+        let alg = ModAlgebra::from_poly(fp, fm)?;
+        let reduce = |a: &[u64]| -> Vec<u64> {
+            let mut r = rem_mod(&fp, a, fm);
+            r.resize(n, 0);
+            r
+        };
+        // den is invertible modulo φ_p: their resultant is not zero
+        let dinv = alg.inv(&reduce(dm))?;
+        let chi = alg.charpoly(&alg.mul(&reduce(nm), &dinv));
+        let mut c = fp.mul(pow(&fp, fm[n], k - dd), res);
+        // c·sn^(n−i)·sd^i from i = 0 up
+        c = fp.mul(c, pow(&fp, snp, n));
+        let ratio = fp.mul(sdp, fp.inv(snp).expect("non-zero"));
+        let mut out = vec![0u64; n + 1];
+        for (o, &x) in out.iter_mut().zip(&chi) {
+            *o = fp.mul(c, x);
+            c = fp.mul(c, ratio);
+        }
+        crt.push(&fp, &out);
+    }
+    None
+}
+
+/// The largest number of primes of [`value_resultant`].
+const MAX_VALUE_PRIMES: usize = 200_000;
 
 /// Sombra's bound (bits) on the coefficients of `Res(u − h, system)`.
 pub fn value_bound_bits(sys: &SquareSystem, h: &ZMPoly) -> u64 {

@@ -54,6 +54,17 @@ fn to_g(p: &QMPoly) -> GPoly {
     GPoly::from_mpoly(p, &SLOTS, MonoOrder::GrevLex)
 }
 
+/// `dim_Q Q[x, y, z]/I` for the ideal I of `gens`, from its reduced
+/// Gröbner basis over Q (grevlex): an upper bound on the number of complex
+/// zeros, exact whatever happens at infinity.  `None` when I has infinitely
+/// many zeros.
+pub fn quotient_dimension(gens: &[QMPoly]) -> Option<usize> {
+    let input: Vec<GPoly> = gens.iter().filter(|g| !g.is_zero()).map(to_g).collect();
+    groebner(input, 3, MonoOrder::GrevLex)
+        .standard_monomials()
+        .map(|b| b.len())
+}
+
 /// Solves a zero-dimensional system in x, y, z exactly: `Ok(None)` when the
 /// system has infinitely many complex zeros.
 pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, Error> {

@@ -192,7 +192,11 @@ fn method_json(m: &Analysis) -> Value {
                 "completeness": {
                     "prime": r.count.prime,
                     "count_bound": r.count.bound,
-                    "argument": "the leading forms of E and of the minors have no common zero at infinity modulo prime, so the number of complex critical points is at most count_bound (the standard monomials of a Gröbner basis modulo prime); count_bound = deg D, so the roots of D are all the critical values",
+                    "argument": if r.count.prime.is_some() {
+                        "the leading forms of E and of the minors have no common zero at infinity modulo prime, so the number of complex critical points is at most count_bound (the standard monomials of a Gröbner basis modulo prime); count_bound = deg D, so the roots of D are all the critical values"
+                    } else {
+                        "the leading forms of E and of the minors share a zero at infinity modulo every prime tried (prime is null); count_bound is dim_Q Q[x,y,z]/I, the number of standard monomials of the reduced Gröbner basis over Q (grevlex) of E and the minors, an upper bound on the number of complex critical points; count_bound = deg D, so the roots of D are all the critical values"
+                    },
                 },
                 "resultant_elimination": Value::Null,
             })

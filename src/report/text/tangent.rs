@@ -129,7 +129,7 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.real_roots.len()
         ),
         Analysis::ModularRur(an) => format!(
-            "critical ideal E = 0, ∇S×∇E = 0, multi-modular: {} critical points, RUR in u = {} ({}; {} primes, verified exactly), {} real; complete: at most {} critical points by the count modulo {}",
+            "critical ideal E = 0, ∇S×∇E = 0, multi-modular: {} critical points, RUR in u = {} ({}; {} primes, verified exactly), {} real; complete: at most {} critical points by {}",
             an.rur.points(),
             crate::report::separating_element(an),
             if an.shift.is_none() {
@@ -140,7 +140,11 @@ pub fn tangent_human(r: &TangentReport) -> String {
             an.rur.primes,
             an.rur.real_roots.len(),
             an.rur.count.bound,
-            an.rur.count.prime
+            match an.rur.count.prime {
+                Some(p) => format!("the count modulo {p}"),
+                None => "the Gröbner basis over Q (zeros at infinity modulo every prime tried)"
+                    .to_string(),
+            }
         ),
         Analysis::Poisson(an) => format!(
             "critical points as zeros of the square system E = 0, a·m = b·m = 0 (m = ∇S×∇E, a, b ⊥ n = ({}, {}, {})) with no zeros at infinity: {} zeros, {} of them extra (n·∇E = n·∇S = 0, none critical), {} critical points, {} real; {}",
