@@ -111,6 +111,8 @@ impl GPoly {
         }
         let mut g = BigInt::zero();
         for (_, c) in &self.terms {
+            // a gcd of huge numbers is slow: the clock is read per term
+            crate::budget::check_for(c.bits());
             g = g.gcd(c);
             if g.is_one() {
                 break;
@@ -121,6 +123,7 @@ impl GPoly {
         }
         if !g.is_one() {
             for (_, c) in self.terms.iter_mut() {
+                crate::budget::check_for(c.bits());
                 *c = &*c / &g;
             }
         }
@@ -184,7 +187,10 @@ fn lin_comb(
 ) -> Vec<(Mono, BigInt)> {
     let mut out = Vec::with_capacity(a.len() + b.len());
     let (mut i, mut j) = (0, 0);
+    // products by huge multipliers are slow: the clock is read per term
+    let work = k1.bits() + k2.bits();
     while i < a.len() || j < b.len() {
+        crate::budget::check_for(work);
         let bm = if j < b.len() {
             Some(mono_mul(&b[j].0, m))
         } else {
@@ -242,6 +248,7 @@ pub fn reduce_full(f: &GPoly, basis: &[&GPoly], ord: MonoOrder) -> (GPoly, Q) {
                 p = lin_comb(&p, &kb, &g.terms, &m, &ka, ord);
                 if !kb.is_one() {
                     for (_, c) in r.iter_mut() {
+                        crate::budget::check_for(kb.bits());
                         *c *= &kb;
                     }
                     scale *= Q::from_integer(kb);
@@ -251,6 +258,7 @@ pub fn reduce_full(f: &GPoly, basis: &[&GPoly], ord: MonoOrder) -> (GPoly, Q) {
                     // keep the coefficients small: divide out the common content
                     let mut g = BigInt::zero();
                     for (_, c) in p.iter().chain(r.iter()) {
+                        crate::budget::check_for(c.bits());
                         g = g.gcd(c);
                         if g.is_one() {
                             break;
@@ -258,6 +266,7 @@ pub fn reduce_full(f: &GPoly, basis: &[&GPoly], ord: MonoOrder) -> (GPoly, Q) {
                     }
                     if !g.is_zero() && !g.is_one() {
                         for (_, c) in p.iter_mut().chain(r.iter_mut()) {
+                            crate::budget::check_for(c.bits());
                             *c = &*c / &g;
                         }
                         scale /= Q::from_integer(g);

@@ -220,6 +220,15 @@ fn image_mod_p(
             fd[j - 1] = fp.mul(j as u64 % fp.p, f_low[j]);
         }
         fd[n - 1] = n as u64 % fp.p;
+        // h generates A (its powers span it): f is square-free iff A is
+        // reduced, so a repeated factor means the ideal is not radical
+        // modulo p (a multiple critical point), which no number of primes
+        // would cure
+        let mut f_full = f_low.clone();
+        f_full.push(1);
+        if crate::roots::poisson::poly_gcd_mod(fp, &f_full, &fd).len() > 1 {
+            return Err(ImageFail::NotRadical);
+        }
         let mut residues = f_low;
         for coords in &s2[1..4] {
             residues.extend(mulmod(fp, coords, &fd, fc));
@@ -645,6 +654,19 @@ mod tests {
             assert_eq!(m.f, exact.extra_values[0]);
             assert_eq!(m.real_roots.len(), exact.real_roots.len());
         }
+    }
+
+    /// S singular at points of E (`∇S = 0` where `xy = ±1/√3, z = 0`, to
+    /// fifth order in z): multiple critical points. The cyclic algebra
+    /// modulo p gives a non-square-free f, which is declined at once
+    /// (it once reconstructed the same non-square-free candidate until the
+    /// prime limit).
+    #[test]
+    fn multiple_critical_points_are_declined_as_not_radical() {
+        let (gens, s) = critical_system("3x^2+y^2+2z^2+x*y-4", "x^3*y^3+z^6-x*y+1");
+        let shifted = &s + &parse_poly("x/3+2y/3+z").unwrap();
+        let err = solve_modular(&gens, &[s, shifted], 500).unwrap_err();
+        assert_eq!(err.0, "the ideal is not radical");
     }
 
     #[test]
