@@ -323,6 +323,30 @@ pub fn run_optional<T>(f: impl FnOnce() -> T) -> Option<T> {
     }
 }
 
+/// [`run_optional`] with a time cap of its own: the part is also skipped
+/// (`None`) when it runs longer than `cap`, so that an optional second
+/// certificate cannot spend the whole operation's time; the operation's
+/// own limits (its deadline included) end it as usual.  The cap holds
+/// outside any [`run`] too.
+pub fn run_optional_for<T>(cap: Duration, f: impl FnOnce() -> T) -> Option<T> {
+    match run(&Budget::unlimited().with_time_limit(Some(cap)), f) {
+        Ok(v) => Some(v),
+        Err(e) if e.limit() == Limit::Size => None,
+        Err(e) if e.limit() == Limit::Time && !deadline_passed() => None,
+        Err(e) => exhaust(e),
+    }
+}
+
+/// True when the running operation's deadline has passed.
+fn deadline_passed() -> bool {
+    ACTIVE.with(|a| {
+        a.borrow()
+            .as_ref()
+            .and_then(|a| a.deadline)
+            .is_some_and(|d| Instant::now() >= d)
+    })
+}
+
 /// True when an operation with a budget is running on this thread.
 pub fn is_active() -> bool {
     ACTIVE.with(|a| a.borrow().is_some())

@@ -291,7 +291,7 @@ struct Candidate {
 /// Rational reconstruction of all values with a running common denominator
 /// (after the first few coefficients most are integers times it): the
 /// numerators over the final common denominator.
-fn reconstruct(values: &[BigInt], m: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
+pub(crate) fn reconstruct(values: &[BigInt], m: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
     let bound_bits = (m.bits() - 1) / 2;
     let mut den = BigInt::one();
     // (numerator, denominator at the time) per value

@@ -91,8 +91,9 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
     let multiplicity_dim = quo.dim();
     // Fast path: a form t whose minimal polynomial has degree dim A makes A
     // cyclic, A ≅ Q[T]/(m); then I is radical iff m is square-free, and
-    // otherwise √I = I + (sqfree(m)(t)).  Else fall back to Seidenberg: the
-    // minimal polynomials of x, y, z must be square-free.
+    // otherwise Q[x]/√I ≅ Q[T]/(sqfree(m)) (`radical_shape`).  Else fall
+    // back to Seidenberg: the minimal polynomials of x, y, z must be
+    // square-free, √I = I + (sqfree(m_x)(x), …).
     let mut made_radical = false;
     let mut mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
     let mut rhs = shape_targets(&quo, &mats, extra);
@@ -104,15 +105,21 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         let (mp, sol) = krylov_shape(&mt, &quo.one(), &rhs)?;
         if let Some(sol) = sol {
             cyclic = true;
-            ready = Some(([qi(1), qi(a), qi(b)], mp.clone(), sol));
             let (mz, _) = ZPoly::from_q(&mp);
             let sq = mz.squarefree_part();
             if sq.degree() != mz.degree() {
-                let t: QMPoly =
-                    &(&MPoly::var(X) + &MPoly::var(Y).scale(&qi(a))) + &MPoly::var(Z).scale(&qi(b));
-                let tz = MPoly::from_univariate(&sq.to_q(), X);
-                sq_add.push(tz.substitute(X, &t));
+                // A ≅ Q[T]/(m_t) by x ↦ X(T): the radical's quotient is
+                // Q[T]/(sqfree m_t), with the same shape reduced modulo it
+                // (no second Gröbner basis, whose generator sqfree(m_t)(t)
+                // would be dense of high degree)
+                return Ok(Some(radical_shape(
+                    [qi(1), qi(a), qi(b)],
+                    &sq,
+                    sol,
+                    multiplicity_dim,
+                )));
             }
+            ready = Some(([qi(1), qi(a), qi(b)], mp.clone(), sol));
             break;
         }
     }
@@ -192,6 +199,33 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         real_roots,
         made_radical,
     }))
+}
+
+/// The RUR of `√I` when `A = Q[x]/I` is cyclic for the form `t`: with
+/// `A ≅ Q[T]/(m_t)` (x, y, z and the extras are `sol` as polynomials in T),
+/// the nilradical is `(sqfree(m_t))/(m_t)`, so `Q[x]/√I ≅ Q[T]/(sq)` and
+/// the zeros are `ξ(τ) = (X(τ), Y(τ), Z(τ))` over the roots τ of `sq`, each
+/// coordinate and extra reduced modulo `sq`.
+fn radical_shape(form: [Q; 3], sq: &ZPoly, sol: Vec<Vec<Q>>, multiplicity_dim: usize) -> Rur {
+    let sqq = sq.to_q();
+    let polys: Vec<QPoly> = sol.into_iter().map(|c| QPoly::new(c).rem(&sqq)).collect();
+    let one = QPoly::constant(qi(1));
+    let extra_values = polys[3..]
+        .iter()
+        .map(|p| crate::roots::value_polynomial(sq, p, &one))
+        .collect();
+    Rur {
+        multiplicity_dim,
+        points: sq.degree().unwrap_or(0),
+        form,
+        f: sq.clone(),
+        coords: [polys[0].clone(), polys[1].clone(), polys[2].clone()],
+        coords_z: std::array::from_fn(|k| ZPoly::from_q(&polys[k])),
+        extra: polys[3..].to_vec(),
+        extra_values,
+        real_roots: RealAlg::roots_of(sq),
+        made_radical: true,
+    }
 }
 
 /// The vectors whose shape is wanted: the coordinates x, y, z and the
@@ -298,6 +332,22 @@ mod tests {
             "x*y*z + x^2",
         );
         assert!(r.points > 0);
+    }
+
+    /// Multiple zeros with a cyclic quotient: the radical comes from the
+    /// shape modulo sqfree(m_t), with no second Gröbner basis.  In the
+    /// plane z = 0 the unit circle meets its tangent y = 1 at (0, 1)
+    /// (a double zero) and the line x = 1/2 at (1/2, ±√3/2).
+    #[test]
+    fn multiple_zeros_of_a_cyclic_quotient_give_the_radical_shape() {
+        let r = check(&["x^2+y^2-1", "(y-1)*(2x-1)", "z"], "x + y");
+        assert_eq!(r.multiplicity_dim, 4);
+        assert!(r.made_radical);
+        assert_eq!(r.points, 3);
+        assert_eq!(r.real_roots.len(), 3);
+        // x + y at the points: 1 and 1/2 ± √3/2, the roots of
+        // (u − 1)(2u² − 2u − 1) = 2u³ − 4u² + u + 1
+        assert_eq!(r.extra_values[0], ZPoly::from_i64s(&[1, 1, -4, 2]));
     }
 
     #[test]

@@ -101,6 +101,7 @@ pub fn cross_gradients(s: &QMPoly, e: &QMPoly) -> [QMPoly; 3] {
 
 /// Runs the critical-point analysis of S on E.
 pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
+    let started = std::time::Instant::now();
     let cross = cross_gradients(s, &e.poly);
     let mut gens = vec![e.poly.clone()];
     gens.extend(cross.iter().cloned());
@@ -119,9 +120,11 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
                 .map(|v| v.expect("denominator 1"))
                 .collect();
             // optional: an elimination too large for the size limits is
-            // skipped, like one beyond its own work budget
+            // skipped, like one beyond its own work budget or one taking
+            // longer than the critical points took (plus 0.1 s)
+            let cap = started.elapsed() + std::time::Duration::from_millis(100);
             let elimination =
-                crate::budget::run_optional(|| super::judging::eliminate(e, s)).flatten();
+                crate::budget::run_optional_for(cap, || super::judging::eliminate(e, s)).flatten();
             Ok(Outcome::Finite(CriticalAnalysis {
                 generators: gens,
                 rur,

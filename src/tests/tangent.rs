@@ -623,3 +623,29 @@ fn zeros_at_infinity_are_counted_by_the_basis_over_q() {
     assert_eq!(b.verdict, Verdict::Intersecting);
     assert!(same_alg(&r.min, &b.min) && same_alg(&r.max, &b.max));
 }
+
+/// Singular points of S on E make the critical ideal non-radical (here S
+/// vanishes to second order along the y- and z-axes, which meet the
+/// sphere): the modular routes decline, and the exact route takes the
+/// radical from the shape of the cyclic quotient (it used to end undecided
+/// after the time limit).  The extremes are exact: S = 7x⁵ − x²y² − 2xy³z²
+/// is ±224 at (±2, 0, 0); the second pair is checked against a dense
+/// sampling of the sphere (500 × 1000 angles: −36.410104 and 32.410104).
+#[test]
+fn multiple_critical_points_from_singular_points_of_s() {
+    let r = run("x^2+y^2+z^2-4", "7x^5 - x^2*y^2 - 2x*y^3*z^2");
+    assert_eq!(r.verdict, Verdict::Intersecting);
+    assert_eq!(
+        r.certificate.method(),
+        crate::tangent::Method::CriticalIdeal
+    );
+    assert_eq!((rat(&r.min), rat(&r.max)), (qi(-224), qi(224)));
+    let r = run("x^2+y^2+z^2-4", "7x^4*y*z + 3y*z^4 - 2");
+    assert_eq!(r.verdict, Verdict::Intersecting);
+    let (lo, hi) = (approx(&r.min), approx(&r.max));
+    assert!(
+        q(-364120, 10000) < lo && lo <= q(-36410104, 1000000),
+        "{lo}"
+    );
+    assert!(q(32410104, 1000000) <= hi && hi < q(324120, 10000), "{hi}");
+}
