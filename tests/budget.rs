@@ -203,10 +203,13 @@ fn a_dense_degree_10_surface_ends_within_its_budget() {
     }
 }
 
+/// Dense degree 14 takes about 6 s to decide (degree 12, 2.3 s, came too
+/// close to the 2 s limit once the value polynomials got faster): within
+/// 2 s it must end `undecided: budget`, on time.
 #[test]
-fn a_dense_degree_12_surface_is_undecided_within_its_budget() {
+fn a_dense_degree_14_surface_is_undecided_within_its_budget() {
     let _serial = serial();
-    let r = dense_within_two_seconds(12);
+    let r = dense_within_two_seconds(14);
     assert_eq!(r.status, 3);
     let v = json(&r.stdout);
     assert_eq!(v["verdict"], "undecided");

@@ -17,13 +17,13 @@
 use super::critical::cross_gradients;
 use super::ellipsoid::Ellipsoid;
 use super::witness::{WitnessPoint, witness_at_value};
-use crate::number::{Q, q};
+use crate::number::{Q, QSqrt, q};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::RealAlg;
 use crate::roots::modrur::{Declined, ModularRur, solve_modular_implied};
 use crate::roots::{value_polynomial, values_with};
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// When S alone does not separate the critical points (symmetric inputs),
 /// `S + c·ℓ` for these `(ℓ, c)` is tried in turn.
@@ -51,13 +51,39 @@ pub struct ModularAnalysis {
     pub values: Vec<RealAlg>,
     /// D(u): all critical values (complex points included), square-free.
     pub judging: ZPoly,
+    /// Conics of critical points split off before the RUR (see
+    /// [`CriticalConic`]); their values are in `judging` and in
+    /// [`ModularAnalysis::real_values`].
+    pub conics: Vec<CriticalConic>,
+}
+
+/// A conic of critical points: when `x_v^k` (k ≥ 1) divides the three
+/// minors of `∇S × ∇E`, they vanish on the plane `x_v = 0`, so every point
+/// of the conic `E ∩ {x_v = 0}` is critical and S is constant on it (its
+/// derivative along E vanishes there; the conic of an ellipsoid is
+/// connected).  The other critical points are the zeros of E and the
+/// minors divided by the common monomial.
+#[derive(Clone, Debug)]
+pub struct CriticalConic {
+    /// The variable (0, 1, 2: x, y, z) that vanishes on the plane.
+    pub var: usize,
+    /// S on the conic.
+    pub value: Q,
+    /// An exact real point of the conic (S = `value` there).
+    pub point: [QSqrt; 3],
 }
 
 impl ModularAnalysis {
     /// The values attained by real critical points (with `h = S`: the real
     /// roots of D(u), increasing).
     pub fn real_values(&self) -> Vec<RealAlg> {
-        self.values.clone()
+        let mut v = self.values.clone();
+        v.extend(
+            self.conics
+                .iter()
+                .map(|c| RealAlg::rational(c.value.clone())),
+        );
+        v
     }
 
     /// A witness near the real critical point whose value is `value`.
@@ -68,18 +94,128 @@ impl ModularAnalysis {
         s: &QMPoly,
         want: i32,
     ) -> Option<WitnessPoint> {
+        if let Some(c) = self.conics.iter().find(|c| {
+            value.cmp_exact(&RealAlg::rational(c.value.clone())) == std::cmp::Ordering::Equal
+        }) {
+            let sign = c.value.signum().to_i32().unwrap_or(0);
+            if sign == want {
+                return Some(WitnessPoint {
+                    coords: c.point.clone(),
+                    value: QSqrt::rational(c.value.clone()),
+                    sign,
+                });
+            }
+        }
         witness_at_value(&self.values, value, e, s, want, &|i, bits| {
             self.rur.approx_point(i, bits)
         })
     }
 }
 
+/// The largest monomial dividing every term of `ps` (its exponents).
+fn common_monomial(ps: &[QMPoly]) -> [u32; 3] {
+    let mut m = [u32::MAX; 3];
+    for p in ps {
+        for (ex, _) in p.terms() {
+            for (k, v) in [X, Y, Z].into_iter().enumerate() {
+                m[k] = m[k].min(ex[v]);
+            }
+        }
+    }
+    m.map(|x| if x == u32::MAX { 0 } else { x })
+}
+
+/// `p / (x^m₀ y^m₁ z^m₂)` for a monomial dividing every term.
+fn divide_monomial(p: &QMPoly, m: [u32; 3]) -> QMPoly {
+    MPoly::from_terms(p.terms().iter().map(|(ex, c)| {
+        let mut e = *ex;
+        for (k, v) in [X, Y, Z].into_iter().enumerate() {
+            e[v] -= m[k];
+        }
+        (e, c.clone())
+    }))
+}
+
+/// The conic `E ∩ {x_v = 0}` when it has a real point: S there (constant,
+/// see [`CriticalConic`]) and an exact point.  With `Q₂(u, w) = E|_{x_v=0}`
+/// (positive definite quadratic part), the centre `(u₀, w₀)` and
+/// `μ = Q₂(u₀, w₀)`: no real point when μ > 0, the centre alone when μ = 0,
+/// else the points `(u₀, w₀ ± √(−μ/C))`, C the coefficient of w².
+fn critical_conic(e: &QMPoly, s: &QMPoly, v: usize) -> Result<Option<CriticalConic>, Declined> {
+    let decline = |m: &str| Err(Declined(m.into()));
+    let vars = [X, Y, Z];
+    let others: Vec<usize> = (0..3).filter(|&k| k != v).collect();
+    let (iu, iw) = (others[0], others[1]);
+    let q2 = e.substitute(vars[v], &MPoly::zero());
+    // A u² + B uw + C w² + D u + F w + G, made positive definite
+    let mut c: [Q; 6] = std::array::from_fn(|_| Q::zero());
+    for (ex, k) in q2.terms() {
+        let slot = match (ex[vars[iu]], ex[vars[iw]]) {
+            (2, 0) => 0,
+            (1, 1) => 1,
+            (0, 2) => 2,
+            (1, 0) => 3,
+            (0, 1) => 4,
+            (0, 0) => 5,
+            _ => return decline("the ellipsoid is not quadratic"),
+        };
+        c[slot] += k;
+    }
+    if c[0].is_negative() {
+        for x in c.iter_mut() {
+            *x = -x.clone();
+        }
+    }
+    let [a, b, cc, d, f, g] = c;
+    let two = Q::from_integer(2.into());
+    let det = &(&(&two * &two) * &a) * &cc - &b * &b;
+    if !det.is_positive() || !cc.is_positive() {
+        return decline("the section of the ellipsoid is not an ellipse");
+    }
+    let u0 = (&(&b * &f) - &(&(&two * &cc) * &d)) / &det;
+    let w0 = (&(&b * &d) - &(&(&two * &a) * &f)) / &det;
+    let mu = &(&(&(&a * &u0) * &u0) + &(&(&b * &u0) * &w0)) + &(&(&cc * &w0) * &w0);
+    let mu = &(&(&mu + &(&d * &u0)) + &(&f * &w0)) + &g;
+    if mu.is_positive() {
+        return Ok(None);
+    }
+    let mut point: [QSqrt; 3] = std::array::from_fn(|_| QSqrt::rational(Q::zero()));
+    point[iu] = QSqrt::rational(u0.clone());
+    let mut other = point.clone();
+    if mu.is_zero() {
+        point[iw] = QSqrt::rational(w0);
+        other = point.clone();
+    } else {
+        let r = -(&mu / &cc);
+        point[iw] = QSqrt::try_new(w0.clone(), Q::one(), r.clone())
+            .map_err(|_| Declined("a conic point".into()))?;
+        other[iw] =
+            QSqrt::try_new(w0, -Q::one(), r).map_err(|_| Declined("a conic point".into()))?;
+    }
+    let value = crate::geom::eval_qsqrt(s, &point);
+    // S is constant on the conic: the same rational value at both points
+    if !value.is_rational() || crate::geom::eval_qsqrt(s, &other) != value {
+        return decline("S is not constant on a conic of critical points");
+    }
+    Ok(Some(CriticalConic {
+        var: v,
+        value: value.a().clone(),
+        point,
+    }))
+}
+
 /// The modular analysis, or why it does not apply (the caller then uses the
 /// exact route of [`super::critical`]).
 pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
     let cross = cross_gradients(s, &e.poly);
+    // a monomial dividing the three minors: conics of critical points
+    let common = common_monomial(&cross);
+    let mut conics = Vec::new();
+    for v in (0..3).filter(|&v| common[v] > 0) {
+        conics.extend(critical_conic(&e.poly, s, v)?);
+    }
     let mut gens = vec![e.poly.clone()];
-    gens.extend(cross.iter().cloned());
+    gens.extend(cross.iter().map(|m| divide_monomial(m, common)));
     let form = |l: &[i64; 3]| -> QMPoly {
         &(&MPoly::var(X).scale(&q(l[0], 1)) + &MPoly::var(Y).scale(&q(l[1], 1)))
             + &MPoly::var(Z).scale(&q(l[2], 1))
@@ -102,7 +238,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
     let den = rur.denom.to_q();
     if rur.separating == 0 {
         let values = rur.real_roots.clone();
-        let judging = rur.f.clone();
+        let judging = with_conics(rur.f.clone(), &conics);
         return Ok(ModularAnalysis {
             generators: gens,
             rur,
@@ -111,6 +247,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
             value_den: den,
             values,
             judging,
+            conics,
         });
     }
     // S(ξ(u)) = u − c·ℓ(ξ(u)) = (u·Φ(u) − c·Σ ℓᵢ Gᵢ(u)) / Φ(u)
@@ -126,6 +263,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
         .into_iter()
         .collect::<Option<Vec<_>>>()
         .ok_or_else(|| Declined("the denominator vanishes at a real root".into()))?;
+    let judging = with_conics(judging, &conics);
     Ok(ModularAnalysis {
         generators: gens,
         rur,
@@ -134,5 +272,19 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
         value_den: den,
         values,
         judging,
+        conics,
     })
+}
+
+/// D(u) times `u − c` for the value c of each conic of critical points,
+/// square-free.
+fn with_conics(judging: ZPoly, conics: &[CriticalConic]) -> ZPoly {
+    if conics.is_empty() {
+        return judging;
+    }
+    let mut p = judging.to_q();
+    for c in conics {
+        p = &p * &QPoly::new(vec![-c.value.clone(), Q::one()]);
+    }
+    ZPoly::from_q(&p).0.squarefree_part()
 }

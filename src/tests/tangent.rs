@@ -649,3 +649,39 @@ fn multiple_critical_points_from_singular_points_of_s() {
     );
     assert!(q(32410104, 1000000) <= hi && hi < q(324120, 10000), "{hi}");
 }
+
+/// `S = c + z²·T`: the minors of ∇S × ∇E share the factor z, so every
+/// point of the ellipse E ∩ {z = 0} is critical, with S = −3 there.  The
+/// conic is split off (its value enters D(u) and the critical values) and
+/// the rest is zero-dimensional; this used to end undecided after the
+/// level-set route's Gröbner bases ran out of time.  The range is checked
+/// against a dense sampling of E (−5.4852814 and 11.4852814 sampled).
+#[test]
+fn a_conic_of_critical_points_is_split_off() {
+    let r = run("3x^2+y^2+2z^2+x*y-4", "-x^2*y*z^2 - 3z^3 + 3z^2 - 3");
+    assert_eq!(r.verdict, Verdict::Intersecting);
+    let crate::tangent::Analysis::ModularRur(an) = &r.certificate.method else {
+        panic!("expected the modular route, got {}", r.certificate.method());
+    };
+    assert_eq!(an.conics.len(), 1);
+    assert_eq!((an.conics[0].var, an.conics[0].value.clone()), (2, qi(-3)));
+    // the conic's point is on E, and S is −3 there
+    let p = &an.conics[0].point;
+    assert!(eval_qsqrt(&parse_poly("3x^2+y^2+2z^2+x*y-4").unwrap(), p).is_zero());
+    let minus3 = RealAlg::rational(qi(-3));
+    assert!(
+        r.certificate
+            .critical_values()
+            .iter()
+            .any(|v| v.cmp_exact(&minus3) == Ordering::Equal)
+    );
+    let (lo, hi) = (approx(&r.min), approx(&r.max));
+    assert!(
+        q(-54853, 10000) < lo && lo <= q(-54852813, 10000000),
+        "{lo}"
+    );
+    assert!(
+        q(114852813, 10000000) <= hi && hi < q(114853, 10000),
+        "{hi}"
+    );
+}

@@ -171,6 +171,12 @@ fn method_json(m: &Analysis) -> Value {
                 "rur_coordinates": r.coords.iter().map(|c| upoly_string(c, U)).collect::<Vec<_>>(),
                 "rur_denominator": upoly_string(&r.denom, U),
                 "real_critical_points": r.real_roots.len(),
+                "critical_conics": an.conics.iter().map(|c| json!({
+                    "plane": format!("{} = 0", ["x", "y", "z"][c.var]),
+                    "value": crate::number::fmt_q(&c.value),
+                    "point": c.point.iter().map(qsqrt_json).collect::<Vec<_>>(),
+                    "argument": "the minors of ∇S × ∇E share a power of this variable as a factor, so they vanish on the plane: every point of E on it is critical and S is constant there (value, at point); generators are the minors divided by their common monomial, and the judging polynomial has the factor u − value",
+                })).collect::<Vec<_>>(),
                 "value_of_s": if an.shift.is_some() {
                     json!([upoly_string(&ZPoly::from_q(&an.value_num).0, U), upoly_string(&ZPoly::from_q(&an.value_den).0, U)])
                 } else {

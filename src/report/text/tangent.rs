@@ -145,7 +145,18 @@ pub fn tangent_human(r: &TangentReport) -> String {
                 None => "the Gröbner basis over Q (zeros at infinity modulo every prime tried)"
                     .to_string(),
             }
-        ),
+        ) + &an
+            .conics
+            .iter()
+            .map(|c| {
+                format!(
+                    "; plus the conic E ∩ {{{} = 0}}, all critical (a power of {} divides the minors), where S = {}",
+                    ["x", "y", "z"][c.var],
+                    ["x", "y", "z"][c.var],
+                    crate::number::fmt_q(&c.value)
+                )
+            })
+            .collect::<String>(),
         Analysis::Poisson(an) => format!(
             "critical points as zeros of the square system E = 0, a·m = b·m = 0 (m = ∇S×∇E, a, b ⊥ n = ({}, {}, {})) with no zeros at infinity: {} zeros, {} of them extra (n·∇E = n·∇S = 0, none critical), {} critical points, {} real; {}",
             an.direction[0],
