@@ -50,12 +50,21 @@ pub struct CriticalAnalysis {
     /// The judging polynomial by resultant elimination with branch
     /// splitting, when it finished within its size budget.
     pub elimination: Option<super::judging::Elimination>,
+    /// Conics of critical points split off before the RUR (their values
+    /// are in `judging` and in [`CriticalAnalysis::real_values`]).
+    pub conics: Vec<super::modular::CriticalConic>,
 }
 
 impl CriticalAnalysis {
     /// The values attained by real critical points.
     pub fn real_values(&self) -> Vec<RealAlg> {
-        self.values.clone()
+        let mut v = self.values.clone();
+        v.extend(
+            self.conics
+                .iter()
+                .map(|c| RealAlg::rational(c.value.clone())),
+        );
+        v
     }
 
     /// A witness near a real critical point whose value is `value`.
@@ -66,6 +75,9 @@ impl CriticalAnalysis {
         s: &QMPoly,
         want: i32,
     ) -> Option<WitnessPoint> {
+        if let Some(w) = super::modular::conic_witness(&self.conics, value, want) {
+            return Some(w);
+        }
         witness_at_value(&self.values, value, e, s, want, &|i, bits| {
             Some(self.rur.approx_point(i, bits))
         })
@@ -103,8 +115,13 @@ pub fn cross_gradients(s: &QMPoly, e: &QMPoly) -> [QMPoly; 3] {
 pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
     let started = std::time::Instant::now();
     let cross = cross_gradients(s, &e.poly);
+    let mut all = vec![e.poly.clone()];
+    all.extend(cross.iter().cloned());
+    // conics of critical points (a monomial dividing the three minors) are
+    // split off; the level sets, if needed, work on the whole system
+    let (conics, minors) = super::modular::split_conics(&e.poly, s, &cross);
     let mut gens = vec![e.poly.clone()];
-    gens.extend(cross.iter().cloned());
+    gens.extend(minors);
     match solve_zero_dim(&gens, std::slice::from_ref(s))? {
         Some(rur) => {
             if rur.points == 0 {
@@ -130,11 +147,12 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
                 rur,
                 value_poly,
                 values,
-                judging,
+                judging: super::modular::with_conics(judging, &conics),
                 elimination,
+                conics,
             }))
         }
-        None => Ok(Outcome::Curves(level_sets(e, s, &gens)?)),
+        None => Ok(Outcome::Curves(level_sets(e, s, &all)?)),
     }
 }
 

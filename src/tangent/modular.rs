@@ -94,22 +94,54 @@ impl ModularAnalysis {
         s: &QMPoly,
         want: i32,
     ) -> Option<WitnessPoint> {
-        if let Some(c) = self.conics.iter().find(|c| {
-            value.cmp_exact(&RealAlg::rational(c.value.clone())) == std::cmp::Ordering::Equal
-        }) {
-            let sign = c.value.signum().to_i32().unwrap_or(0);
-            if sign == want {
-                return Some(WitnessPoint {
-                    coords: c.point.clone(),
-                    value: QSqrt::rational(c.value.clone()),
-                    sign,
-                });
-            }
+        if let Some(w) = conic_witness(&self.conics, value, want) {
+            return Some(w);
         }
         witness_at_value(&self.values, value, e, s, want, &|i, bits| {
             self.rur.approx_point(i, bits)
         })
     }
+}
+
+/// The point of a conic of critical points where S is `value`, when its
+/// sign is `want`.
+pub(crate) fn conic_witness(
+    conics: &[CriticalConic],
+    value: &RealAlg,
+    want: i32,
+) -> Option<WitnessPoint> {
+    let c = conics.iter().find(|c| {
+        value.cmp_exact(&RealAlg::rational(c.value.clone())) == std::cmp::Ordering::Equal
+    })?;
+    let sign = c.value.signum().to_i32().unwrap_or(0);
+    (sign == want).then(|| WitnessPoint {
+        coords: c.point.clone(),
+        value: QSqrt::rational(c.value.clone()),
+        sign,
+    })
+}
+
+/// The conics of critical points of S on E and the minors of `∇S × ∇E`
+/// divided by their common monomial (see [`CriticalConic`]); the minors
+/// unchanged and no conic when there is no common monomial or a section
+/// is not as expected.
+pub(crate) fn split_conics(
+    e: &QMPoly,
+    s: &QMPoly,
+    cross: &[QMPoly],
+) -> (Vec<CriticalConic>, Vec<QMPoly>) {
+    let common = common_monomial(cross);
+    let mut conics = Vec::new();
+    for v in (0..3).filter(|&v| common[v] > 0) {
+        match critical_conic(e, s, v) {
+            Ok(c) => conics.extend(c),
+            Err(_) => return (Vec::new(), cross.to_vec()),
+        }
+    }
+    (
+        conics,
+        cross.iter().map(|m| divide_monomial(m, common)).collect(),
+    )
 }
 
 /// The largest monomial dividing every term of `ps` (its exponents).
@@ -209,13 +241,9 @@ fn critical_conic(e: &QMPoly, s: &QMPoly, v: usize) -> Result<Option<CriticalCon
 pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
     let cross = cross_gradients(s, &e.poly);
     // a monomial dividing the three minors: conics of critical points
-    let common = common_monomial(&cross);
-    let mut conics = Vec::new();
-    for v in (0..3).filter(|&v| common[v] > 0) {
-        conics.extend(critical_conic(&e.poly, s, v)?);
-    }
+    let (conics, minors) = split_conics(&e.poly, s, &cross);
     let mut gens = vec![e.poly.clone()];
-    gens.extend(cross.iter().map(|m| divide_monomial(m, common)));
+    gens.extend(minors);
     let form = |l: &[i64; 3]| -> QMPoly {
         &(&MPoly::var(X).scale(&q(l[0], 1)) + &MPoly::var(Y).scale(&q(l[1], 1)))
             + &MPoly::var(Z).scale(&q(l[2], 1))
@@ -278,7 +306,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
 
 /// D(u) times `u − c` for the value c of each conic of critical points,
 /// square-free.
-fn with_conics(judging: ZPoly, conics: &[CriticalConic]) -> ZPoly {
+pub(crate) fn with_conics(judging: ZPoly, conics: &[CriticalConic]) -> ZPoly {
     if conics.is_empty() {
         return judging;
     }

@@ -685,3 +685,21 @@ fn a_conic_of_critical_points_is_split_off() {
         "{hi}"
     );
 }
+
+/// A conic of critical points whose other critical points form a
+/// non-radical system: the exact route splits the conic off as well (its
+/// Gröbner basis then has finitely many zeros; on the whole system the
+/// level-set route ran out of time).  Range against a dense sampling of E
+/// (−8.2272116 and 28.6146421 sampled).
+#[test]
+fn the_exact_route_splits_off_a_conic_too() {
+    let r = run("2x^2+3y^2+z^2-y*z+x-5", "x^4*z^4 - 2 - 2x^5*y^2*z");
+    assert_eq!(r.verdict, Verdict::Intersecting);
+    let crate::tangent::Analysis::CriticalIdeal(an) = &r.certificate.method else {
+        panic!("expected the exact route, got {}", r.certificate.method());
+    };
+    assert!(!an.conics.is_empty());
+    let (lo, hi) = (approx(&r.min), approx(&r.max));
+    assert!(q(-82290, 10000) < lo && lo <= q(-82272116, 10000000), "{lo}");
+    assert!(q(286146421, 10000000) <= hi && hi < q(286170, 10000), "{hi}");
+}

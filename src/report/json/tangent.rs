@@ -43,6 +43,16 @@ pub fn qsqrt_json(x: &QSqrt) -> Value {
     })
 }
 
+/// The conics of critical points split off before the RUR.
+fn conics_json(conics: &[crate::tangent::modular::CriticalConic]) -> Vec<Value> {
+    conics.iter().map(|c| json!({
+        "plane": format!("{} = 0", ["x", "y", "z"][c.var]),
+        "value": crate::number::fmt_q(&c.value),
+        "point": c.point.iter().map(qsqrt_json).collect::<Vec<_>>(),
+        "argument": "the minors of ∇S × ∇E share a power of this variable as a factor, so they vanish on the plane: every point of E on it is critical and S is constant there (value, at point); generators are the minors divided by their common monomial, and the judging polynomial has the factor u − value",
+    })).collect()
+}
+
 fn witness_json(w: &Option<WitnessPoint>) -> Value {
     match w {
         None => Value::Null,
@@ -157,6 +167,7 @@ fn method_json(m: &Analysis) -> Value {
                 "rur_coordinates": coords,
                 "rur_value": MPoly::from_univariate(&an.value_poly, T).to_string_canonical(),
                 "real_critical_points": an.rur.real_roots.iter().map(|a| alg_json_in(a, T)).collect::<Vec<_>>(),
+                "critical_conics": conics_json(&an.conics),
                 "resultant_elimination": elim,
             })
         }
@@ -171,12 +182,7 @@ fn method_json(m: &Analysis) -> Value {
                 "rur_coordinates": r.coords.iter().map(|c| upoly_string(c, U)).collect::<Vec<_>>(),
                 "rur_denominator": upoly_string(&r.denom, U),
                 "real_critical_points": r.real_roots.len(),
-                "critical_conics": an.conics.iter().map(|c| json!({
-                    "plane": format!("{} = 0", ["x", "y", "z"][c.var]),
-                    "value": crate::number::fmt_q(&c.value),
-                    "point": c.point.iter().map(qsqrt_json).collect::<Vec<_>>(),
-                    "argument": "the minors of ∇S × ∇E share a power of this variable as a factor, so they vanish on the plane: every point of E on it is critical and S is constant there (value, at point); generators are the minors divided by their common monomial, and the judging polynomial has the factor u − value",
-                })).collect::<Vec<_>>(),
+                "critical_conics": conics_json(&an.conics),
                 "value_of_s": if an.shift.is_some() {
                     json!([upoly_string(&ZPoly::from_q(&an.value_num).0, U), upoly_string(&ZPoly::from_q(&an.value_den).0, U)])
                 } else {
