@@ -700,6 +700,12 @@ fn the_exact_route_splits_off_a_conic_too() {
     };
     assert!(!an.conics.is_empty());
     let (lo, hi) = (approx(&r.min), approx(&r.max));
-    assert!(q(-82290, 10000) < lo && lo <= q(-82272116, 10000000), "{lo}");
-    assert!(q(286146421, 10000000) <= hi && hi < q(286170, 10000), "{hi}");
+    assert!(
+        q(-82290, 10000) < lo && lo <= q(-82272116, 10000000),
+        "{lo}"
+    );
+    assert!(
+        q(286146421, 10000000) <= hi && hi < q(286170, 10000),
+        "{hi}"
+    );
 }
