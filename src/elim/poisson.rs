@@ -172,11 +172,7 @@ impl SquareSystem {
             }
         }
         let det = det_mod(fp, mat);
-        let mut r = det;
-        for _ in 0..self.degs[2] {
-            r = fp.mul(r, rb);
-        }
-        Ok(r)
+        Ok(fp.mul(det, fp.pow(rb, self.degs[2] as u64)))
     }
 }
 

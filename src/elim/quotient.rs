@@ -15,7 +15,7 @@
 
 use super::groebner::{GPoly, GV, GroebnerBasis, Mono};
 use crate::number::Q;
-use crate::poly::{QPoly, Ring};
+use crate::poly::{QPoly, Ring, ZPoly};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -168,55 +168,110 @@ fn to_integers(v: &[Q]) -> (Vec<BigInt>, BigInt) {
 /// elimination takes over.
 const MAX_KRYLOV_PRIMES: usize = 3000;
 
-/// The first dependency `w_k = Σ_(i<k) c_i w_i` among the integer Krylov
-/// vectors `ws` (`ws[i+1] = M·ws[i]`, `M` by columns in `mi`) and, when
-/// `k = n`, the coordinates `b_j` of each integer right-hand side
-/// (`r_j = Σ b_ji w_i`), by Gauss–Jordan elimination modulo word primes,
-/// the CRT and rational reconstruction with a common denominator, tried on
-/// a geometric schedule of modulus sizes.  Nothing modular is trusted: a
-/// reconstruction is returned only when the relations hold exactly over Z
-/// (`Σ c_i w_i = w_k`, `Σ b_ji w_i = r_j`), and `w_0 … w_(k−1)` are
+/// The Krylov vectors `v, M v, …, Mⁿ v` modulo p (`M` by columns, n its
+/// size), in a vector with room for `cap` columns.
+fn krylov_mod(
+    fp: &crate::number::reconstruct::Fp,
+    mp: &[Vec<u64>],
+    v: Vec<u64>,
+    cap: usize,
+) -> Vec<Vec<u64>> {
+    let n = v.len();
+    let mut cols: Vec<Vec<u64>> = Vec::with_capacity(cap);
+    cols.push(v);
+    for _ in 0..n {
+        crate::budget::check();
+        let cur = cols.last().expect("non-empty");
+        let mut out = vec![0u64; n];
+        for (cj, col) in cur.iter().zip(mp) {
+            if *cj == 0 {
+                continue;
+            }
+            for (o, &mij) in out.iter_mut().zip(col) {
+                *o = fp.add(*o, fp.mul(mij, *cj));
+            }
+        }
+        cols.push(out);
+    }
+    cols
+}
+
+/// The integer Krylov data of [`modular_dependency`]: `M = L·m` by columns
+/// (`mi`), the vectors `w_i = Mⁱ·(lv·v)` (`ws`, `i = 0 … n`), and the
+/// right-hand sides `rhs_j = r_j / l_j` with `r_j` integral (`rhs`).
+struct KrylovData<'a> {
+    mi: &'a [Vec<BigInt>],
+    l: &'a BigInt,
+    lv: &'a BigInt,
+    ws: &'a [Vec<BigInt>],
+    rhs: &'a [(Vec<BigInt>, BigInt)],
+}
+
+/// The first dependency `mᵏv = Σ_(i<k) a_i mⁱv` among the rational Krylov
+/// vectors `u_i = mⁱv` and, when `k = n`, the coordinates `β_ji` of each
+/// right-hand side (`rhs_j = Σ β_ji u_i`), by Gauss–Jordan elimination
+/// modulo word primes on `u_i ≡ w_i / (Lⁱ·lv)`, the CRT and rational
+/// reconstruction with a common denominator, tried on a geometric schedule
+/// of modulus sizes.  The unscaled `a_i`, `β_ji` are reconstructed, not the
+/// coefficients of the integer relation among the `w_i` (which carry a
+/// factor `L^(k−i)`: with an 800-bit L and k = 46 they have 38 000 bits
+/// where the `a_i` have 400).  Nothing modular is trusted: a reconstruction
+/// (`a_i = α_i / δ`, `β_ji = b_ji / δ`) is returned only when the
+/// relations hold exactly over Z, `δ·w_k = Σ α_i·L^(k−i)·w_i` and
+/// `δ·lv·L^(n−1)·r_j = Σ b_ji·l_j·L^(n−1−i)·w_i`, and `u_0 … u_(k−1)` are
 /// independent over Q because they are modulo p.  The cost follows the
 /// size of the answer instead of the fraction-free elimination's minors.
-/// `None` when no verified answer came within the prime limit (the caller
-/// eliminates fraction-free).
+/// Returns the `a_i` (k of them) and the `β_j`; `None` when no verified
+/// answer came within the prime limit (the caller eliminates
+/// fraction-free).
 #[allow(clippy::type_complexity)]
-fn modular_dependency(
-    mi: &[Vec<BigInt>],
-    ws: &[Vec<BigInt>],
-    rhs: &[(Vec<BigInt>, BigInt)],
-) -> Option<(usize, Vec<Q>, Option<Vec<Vec<Q>>>)> {
+fn modular_dependency(kd: &KrylovData) -> Option<(Vec<Q>, Option<Vec<Vec<Q>>>)> {
     use crate::number::reconstruct::{CrtVec, Fp, prime31};
+    let ws = kd.ws;
     let n = ws.len() - 1;
     let mut best: Option<usize> = None;
     let mut crt = CrtVec::new(0);
     let mut next_bits = 62u64;
+    // L^0 … L^n, for the exact checks
+    let lpow: Vec<BigInt> = std::iter::successors(Some(BigInt::one()), |x| Some(x * kd.l))
+        .take(n + 1)
+        .collect();
     for j in 0..MAX_KRYLOV_PRIMES {
         crate::budget::check_now();
         let fp = Fp::new(prime31(j));
-        let mp: Vec<Vec<u64>> = mi
+        // the scales L, lv and l_j must be units modulo p
+        let Some(linv) = fp.inv(fp.reduce_big(kd.l)) else {
+            continue;
+        };
+        let Some(lvinv) = fp.inv(fp.reduce_big(kd.lv)) else {
+            continue;
+        };
+        let Some(ljinv) = kd
+            .rhs
+            .iter()
+            .map(|(_, lj)| fp.inv(fp.reduce_big(lj)))
+            .collect::<Option<Vec<u64>>>()
+        else {
+            continue;
+        };
+        let mp: Vec<Vec<u64>> = kd
+            .mi
             .iter()
             .map(|col| col.iter().map(|c| fp.reduce_big(c)).collect())
             .collect();
         // the Krylov vectors modulo p, by columns of the row-major matrix
-        let mut cols: Vec<Vec<u64>> = Vec::with_capacity(n + 1 + rhs.len());
-        cols.push(ws[0].iter().map(|c| fp.reduce_big(c)).collect());
-        for _ in 0..n {
-            crate::budget::check();
-            let cur = cols.last().expect("non-empty");
-            let mut out = vec![0u64; n];
-            for (cj, col) in cur.iter().zip(&mp) {
-                if *cj == 0 {
-                    continue;
-                }
-                for (o, &mij) in out.iter_mut().zip(col) {
-                    *o = fp.add(*o, fp.mul(mij, *cj));
-                }
+        let v0 = ws[0].iter().map(|c| fp.reduce_big(c)).collect();
+        let mut cols = krylov_mod(&fp, &mp, v0, n + 1 + kd.rhs.len());
+        // u_i = w_i / (Lⁱ·lv), rhs_j = r_j / l_j
+        let mut scale = lvinv;
+        for c in cols.iter_mut() {
+            for x in c.iter_mut() {
+                *x = fp.mul(*x, scale);
             }
-            cols.push(out);
+            scale = fp.mul(scale, linv);
         }
-        for (r, _) in rhs {
-            cols.push(r.iter().map(|c| fp.reduce_big(c)).collect());
+        for ((r, _), &inv) in kd.rhs.iter().zip(&ljinv) {
+            cols.push(r.iter().map(|c| fp.mul(fp.reduce_big(c), inv)).collect());
         }
         let mut a: Vec<Vec<u64>> = (0..n)
             .map(|i| cols.iter().map(|c| c[i]).collect())
@@ -227,14 +282,14 @@ fn modular_dependency(
             Some(b) if k == b => {}
             _ => {
                 best = Some(k);
-                let len = k + if k == n { n * rhs.len() } else { 0 };
+                let len = k + if k == n { n * kd.rhs.len() } else { 0 };
                 crt = CrtVec::new(len);
                 next_bits = 62;
             }
         }
         let mut res: Vec<u64> = (0..k).map(|i| a[pivots[i]][k]).collect();
         if k == n {
-            for jr in 0..rhs.len() {
+            for jr in 0..kd.rhs.len() {
                 res.extend((0..n).map(|i| a[pivots[i]][n + 1 + jr]));
             }
         }
@@ -248,10 +303,15 @@ fn modular_dependency(
         else {
             continue;
         };
-        // exact check over Z: Σ nums_i w_i = den · target
-        let holds = |coef: &[BigInt], target: &[BigInt]| -> bool {
+        // exact check over Z: Σ_i coef_i·w_i = target, coef_i = c_i·scale_i
+        let holds = |coef: &[BigInt], scales: &dyn Fn(usize) -> BigInt, target: &[BigInt]| {
+            let coef: Vec<BigInt> = coef
+                .iter()
+                .enumerate()
+                .map(|(i, c)| c * scales(i))
+                .collect();
             (0..n).all(|r| {
-                let mut acc = -(&den * &target[r]);
+                let mut acc = -&target[r];
                 for (c, w) in coef.iter().zip(ws) {
                     crate::budget::check_for(c.bits() + w[r].bits());
                     if !c.is_zero() && !w[r].is_zero() {
@@ -261,31 +321,31 @@ fn modular_dependency(
                 acc.is_zero()
             })
         };
-        if !holds(&nums[..k], &ws[k]) {
+        // δ·w_k = Σ α_i·L^(k−i)·w_i
+        let wk: Vec<BigInt> = ws[k].iter().map(|x| x * &den).collect();
+        if !holds(&nums[..k], &|i| lpow[k - i].clone(), &wk) {
             continue;
         }
+        let to_q = |xs: &[BigInt]| -> Vec<Q> {
+            xs.iter().map(|c| Q::new(c.clone(), den.clone())).collect()
+        };
         let b = if k == n {
-            let mut out = Vec::with_capacity(rhs.len());
-            for (jr, (r, _)) in rhs.iter().enumerate() {
+            let mut out = Vec::with_capacity(kd.rhs.len());
+            for (jr, (r, lj)) in kd.rhs.iter().enumerate() {
                 let coef = &nums[k + jr * n..k + (jr + 1) * n];
-                if !holds(coef, r) {
+                // δ·lv·L^(n−1)·r_j = Σ b_ji·l_j·L^(n−1−i)·w_i
+                let f = &den * kd.lv * &lpow[n - 1];
+                let target: Vec<BigInt> = r.iter().map(|x| x * &f).collect();
+                if !holds(coef, &|i| lj * &lpow[n - 1 - i], &target) {
                     return None;
                 }
-                out.push(
-                    coef.iter()
-                        .map(|c| Q::new(c.clone(), den.clone()))
-                        .collect(),
-                );
+                out.push(to_q(coef));
             }
             Some(out)
         } else {
             None
         };
-        let c = nums[..k]
-            .iter()
-            .map(|x| Q::new(x.clone(), den.clone()))
-            .collect();
-        return Some((k, c, b));
+        return Some((to_q(&nums[..k]), b));
     }
     None
 }
@@ -399,31 +459,62 @@ fn gauss_jordan_ff(
 /// coordinates of the right-hand sides in it (see [`krylov_shape`]).
 pub type KrylovShape = (QPoly, Option<Vec<Vec<Q>>>);
 
-/// The minimal polynomial of `m` relative to `v` (the monic generator of
-/// the polynomials `p` with `p(m) v = 0`) and, when its degree is the full
-/// dimension `n` (so `v, m v, …, m^(n−1) v` is a basis), the coordinates of
-/// each `rhs` vector in that basis (`rhs_j = Σ_i sol_j[i] · mⁱ v`).
-///
-/// Everything runs over the integers: with `m = M / L` (`M` integral) the
-/// Krylov vectors `Mᵏ V` are integral, one fraction-free Gauss–Jordan pass
-/// finds the first dependency and solves the right-hand sides, and the
-/// powers of `L` are put back at the end.
-pub fn krylov_shape(
-    m: &QMatrix,
-    v: &[Q],
-    rhs: &[Vec<Q>],
-) -> Result<KrylovShape, crate::error::Error> {
-    krylov_shape_with(m, v, rhs, true)
+/// Whether `v, m v, …, m^(n−1) v` can span `Qⁿ` (`n = v.len()`), judged
+/// modulo up to two word primes before any exact Krylov vector is built.
+/// Their rank modulo p is at most their rank over Q, so a full rank modulo
+/// one prime proves the span; `false` means both primes found a dependency
+/// earlier (over Q too, unless both primes are unlucky).  Callers only use
+/// `false` to skip a candidate they may do without (a form that would not
+/// make A cyclic, or would not separate): a wrong `false` costs a
+/// candidate, never a wrong answer.
+pub fn krylov_full_likely(m: &QMatrix, v: &[Q]) -> bool {
+    use crate::number::reconstruct::{Fp, prime31};
+    let n = v.len();
+    let mut tried = 0;
+    for j in 0..8 {
+        crate::budget::check_now();
+        let fp = Fp::new(prime31(j));
+        let red = |c: &Q| -> Option<u64> {
+            let d = fp.inv(fp.reduce_big(c.denom()))?;
+            Some(fp.mul(fp.reduce_big(c.numer()), d))
+        };
+        let Some(mp) = m
+            .iter()
+            .map(|col| col.iter().map(red).collect::<Option<Vec<u64>>>())
+            .collect::<Option<Vec<Vec<u64>>>>()
+        else {
+            continue;
+        };
+        let Some(v0) = v.iter().map(red).collect::<Option<Vec<u64>>>() else {
+            continue;
+        };
+        let cols = krylov_mod(&fp, &mp, v0, n + 1);
+        let mut a: Vec<Vec<u64>> = (0..n)
+            .map(|i| cols.iter().map(|c| c[i]).collect())
+            .collect();
+        if gauss_jordan_mod(&fp, &mut a, n + 1).1 == n {
+            return true;
+        }
+        tried += 1;
+        if tried == 2 {
+            return false;
+        }
+    }
+    // no usable prime: let the exact computation judge
+    true
 }
 
-/// [`krylov_shape`], with the modular elimination first (`modular`) or
-/// fraction-free only.
-fn krylov_shape_with(
-    m: &QMatrix,
-    v: &[Q],
-    rhs: &[Vec<Q>],
-    modular: bool,
-) -> Result<KrylovShape, crate::error::Error> {
+/// The integral Krylov data of `m` (by columns) and `v`: `L` (the common
+/// denominator of m), `M = L·m`, `v = v₀/lv` and `w_i = Mⁱ v₀` for
+/// `i = 0 … n`, after a size check sized for `extra` more columns.
+struct IntKrylov {
+    l: BigInt,
+    mi: Vec<Vec<BigInt>>,
+    lv: BigInt,
+    ws: Vec<Vec<BigInt>>,
+}
+
+fn int_krylov(m: &QMatrix, v: &[Q], extra: usize) -> IntKrylov {
     let n = v.len();
     let l = crate::number::denom_lcm(m.iter().flatten());
     // the Krylov vectors w_0 … w_n have entries of up to about
@@ -444,7 +535,7 @@ fn krylov_shape_with(
         .unwrap_or(0);
     crate::budget::check_size(
         "the Krylov matrix of a minimal polynomial",
-        n.saturating_mul(n + 1 + rhs.len()),
+        n.saturating_mul(n + 1 + extra),
         (n as u64).saturating_mul(mbits + crate::poly::upoly::log2_ceil(n)) + vbits,
     );
     let mi: Vec<Vec<BigInt>> = m
@@ -471,7 +562,118 @@ fn krylov_shape_with(
         }
         ws.push(out);
     }
+    IntKrylov { l, mi, lv, ws }
+}
+
+/// The minimal polynomial `μ` of `m` relative to `v` (as
+/// [`krylov_shape`]) and, when `μ` is not square-free, `sq(m)·v` exactly,
+/// with `sq` the square-free part of `μ` (primitive, integral).  With
+/// `m` the multiplication by a coordinate on `Q[x]/I` and `v = 1`, that
+/// vector is the normal form of `sq(x)`, an element of `√I` of the degree
+/// of the standard monomials.  It is read off the integral Krylov vectors
+/// the minimal polynomial was found from: `Σ sq_i·w_i·L^(s−i) / (L^s·lv)`.
+pub fn minpoly_and_squarefree_image(
+    m: &QMatrix,
+    v: &[Q],
+) -> Result<(QPoly, Option<Vec<Q>>), crate::error::Error> {
+    let ik = int_krylov(m, v, 0);
+    let (mp, _) = krylov_from(&ik, &[], KrylovRoute::Modular)?;
+    let (mz, _) = ZPoly::from_q(&mp);
+    let sq = mz.squarefree_part();
+    if sq.degree() == mz.degree() {
+        return Ok((mp, None));
+    }
+    let s = sq.degree().unwrap_or(0);
+    let lpow: Vec<BigInt> = std::iter::successors(Some(BigInt::one()), |x| Some(x * &ik.l))
+        .take(s + 1)
+        .collect();
+    let den = &lpow[s] * &ik.lv;
+    let image = (0..v.len())
+        .map(|r| {
+            let mut acc = BigInt::zero();
+            for (i, c) in sq.coeffs().iter().enumerate() {
+                crate::budget::check_for(ik.ws[i][r].bits());
+                if !c.is_zero() && !ik.ws[i][r].is_zero() {
+                    acc += c * &ik.ws[i][r] * &lpow[s - i];
+                }
+            }
+            Q::new(acc, den.clone())
+        })
+        .collect();
+    Ok((mp, Some(image)))
+}
+
+/// How [`krylov_shape_with`] eliminates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum KrylovRoute {
+    /// Modulo primes (verified over Z), else fraction-free.
+    Modular,
+    /// Fraction-free only.
+    FractionFree,
+    /// Modulo primes only (an error when no verified answer comes), for
+    /// the tests.
+    #[cfg(test)]
+    ModularOnly,
+}
+
+/// The minimal polynomial of `m` relative to `v` (the monic generator of
+/// the polynomials `p` with `p(m) v = 0`) and, when its degree is the full
+/// dimension `n` (so `v, m v, …, m^(n−1) v` is a basis), the coordinates of
+/// each `rhs` vector in that basis (`rhs_j = Σ_i sol_j[i] · mⁱ v`).
+///
+/// Everything runs over the integers: with `m = M / L` (`M` integral) the
+/// Krylov vectors `Mᵏ V` are integral, one fraction-free Gauss–Jordan pass
+/// finds the first dependency and solves the right-hand sides, and the
+/// powers of `L` are put back at the end.
+pub fn krylov_shape(
+    m: &QMatrix,
+    v: &[Q],
+    rhs: &[Vec<Q>],
+) -> Result<KrylovShape, crate::error::Error> {
+    krylov_shape_with(m, v, rhs, KrylovRoute::Modular)
+}
+
+/// [`krylov_shape`], with the modular elimination first (`modular`) or
+/// fraction-free only.
+fn krylov_shape_with(
+    m: &QMatrix,
+    v: &[Q],
+    rhs: &[Vec<Q>],
+    route: KrylovRoute,
+) -> Result<KrylovShape, crate::error::Error> {
+    krylov_from(&int_krylov(m, v, rhs.len()), rhs, route)
+}
+
+/// [`krylov_shape_with`] on the integral Krylov data.
+fn krylov_from(
+    ik: &IntKrylov,
+    rhs: &[Vec<Q>],
+    route: KrylovRoute,
+) -> Result<KrylovShape, crate::error::Error> {
+    let IntKrylov { l, mi, lv, ws } = ik;
+    let n = ws.len() - 1;
     let scaled: Vec<(Vec<BigInt>, BigInt)> = rhs.iter().map(|r| to_integers(r)).collect();
+    let kd = KrylovData {
+        mi,
+        l,
+        lv,
+        ws,
+        rhs: &scaled,
+    };
+    if route != KrylovRoute::FractionFree
+        && let Some((a, b)) = modular_dependency(&kd)
+    {
+        // mᵏ v = Σ a_i mⁱ v: the minimal polynomial T^k − Σ a_i T^i
+        let mut low: Vec<Q> = a.into_iter().map(|x| -x).collect();
+        low.push(Q::one());
+        return Ok((QPoly::new(low), b));
+    }
+    #[cfg(test)]
+    if route == KrylovRoute::ModularOnly {
+        return Err(crate::error::Error::internal("no verified modular answer"));
+    }
+    // the fraction-free fallback works on the row-major matrix
+    // [w_0 … w_n | rhs], built only now
     let mut a: Vec<Vec<BigInt>> = (0..n)
         .map(|i| {
             ws.iter()
@@ -480,41 +682,6 @@ fn krylov_shape_with(
                 .collect()
         })
         .collect();
-    if let Some((k, c, b)) = modular
-        .then(|| modular_dependency(&mi, &ws, &scaled))
-        .flatten()
-    {
-        // w_k = Σ c_i w_i;  mᵏ v = Σ c_i L^(i−k) mⁱ v
-        let lq = Q::from_integer(l.clone());
-        let mut low: Vec<Q> = Vec::with_capacity(k + 1);
-        let mut lpow = Q::one();
-        for ci in c.iter().take(k).rev() {
-            lpow = &lpow / &lq;
-            low.push(-(ci * &lpow));
-        }
-        low.reverse();
-        low.push(Q::one());
-        let minpoly = QPoly::new(low);
-        let Some(b) = b else {
-            return Ok((minpoly, None));
-        };
-        // rhs_j · l_j = Σ b_i w_i, w_i = Lⁱ mⁱ (lv·v)
-        let sol = b
-            .iter()
-            .zip(&scaled)
-            .map(|(bj, (_, lj))| {
-                let mut lp = Q::new(lv.clone(), lj.clone());
-                bj.iter()
-                    .map(|bi| {
-                        let c = bi * &lp;
-                        lp = &lp * &lq;
-                        c
-                    })
-                    .collect()
-            })
-            .collect();
-        return Ok((minpoly, Some(sol)));
-    }
     let (pivots, d, dep) = gauss_jordan_ff(&mut a, n + 1)?;
     let k = dep.ok_or_else(|| {
         crate::error::Error::internal("n + 1 Krylov vectors in dimension n are independent")
@@ -545,7 +712,7 @@ fn krylov_shape_with(
             (0..n)
                 .map(|i| {
                     let c = Q::new(&a[pivots[i]][n + 1 + j] * &lp, dl.clone());
-                    lp *= &l;
+                    lp *= l;
                     c
                 })
                 .collect()
@@ -630,6 +797,79 @@ mod tests {
         }
     }
 
+    /// A matrix conjugated by a diagonal of ~100-bit integers has the same
+    /// small minimal polynomial but a ~600-bit common denominator L: the
+    /// modular elimination reconstructs the unscaled relation (not one with
+    /// factors L^(k−i)), verifies it over Z, and agrees with the
+    /// fraction-free one and with the unconjugated matrix.
+    #[test]
+    fn a_big_common_denominator_leaves_the_minimal_polynomial_small() {
+        let n = 6usize;
+        let base: QMatrix = (0..n)
+            .map(|j| {
+                (0..n)
+                    .map(|i| q(((3 * i + 5 * j) % 7) as i64 - 3, 1))
+                    .collect()
+            })
+            .collect();
+        let d: Vec<BigInt> = (0..n)
+            .map(|i| (BigInt::one() << (90 + 3 * i)) + BigInt::from(2 * i + 1))
+            .collect();
+        // (D m D⁻¹)_ij = d_i m_ij / d_j; column j of the matrix is `m[j]`
+        let conj: QMatrix = (0..n)
+            .map(|j| {
+                (0..n)
+                    .map(|i| &base[j][i] * Q::new(d[i].clone(), d[j].clone()))
+                    .collect()
+            })
+            .collect();
+        let v: Vec<Q> = (0..n).map(|i| q(i as i64 + 1, 1)).collect();
+        let dv: Vec<Q> = (0..n)
+            .map(|i| &v[i] * Q::from_integer(d[i].clone()))
+            .collect();
+        let rhs: Vec<Vec<Q>> = vec![dv.iter().map(|x| x * q(3, 7)).collect()];
+        let plain = krylov_shape_with(&base, &v, &[], KrylovRoute::FractionFree).unwrap();
+        let a = krylov_shape_with(&conj, &dv, &rhs, KrylovRoute::ModularOnly).unwrap();
+        let b = krylov_shape_with(&conj, &dv, &rhs, KrylovRoute::FractionFree).unwrap();
+        assert_eq!(a, b);
+        assert_eq!(a.0, plain.0);
+        assert!(crate::number::denom_lcm(conj.iter().flatten()).bits() > 500);
+        if a.0.degree() == Some(n) {
+            // rhs = (3/7)·v: coordinates (3/7, 0, …, 0)
+            let sol = a.1.expect("cyclic");
+            assert_eq!(sol[0][0], q(3, 7));
+            assert!(sol[0][1..].iter().all(|c| c.is_zero()));
+        }
+    }
+
+    /// `krylov_full_likely`: true for a companion matrix (cyclic), false
+    /// when the Krylov space of v is smaller (a repeated eigenvalue).
+    #[test]
+    fn the_modular_cyclicity_check() {
+        // companion matrix of T³ − 2T² + 5T − 7, v = e₀: cyclic
+        let comp: QMatrix = vec![
+            vec![q(0, 1), q(1, 1), q(0, 1)],
+            vec![q(0, 1), q(0, 1), q(1, 1)],
+            vec![q(7, 1), q(-5, 1), q(2, 1)],
+        ];
+        let e0 = vec![q(1, 1), q(0, 1), q(0, 1)];
+        assert!(krylov_full_likely(&comp, &e0));
+        // diag(1/3, 1/3, 2): minimal polynomial of degree 2
+        let diag: QMatrix = vec![
+            vec![q(1, 3), q(0, 1), q(0, 1)],
+            vec![q(0, 1), q(1, 3), q(0, 1)],
+            vec![q(0, 1), q(0, 1), q(2, 1)],
+        ];
+        let ones = vec![q(1, 1), q(1, 1), q(1, 1)];
+        assert!(!krylov_full_likely(&diag, &ones));
+        assert!(
+            krylov_shape_with(&diag, &ones, &[], KrylovRoute::ModularOnly)
+                .unwrap()
+                .1
+                .is_none()
+        );
+    }
+
     /// The modular elimination (verified over Z) and the fraction-free one
     /// give the same minimal polynomials and coordinates: pseudo-random
     /// rational matrices with full and early dependencies (a repeated
@@ -677,8 +917,8 @@ mod tests {
                             .collect()
                     })
                     .collect();
-                let a = krylov_shape_with(&m, &v, &rhs, true).unwrap();
-                let b = krylov_shape_with(&m, &v, &rhs, false).unwrap();
+                let a = krylov_shape_with(&m, &v, &rhs, KrylovRoute::ModularOnly).unwrap();
+                let b = krylov_shape_with(&m, &v, &rhs, KrylovRoute::FractionFree).unwrap();
                 assert_eq!(a, b, "n = {n}, early = {early}");
                 assert_eq!(a.1.is_none(), early || a.0.degree() < Some(n));
             }

@@ -84,6 +84,19 @@ impl Fp {
         if a == 0 { 0 } else { self.p - a }
     }
 
+    /// `a^e`, by squaring and multiplying.
+    pub fn pow(&self, mut a: u64, mut e: u64) -> u64 {
+        let mut r = 1u64;
+        while e > 0 {
+            if e & 1 == 1 {
+                r = self.mul(r, a);
+            }
+            a = self.mul(a, a);
+            e >>= 1;
+        }
+        r
+    }
+
     /// Inverse (`None` for zero), by extended Euclid on words.
     pub fn inv(&self, a: u64) -> Option<u64> {
         inv_mod(a % self.p, self.p)
@@ -481,6 +494,26 @@ pub fn symmetric_mod(a: &BigInt, m: &BigInt) -> BigInt {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `Fp::pow` equals repeated multiplication and BigInt's modpow, and
+    /// satisfies Fermat's little theorem.
+    #[test]
+    fn powers_by_squaring() {
+        let fp = Fp::new(prime31(5));
+        for a in [0u64, 1, 2, 12345, fp.p - 1] {
+            let mut slow = 1u64;
+            for e in 0..70u64 {
+                assert_eq!(fp.pow(a, e), slow, "{a}^{e}");
+                slow = fp.mul(slow, a);
+            }
+            let e = 987_654_321u64;
+            let want = BigInt::from(a).modpow(&BigInt::from(e), &BigInt::from(fp.p));
+            assert_eq!(BigInt::from(fp.pow(a, e)), want);
+            if a != 0 {
+                assert_eq!(fp.pow(a, fp.p - 1), 1);
+            }
+        }
+    }
 
     /// Block residues equal the residues one prime at a time, for big and
     /// small, positive and negative integers, across block boundaries.

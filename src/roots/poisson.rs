@@ -595,11 +595,67 @@ fn rem_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
     reduced_trimmed(fp, &r)
 }
 
+/// `num / den` in `Q[T]/(f)` for a square-free `f` (degree ≥ 1) and `den`
+/// coprime to f, as the polynomial of degree < deg f: computed modulo word
+/// primes (`num · den⁻¹` in `F_p[T]/(f)`), lifted by the CRT and rational
+/// reconstruction with a common denominator on a geometric schedule, and
+/// returned only when `q·den ≡ num (mod f)` holds exactly (f, primitive,
+/// divides `d·(q·den − num)` over Z, d the common denominator).  Exact
+/// extended Euclid over Q would build the same answer through remainders
+/// whose coefficients are far longer.  `None` when no verified answer came
+/// within `max_primes`.
+pub(crate) fn quotient_mod_f(
+    num: &ZPoly,
+    den: &ZPoly,
+    f: &ZPoly,
+    max_primes: usize,
+) -> Option<crate::poly::QPoly> {
+    let n = f.degree().filter(|&n| n >= 1)?;
+    let mut crt = CrtVec::new(n);
+    let mut next_bits = 62u64;
+    for j in 0..max_primes {
+        crate::budget::check_now();
+        let fp = Fp::new(prime31(j));
+        let red = |p: &ZPoly| -> Vec<u64> { p.coeffs().iter().map(|c| fp.reduce_big(c)).collect() };
+        let fm = red(f);
+        if fm.last() == Some(&0) {
+            continue;
+        }
+        let Some(alg) = ModAlgebra::from_poly(fp, &fm) else {
+            continue;
+        };
+        let reduce = |a: &[u64]| -> Vec<u64> {
+            let mut r = rem_mod(&fp, a, &fm);
+            r.resize(n, 0);
+            r
+        };
+        let Some(dinv) = alg.inv(&reduce(&red(den))) else {
+            continue;
+        };
+        crt.push(&fp, &alg.mul(&reduce(&red(num)), &dinv));
+        if crt.modulus_bits() < next_bits {
+            continue;
+        }
+        next_bits = crt.modulus_bits() + (crt.modulus_bits() / 4).max(62);
+        crt.flush();
+        let Some((nums, d)) = super::modrur::reconstruct(crt.values(), crt.modulus()) else {
+            continue;
+        };
+        // q = Σ nums_i T^i / d: f divides nums·den − d·num over Z (f is
+        // primitive: exact division over Z, no fractions)
+        let qz = ZPoly::new(nums);
+        let h = &(&qz * den) - &num.scale(&d);
+        if h.is_zero() || h.div_exact(f).is_some() {
+            return Some(qz.to_q().scale(&Q::new(BigInt::one(), d)));
+        }
+    }
+    None
+}
+
 /// `Res(a, b)` modulo p by Euclid's algorithm, for `a`, `b` with non-zero
 /// leading coefficients modulo p (ascending): `Res(a, b) = (−1)^(mn)
 /// lc(b)^(m − deg r)·Res(b, r)` with `r = a rem b`, down to a constant.
 pub(crate) fn resultant_mod(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
-    let pow = |x: u64, e: usize| (0..e).fold(1u64, |acc, _| fp.mul(acc, x));
     let (mut a, mut b) = (trimmed(a), trimmed(b));
     let mut acc = 1u64;
     loop {
@@ -607,7 +663,7 @@ pub(crate) fn resultant_mod(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
             return 0;
         };
         if n == 0 {
-            return fp.mul(acc, pow(b[0], m));
+            return fp.mul(acc, fp.pow(b[0], m as u64));
         }
         let r = rem_mod(fp, &a, &b);
         if r.is_empty() {
@@ -616,7 +672,7 @@ pub(crate) fn resultant_mod(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
         if m * n % 2 == 1 {
             acc = fp.neg(acc);
         }
-        acc = fp.mul(acc, pow(b[n], m - (r.len() - 1)));
+        acc = fp.mul(acc, fp.pow(b[n], (m - (r.len() - 1)) as u64));
         (a, b) = (b, r);
     }
 }
@@ -968,10 +1024,7 @@ pub fn value_polynomial(
         let chi = alg.charpoly(&s);
         // ∏(u − σ·s_j) = Σ σ^(N−i) χ_i u^i, times R̄^e
         let sigma = fp.mul(sn, fp.inv(sd).expect("non-zero"));
-        let mut re = 1u64;
-        for _ in 0..map.degree {
-            re = fp.mul(re, r);
-        }
+        let re = fp.pow(r, map.degree as u64);
         let mut res = vec![0u64; nf + 1];
         let mut pw = re;
         for i in (0..=nf).rev() {
@@ -1023,7 +1076,6 @@ pub(crate) fn value_resultant(
     let mut blocks = BlockResidues::new(ints);
     let mut crt = CrtVec::new(n + 1);
     let mut degenerate = 0usize;
-    let pow = |fp: &Fp, x: u64, e: usize| (0..e).fold(1u64, |acc, _| fp.mul(acc, x));
     for j in 0..MAX_VALUE_PRIMES {
         crate::budget::check_now();
         if crt.modulus_bits() > bound + 1 {
@@ -1059,9 +1111,9 @@ pub(crate) fn value_resultant(
         // den is invertible modulo φ_p: their resultant is not zero
         let dinv = alg.inv(&reduce(dm))?;
         let chi = alg.charpoly(&alg.mul(&reduce(nm), &dinv));
-        let mut c = fp.mul(pow(&fp, fm[n], k - dd), res);
+        let mut c = fp.mul(fp.pow(fm[n], (k - dd) as u64), res);
         // c·sn^(n−i)·sd^i from i = 0 up
-        c = fp.mul(c, pow(&fp, snp, n));
+        c = fp.mul(c, fp.pow(snp, n as u64));
         let ratio = fp.mul(sdp, fp.inv(snp).expect("non-zero"));
         let mut out = vec![0u64; n + 1];
         for (o, &x) in out.iter_mut().zip(&chi) {

@@ -5,12 +5,16 @@
 
 use super::RealAlg;
 use crate::elim::groebner::{GPoly, MonoOrder, groebner};
-use crate::elim::quotient::{QMatrix, Quotient, krylov_shape, mat_comb, mat_vec};
+use crate::elim::quotient::{
+    QMatrix, Quotient, krylov_full_likely, krylov_shape, mat_comb, mat_vec,
+    minpoly_and_squarefree_image,
+};
 use crate::error::Error;
 use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
-use crate::poly::{QMPoly, QPoly, ZPoly};
-use num_traits::Zero;
+use crate::poly::{QMPoly, QPoly, ZMPoly, ZPoly};
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
 
 /// A rational univariate representation of the zeros of a radical
 /// zero-dimensional system in x, y, z.
@@ -98,10 +102,16 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
     let mut mats = [quo.var_matrix(0), quo.var_matrix(1), quo.var_matrix(2)];
     let mut rhs = shape_targets(&quo, &mats, extra);
     let mut sq_add: Vec<QMPoly> = Vec::new();
+    let mut sq_nf: Vec<QMPoly> = Vec::new();
     let mut cyclic = false;
     let mut ready = None;
     for (a, b) in [(1i64, 1i64), (2, -1), (-1, 3)] {
         let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
+        // exact Krylov vectors (long integers) only for a form that makes A
+        // cyclic modulo a prime: a non-cyclic A skips all three
+        if !krylov_full_likely(&mt, &quo.one()) {
+            continue;
+        }
         let (mp, sol) = krylov_shape(&mt, &quo.one(), &rhs)?;
         if let Some(sol) = sol {
             cyclic = true;
@@ -125,15 +135,30 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
     }
     if !cyclic {
         for (v, m) in mats.iter().enumerate() {
-            let (mp, _) = krylov_shape(m, &quo.one(), &[])?;
-            let (mz, _) = ZPoly::from_q(&mp);
-            let sq = mz.squarefree_part();
-            if sq.degree() != mz.degree() {
+            let (mp, image) = minpoly_and_squarefree_image(m, &quo.one())?;
+            if image.is_some() {
+                let (mz, _) = ZPoly::from_q(&mp);
+                let sq = mz.squarefree_part();
                 sq_add.push(MPoly::from_univariate(&sq.to_q(), SLOTS[v]));
+            }
+            if let Some(nf) = image {
+                // the normal form of sq(v) modulo I: I + (sq(v)) = I + (nf),
+                // nf supported on the standard monomials (low degree)
+                sq_nf.push(basis_poly(&quo, nf));
             }
         }
     }
     if !sq_add.is_empty() {
+        // √I = I + (sq_x(x), sq_y(y), sq_z(z)) (Seidenberg): first by the
+        // multi-modular route, whose certificate does not need the basis
+        // over Q of √I (slow with dense univariate generators of degree
+        // 30–80 and long coefficients)
+        let got = crate::budget::run_optional(|| {
+            radical_by_modular(gens, &sq_nf, extra, multiplicity_dim)
+        });
+        if let Some(rur) = got.flatten() {
+            return Ok(Some(rur));
+        }
         made_radical = true;
         ready = None;
         let mut all = input;
@@ -173,6 +198,9 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         }
         crate::budget::check_now();
         let mt = mat_comb(&[(qi(1), &mats[0]), (qi(a), &mats[1]), (qi(b), &mats[2])]);
+        if !krylov_full_likely(&mt, &one) {
+            continue;
+        }
         if let (mp, Some(sol)) = krylov_shape(&mt, &one, &rhs)? {
             chosen = Some(([qi(1), qi(a), qi(b)], mp, sol));
         }
@@ -199,6 +227,106 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
         real_roots,
         made_radical,
     }))
+}
+
+/// The most primes [`radical_by_modular`] lets the multi-modular route try.
+const RADICAL_PRIMES: usize = 600;
+
+/// The RUR of `√I = I + (sq_x(x), sq_y(y), sq_z(z))` (Seidenberg's lemma:
+/// an ideal containing a square-free polynomial in each variable is radical
+/// in characteristic 0; `sq_v` is the square-free part of the exact minimal
+/// polynomial of v on `Q[x]/I`, so it vanishes at every zero of I) by the
+/// multi-modular route ([`super::modrur`]) with a linear separating form.
+/// Its certificate is exact: every root of `f` gives a zero of the
+/// generators (`sq_v` included, verified over Z), and the count of
+/// standard monomials modulo a prime bounds the number of zeros from above
+/// (the leading forms include `x^a`, `y^b`, `z^c`: no zero at infinity).
+/// `x, y, z` are then `Gᵥ·Φ⁻¹ mod f`, and each extra `p` is
+/// `p(X(t), Y(t), Z(t)) mod f`, exactly.  `None` when the route declines
+/// (the caller computes the basis over Q of √I instead).
+fn radical_by_modular(
+    gens: &[QMPoly],
+    sq_add: &[QMPoly],
+    extra: &[QMPoly],
+    multiplicity_dim: usize,
+) -> Option<Rur> {
+    let mut all: Vec<QMPoly> = gens.iter().filter(|g| !g.is_zero()).cloned().collect();
+    all.extend(sq_add.iter().cloned());
+    let forms: Vec<[Q; 3]> = [(1i64, 1i64), (2, -1), (-1, 3)]
+        .iter()
+        .map(|&(a, b)| [qi(1), qi(a), qi(b)])
+        .collect();
+    let hs: Vec<QMPoly> = forms.iter().map(linear_form).collect();
+    let mr = super::modrur::solve_modular_implied(&all, &hs, RADICAL_PRIMES, &[]).ok()?;
+    // Φ is a constant multiple of f′, invertible modulo the square-free f
+    let mut coords: [QPoly; 3] = std::array::from_fn(|_| QPoly::zero());
+    for (k, c) in coords.iter_mut().enumerate() {
+        *c = super::poisson::quotient_mod_f(&mr.coords[k], &mr.denom, &mr.f, RADICAL_PRIMES)?;
+    }
+    // each extra p = k·p′ (p′ primitive, integral, degree e) at ξ(t) is
+    // k·p′ʰ(G, Φ)/Φ^e: numerator and denominator exactly over Z (not
+    // reduced: no fractions), their quotient modulo f lifted modularly
+    let mut extra_polys = Vec::with_capacity(extra.len());
+    let mut extra_values = Vec::with_capacity(extra.len());
+    let one = QPoly::constant(qi(1));
+    for p in extra {
+        let (pz, k) = p.to_primitive_z();
+        let (num, den) = eval_homogeneous(&pz, &mr.coords, &mr.denom);
+        let q = super::poisson::quotient_mod_f(&num, &den, &mr.f, RADICAL_PRIMES)?.scale(&k);
+        extra_values.push(crate::roots::value_polynomial(&mr.f, &q, &one));
+        extra_polys.push(q);
+    }
+    Some(Rur {
+        multiplicity_dim,
+        points: mr.f.degree().unwrap_or(0),
+        form: forms[mr.separating].clone(),
+        f: mr.f.clone(),
+        coords_z: std::array::from_fn(|k| ZPoly::from_q(&coords[k])),
+        coords,
+        extra: extra_polys,
+        extra_values,
+        real_roots: mr.real_roots,
+        made_radical: true,
+    })
+}
+
+/// `c₀x + c₁y + c₂z`.
+fn linear_form(c: &[Q; 3]) -> QMPoly {
+    let mut p = QMPoly::zero();
+    for (k, ck) in c.iter().enumerate() {
+        p = &p + &MPoly::var(SLOTS[k]).scale(ck);
+    }
+    p
+}
+
+/// `pʰ(G₀, G₁, G₂, Φ)` and `Φ^e` (e the degree of p) over Z, so that
+/// `p(G/Φ) = num/den` wherever Φ ≠ 0; powers cached.
+fn eval_homogeneous(p: &ZMPoly, g: &[ZPoly; 3], phi: &ZPoly) -> (ZPoly, ZPoly) {
+    let e = p.total_degree().unwrap_or(0) as usize;
+    let power = |b: &ZPoly| -> Vec<ZPoly> {
+        let mut v = vec![ZPoly::constant(BigInt::one())];
+        for _ in 0..e {
+            crate::budget::check();
+            let next = v.last().expect("non-empty") * b;
+            v.push(next);
+        }
+        v
+    };
+    let pows: [Vec<ZPoly>; 3] = std::array::from_fn(|k| power(&g[k]));
+    let phis = power(phi);
+    let mut acc = ZPoly::zero();
+    for (ex, c) in p.terms() {
+        crate::budget::check();
+        let mut term = phis[e - (0..3).map(|k| ex[SLOTS[k]] as usize).sum::<usize>()].scale(c);
+        for k in 0..3 {
+            let a = ex[SLOTS[k]] as usize;
+            if a > 0 {
+                term = &term * &pows[k][a];
+            }
+        }
+        acc = &acc + &term;
+    }
+    (acc, phis[e].clone())
 }
 
 /// The RUR of `√I` when `A = Q[x]/I` is cyclic for the form `t`: with
@@ -251,6 +379,23 @@ fn value_minpoly(quo: &Quotient, p: &QMPoly) -> Result<ZPoly, Error> {
     let m = mat_comb(&[(k, &quo.mult_matrix(&g))]);
     let (mp, _) = krylov_shape(&m, &quo.one(), &[])?;
     Ok(ZPoly::from_q(&mp).0.squarefree_part())
+}
+
+/// `Σ c_j·b_j` over the standard monomials `b_j`.
+fn basis_poly(quo: &Quotient, coords: Vec<Q>) -> QMPoly {
+    QMPoly::from_terms(
+        quo.basis
+            .iter()
+            .zip(coords)
+            .filter(|(_, c)| !c.is_zero())
+            .map(|(m, c)| {
+                let mut e = [0u32; crate::poly::mpoly::NVARS];
+                for k in 0..3 {
+                    e[SLOTS[k]] = m[k] as u32;
+                }
+                (e, c)
+            }),
+    )
 }
 
 /// Normal-form coordinates of a rational polynomial.
@@ -314,6 +459,42 @@ mod tests {
             );
         }
         rur
+    }
+
+    /// A quotient that is neither radical nor cyclic: `I = ((x+y)², y²,
+    /// z² + x − 1)` has the local algebra `C[x, y]/(x², y²)` (not cyclic
+    /// for any form) at `(0, 0, ±1)`.  Its radical comes from the
+    /// multi-modular route on I plus Seidenberg's generators (here `x + y`
+    /// and `y`), directly and through [`solve_zero_dim`]: two points,
+    /// `S = x + 2y + 3z + 5` taking 2 and 8.
+    #[test]
+    fn a_non_cyclic_quotient_gets_its_radical_by_the_modular_route() {
+        let gens: Vec<QMPoly> = ["x^2 + 2*x*y + y^2", "y^2", "z^2 + x - 1"]
+            .iter()
+            .map(|g| parse_poly(g).unwrap())
+            .collect();
+        let s = parse_poly("x + 2*y + 3*z + 5").unwrap();
+        let sq: Vec<QMPoly> = ["x + y", "y"]
+            .iter()
+            .map(|g| parse_poly(g).unwrap())
+            .collect();
+        let direct = radical_by_modular(&gens, &sq, std::slice::from_ref(&s), 8).unwrap();
+        let via = check(
+            &["x^2 + 2*x*y + y^2", "y^2", "z^2 + x - 1"],
+            "x + 2*y + 3*z + 5",
+        );
+        for r in [&direct, &via] {
+            assert_eq!(r.points, 2);
+            assert_eq!(r.multiplicity_dim, 8);
+            assert!(r.made_radical);
+            assert_eq!(r.extra_values[0], ZPoly::from_i64s(&[16, -10, 1]));
+            assert!(r.coords[0].is_zero() && r.coords[1].is_zero());
+        }
+        // a wrong "radical" generator (z, which does not vanish on V(I))
+        // leaves no zero to verify: declined, never a wrong RUR
+        let wrong = vec![parse_poly("z").unwrap()];
+        let r = radical_by_modular(&gens, &wrong, std::slice::from_ref(&s), 8);
+        assert!(r.is_none_or(|r| r.points == 0));
     }
 
     #[test]
