@@ -565,9 +565,12 @@ fn int_krylov(m: &QMatrix, v: &[Q], extra: usize) -> IntKrylov {
     IntKrylov { l, mi, lv, ws }
 }
 
+/// The square-free part `sq` of a minimal polynomial and `sq(m)·v`.
+pub type SquarefreeImage = (ZPoly, Vec<Q>);
+
 /// The minimal polynomial `μ` of `m` relative to `v` (as
-/// [`krylov_shape`]) and, when `μ` is not square-free, `sq(m)·v` exactly,
-/// with `sq` the square-free part of `μ` (primitive, integral).  With
+/// [`krylov_shape`]) and, when `μ` is not square-free, its square-free
+/// part `sq` (primitive, integral) with `sq(m)·v` exactly.  With
 /// `m` the multiplication by a coordinate on `Q[x]/I` and `v = 1`, that
 /// vector is the normal form of `sq(x)`, an element of `√I` of the degree
 /// of the standard monomials.  It is read off the integral Krylov vectors
@@ -575,7 +578,7 @@ fn int_krylov(m: &QMatrix, v: &[Q], extra: usize) -> IntKrylov {
 pub fn minpoly_and_squarefree_image(
     m: &QMatrix,
     v: &[Q],
-) -> Result<(QPoly, Option<Vec<Q>>), crate::error::Error> {
+) -> Result<(QPoly, Option<SquarefreeImage>), crate::error::Error> {
     let ik = int_krylov(m, v, 0);
     let (mp, _) = krylov_from(&ik, &[], KrylovRoute::Modular)?;
     let (mz, _) = ZPoly::from_q(&mp);
@@ -600,7 +603,7 @@ pub fn minpoly_and_squarefree_image(
             Q::new(acc, den.clone())
         })
         .collect();
-    Ok((mp, Some(image)))
+    Ok((mp, Some((sq, image))))
 }
 
 /// How [`krylov_shape_with`] eliminates.

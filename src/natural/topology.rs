@@ -26,7 +26,7 @@ use crate::geom::QuadricForm;
 use crate::geom::eval_qsqrt;
 use crate::geom::vec3::{V3, cross, dot, lift, norm2, orthogonal};
 use crate::number::{Q, QSqrt, qi};
-use crate::poly::mpoly::{MPoly, X, Y, Z};
+use crate::poly::mpoly::MPoly;
 use crate::poly::{QMPoly, QPoly};
 use crate::roots::{
     GENERIC_FORMS, RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_at,
@@ -323,8 +323,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
     let g2 = crate::geom::gradient(f2);
     for l in GENERIC_FORMS {
         crate::budget::check_now();
-        let lin: QMPoly = &(&MPoly::var(X).scale(&qi(l[0])) + &MPoly::var(Y).scale(&qi(l[1])))
-            + &MPoly::var(Z).scale(&qi(l[2]));
+        let lin = crate::roots::linear_form(&l.map(qi));
         let gl: [QMPoly; 3] = std::array::from_fn(|k| MPoly::constant(qi(l[k])));
         let det = dot(&cross(&g1, &g2), &gl);
         let Some(rur) = solve_zero_dim(&[f1.clone(), f2.clone(), det], std::slice::from_ref(&lin))?

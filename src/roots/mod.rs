@@ -28,6 +28,7 @@ pub use isolate::{RootInterval, bisect_once, isolate_real_roots, isolate_squaref
 pub use rational::{simplest_rational_in, split_cubic};
 pub use report::{RealRoot, RootReport, analyze_roots};
 pub use sturm::SturmSequence;
+pub(crate) use zerodim::linear_form;
 pub use zerodim::{GENERIC_FORMS, Rur, solve_zero_dim};
 
 // Used by the property tests (independent deciders checked against each

@@ -135,13 +135,8 @@ pub fn solve_zero_dim(gens: &[QMPoly], extra: &[QMPoly]) -> Result<Option<Rur>, 
     }
     if !cyclic {
         for (v, m) in mats.iter().enumerate() {
-            let (mp, image) = minpoly_and_squarefree_image(m, &quo.one())?;
-            if image.is_some() {
-                let (mz, _) = ZPoly::from_q(&mp);
-                let sq = mz.squarefree_part();
+            if let (_, Some((sq, nf))) = minpoly_and_squarefree_image(m, &quo.one())? {
                 sq_add.push(MPoly::from_univariate(&sq.to_q(), SLOTS[v]));
-            }
-            if let Some(nf) = image {
                 // the normal form of sq(v) modulo I: I + (sq(v)) = I + (nf),
                 // nf supported on the standard monomials (low degree)
                 sq_nf.push(basis_poly(&quo, nf));
@@ -291,7 +286,7 @@ fn radical_by_modular(
 }
 
 /// `c₀x + c₁y + c₂z`.
-fn linear_form(c: &[Q; 3]) -> QMPoly {
+pub(crate) fn linear_form(c: &[Q; 3]) -> QMPoly {
     let mut p = QMPoly::zero();
     for (k, ck) in c.iter().enumerate() {
         p = &p + &MPoly::var(SLOTS[k]).scale(ck);

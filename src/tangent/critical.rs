@@ -58,13 +58,7 @@ pub struct CriticalAnalysis {
 impl CriticalAnalysis {
     /// The values attained by real critical points.
     pub fn real_values(&self) -> Vec<RealAlg> {
-        let mut v = self.values.clone();
-        v.extend(
-            self.conics
-                .iter()
-                .map(|c| RealAlg::rational(c.value.clone())),
-        );
-        v
+        super::modular::with_conic_values(&self.values, &self.conics)
     }
 
     /// A witness near a real critical point whose value is `value`.

@@ -22,7 +22,7 @@ use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::RealAlg;
 use crate::roots::modrur::{Declined, ModularRur, solve_modular_implied};
-use crate::roots::{value_polynomial, values_with};
+use crate::roots::{linear_form, value_polynomial, values_with};
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// When S alone does not separate the critical points (symmetric inputs),
@@ -77,13 +77,7 @@ impl ModularAnalysis {
     /// The values attained by real critical points (with `h = S`: the real
     /// roots of D(u), increasing).
     pub fn real_values(&self) -> Vec<RealAlg> {
-        let mut v = self.values.clone();
-        v.extend(
-            self.conics
-                .iter()
-                .map(|c| RealAlg::rational(c.value.clone())),
-        );
-        v
+        with_conic_values(&self.values, &self.conics)
     }
 
     /// A witness near the real critical point whose value is `value`.
@@ -101,6 +95,14 @@ impl ModularAnalysis {
             self.rur.approx_point(i, bits)
         })
     }
+}
+
+/// The values at the real critical points followed by those of the
+/// conics of critical points.
+pub(crate) fn with_conic_values(values: &[RealAlg], conics: &[CriticalConic]) -> Vec<RealAlg> {
+    let mut v = values.to_vec();
+    v.extend(conics.iter().map(|c| RealAlg::rational(c.value.clone())));
+    v
 }
 
 /// The point of a conic of critical points where S is `value`, when its
@@ -244,10 +246,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
     let (conics, minors) = split_conics(&e.poly, s, &cross);
     let mut gens = vec![e.poly.clone()];
     gens.extend(minors);
-    let form = |l: &[i64; 3]| -> QMPoly {
-        &(&MPoly::var(X).scale(&q(l[0], 1)) + &MPoly::var(Y).scale(&q(l[1], 1)))
-            + &MPoly::var(Z).scale(&q(l[2], 1))
-    };
+    let form = |l: &[i64; 3]| linear_form(&l.map(|x| q(x, 1)));
     let mut hs = vec![s.clone()];
     for (l, (cn, cd)) in SHIFTS {
         hs.push(s + &form(&l).scale(&q(cn, cd)));

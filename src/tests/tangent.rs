@@ -30,6 +30,14 @@ fn approx(a: &Option<RealAlg>) -> Q {
     a.as_ref().unwrap().to_rational_approx(60)
 }
 
+/// The extremes against sampled bounds: `lo.0 < min ≤ lo.1` and
+/// `hi.0 ≤ max < hi.1` (a sampled minimum lies above the exact one).
+fn assert_extremes(r: &TangentReport, lo: (Q, Q), hi: (Q, Q)) {
+    let (a, b) = (approx(&r.min), approx(&r.max));
+    assert!(lo.0 < a && a <= lo.1, "min {a}");
+    assert!(hi.0 <= b && b < hi.1, "max {b}");
+}
+
 fn close(x: &Q, y: f64, tol: f64) -> bool {
     // only for comparing with the paper's printed 3-digit decimals
     let xf = num_traits::ToPrimitive::to_f64(x).unwrap();
@@ -609,12 +617,11 @@ fn zeros_at_infinity_are_counted_by_the_basis_over_q() {
     );
     assert_eq!(an.rur.count.bound, an.rur.points());
     assert_eq!(an.rur.points(), 54);
-    let (lo, hi) = (approx(&r.min), approx(&r.max));
-    assert!(
-        q(-227095, 10000) < lo && lo <= q(-22709312, 1000000),
-        "{lo}"
+    assert_extremes(
+        &r,
+        (q(-227095, 10000), q(-22709312, 1000000)),
+        (q(26700889, 1000000), q(267011, 10000)),
     );
-    assert!(q(26700889, 1000000) <= hi && hi < q(267011, 10000), "{hi}");
     let t = [q(1, 2), qi(-1), qi(2)];
     let id = cayley(0, 0, 0, 1);
     let ep = parse_poly(e).unwrap();
@@ -642,12 +649,11 @@ fn multiple_critical_points_from_singular_points_of_s() {
     assert_eq!((rat(&r.min), rat(&r.max)), (qi(-224), qi(224)));
     let r = run("x^2+y^2+z^2-4", "7x^4*y*z + 3y*z^4 - 2");
     assert_eq!(r.verdict, Verdict::Intersecting);
-    let (lo, hi) = (approx(&r.min), approx(&r.max));
-    assert!(
-        q(-364120, 10000) < lo && lo <= q(-36410104, 1000000),
-        "{lo}"
+    assert_extremes(
+        &r,
+        (q(-364120, 10000), q(-36410104, 1000000)),
+        (q(32410104, 1000000), q(324120, 10000)),
     );
-    assert!(q(32410104, 1000000) <= hi && hi < q(324120, 10000), "{hi}");
 }
 
 /// `S = c + z²·T`: the minors of ∇S × ∇E share the factor z, so every
@@ -675,14 +681,10 @@ fn a_conic_of_critical_points_is_split_off() {
             .iter()
             .any(|v| v.cmp_exact(&minus3) == Ordering::Equal)
     );
-    let (lo, hi) = (approx(&r.min), approx(&r.max));
-    assert!(
-        q(-54853, 10000) < lo && lo <= q(-54852813, 10000000),
-        "{lo}"
-    );
-    assert!(
-        q(114852813, 10000000) <= hi && hi < q(114853, 10000),
-        "{hi}"
+    assert_extremes(
+        &r,
+        (q(-54853, 10000), q(-54852813, 10000000)),
+        (q(114852813, 10000000), q(114853, 10000)),
     );
 }
 
@@ -699,13 +701,9 @@ fn the_exact_route_splits_off_a_conic_too() {
         panic!("expected the exact route, got {}", r.certificate.method());
     };
     assert!(!an.conics.is_empty());
-    let (lo, hi) = (approx(&r.min), approx(&r.max));
-    assert!(
-        q(-82290, 10000) < lo && lo <= q(-82272116, 10000000),
-        "{lo}"
-    );
-    assert!(
-        q(286146421, 10000000) <= hi && hi < q(286170, 10000),
-        "{hi}"
+    assert_extremes(
+        &r,
+        (q(-82290, 10000), q(-82272116, 10000000)),
+        (q(286146421, 10000000), q(286170, 10000)),
     );
 }
