@@ -73,11 +73,33 @@ fn coprime(a: Mono, b: Mono) -> bool {
 #[inline]
 pub fn rank(m: Mono) -> usize {
     let [_, y, z] = exps(m);
-    let k = degree(m) as usize;
-    let (y, z) = (y as usize, z as usize);
-    let j = k - z;
-    k * (k + 1) * (k + 2) / 6 + j * (j + 1) / 2 + (j - y)
+    let k = degree(m) as u8;
+    // j = k − z ≤ k < 256: both lookups are in range (no bounds checks)
+    let j = k - z as u8;
+    TETRAHEDRAL[k as usize] + TRIANGULAR[j as usize] + (j as usize - y as usize)
 }
+
+/// `k(k + 1)(k + 2)/6` for `k < 256`: the monomials of degree below k.
+const TETRAHEDRAL: [usize; 256] = {
+    let mut t = [0usize; 256];
+    let mut k = 0;
+    while k < 256 {
+        t[k] = k * (k + 1) * (k + 2) / 6;
+        k += 1;
+    }
+    t
+};
+
+/// `j(j + 1)/2` for `j < 256`.
+const TRIANGULAR: [usize; 256] = {
+    let mut t = [0usize; 256];
+    let mut j = 0;
+    while j < 256 {
+        t[j] = j * (j + 1) / 2;
+        j += 1;
+    }
+    t
+};
 
 /// The number of monomials of degree at most `k` (one more than the
 /// largest rank among them).

@@ -192,8 +192,13 @@ impl RealAlg {
 
     /// A rational approximation within `2^-bits`.
     pub fn to_rational_approx(&self, bits: u32) -> Q {
-        let mut c = self.clone();
         let w = Q::new(BigInt::one(), BigInt::one() << bits as usize);
+        let (lo, hi) = self.interval();
+        if &hi - &lo <= w {
+            // narrow enough already: no copy of the polynomial
+            return (lo + hi) / Q::from_integer(BigInt::from(2));
+        }
+        let mut c = self.clone();
         c.refine_to(&w);
         let (lo, hi) = c.interval();
         (lo + hi) / Q::from_integer(BigInt::from(2))

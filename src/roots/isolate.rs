@@ -689,7 +689,7 @@ pub fn isolate_squarefree(sq: &ZPoly) -> Vec<RootInterval> {
 /// case: VCA produces them) are bisected in integer arithmetic, without the
 /// gcd of every rational operation.
 pub fn refine(p: &ZPoly, iv: &mut RootInterval, width: &Q) {
-    if iv.is_exact() {
+    if iv.is_exact() || &(&iv.hi - &iv.lo) <= width {
         return;
     }
     if let Some(br) = DyadicBracket::of(iv) {

@@ -326,6 +326,11 @@ impl System {
         System { f, jac }
     }
 
+    /// The equations and the Jacobian (for the float filter).
+    pub(crate) fn parts(&self) -> (&[ZMPoly; 3], &[[ZMPoly; 3]; 3]) {
+        (&self.f, &self.jac)
+    }
+
     fn degrees(&self) -> [usize; 3] {
         std::array::from_fn(|i| self.f[i].total_degree().unwrap_or(0) as usize)
     }
@@ -513,15 +518,17 @@ impl System {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::poly::parse_poly;
 
-    fn sys(f: [&str; 3]) -> System {
+    /// The system of three polynomials given as text.
+    pub(crate) fn sys(f: [&str; 3]) -> System {
         System::new(f.map(|s| parse_poly(s).unwrap().to_primitive_z().0))
     }
 
-    fn q(n: i64, d: i64) -> Q {
+    /// `n/d`.
+    pub(crate) fn q(n: i64, d: i64) -> Q {
         Q::new(n.into(), d.into())
     }
 

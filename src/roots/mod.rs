@@ -12,6 +12,7 @@ mod algebraic;
 mod enclose;
 mod isolate;
 pub mod krawczyk;
+pub mod krawczyk_filter;
 pub mod modrur;
 mod newton;
 pub mod poisson;

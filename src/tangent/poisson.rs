@@ -32,6 +32,7 @@ use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::zpoly::DyadicSigner;
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
 use crate::roots::krawczyk::{Fix, System, ZeroBox, eval_box};
+use crate::roots::krawczyk_filter::{BallSystem, enclose_on};
 use crate::roots::modrur::Declined;
 use crate::roots::poisson::{
     ModAlgebra, PoissonRur, ValueMap, poly_gcd_mod, solve_square, value_bound_bits,
@@ -663,28 +664,48 @@ fn box_signs(
     points: &[RealAlg],
 ) -> Option<Vec<(i32, (Q, Q))>> {
     let sys = System::new(gens.clone());
+    // the float filter first (a success is a proof), the integer test when
+    // it declines
+    let filter = BallSystem::new(&sys);
     let (sz, scale) = s.to_primitive_z();
     let sgn = if scale.is_negative() { -1 } else { 1 };
     let mut boxes: Vec<ZeroBox> = Vec::with_capacity(points.len());
     for a in points {
         crate::budget::check_now();
         let t = a.to_rational_approx(64);
-        let start = rur.point_dyadic(&t, 64)?;
-        let b = [64usize, 128, 256].iter().find_map(|&bits| {
-            let b = sys.certify(&start, bits)?;
-            (eval_box(l, &b.enclosure, b.k).sign() != 0).then_some(b)
-        })?;
+        let not_extra = |b: &ZeroBox| eval_box(l, &b.enclosure, b.k).sign() != 0;
+        // the filter from the point at τ rounded to 24 bits (a shorter
+        // evaluation of the RUR; Newton does the rest), then at 64 bits
+        let by_filter = |t: &Q| -> Option<ZeroBox> {
+            let start = rur.point_dyadic(t, 64)?;
+            filter.as_ref()?.certify(&start).filter(not_extra)
+        };
+        let b = by_filter(&round_relative(&t, 24))
+            .or_else(|| by_filter(&t))
+            .or_else(|| {
+                let start = rur.point_dyadic(&t, 64)?;
+                [64usize, 128, 256].iter().find_map(|&bits| {
+                    let b = sys.certify(&start, bits)?;
+                    not_extra(&b).then_some(b)
+                })
+            })?;
         if boxes.iter().any(|o| !o.disjoint(&b)) {
             return None;
         }
         boxes.push(b);
     }
     let sign_on = |b: &ZeroBox| -> (i32, (Q, Q)) {
-        let v = eval_box(&sz, &b.enclosure, b.k);
-        let (lo, hi) = v.to_q(b.k);
+        // the ball enclosure when it decides the sign, else the integer one
+        let (sign, (lo, hi)) = match enclose_on(&sz, b) {
+            Some(e) if e.0 != 0 => e,
+            _ => {
+                let v = eval_box(&sz, &b.enclosure, b.k);
+                (v.sign(), v.to_q(b.k))
+            }
+        };
         let (lo, hi) = (lo * &scale, hi * &scale);
         let iv = if sgn < 0 { (hi, lo) } else { (lo, hi) };
-        (v.sign() * sgn, iv)
+        (sign * sgn, iv)
     };
     let mut out: Vec<(i32, (Q, Q))> = boxes.iter().map(sign_on).collect();
     let both = out.iter().any(|o| o.0 < 0) && out.iter().any(|o| o.0 > 0);
@@ -703,6 +724,20 @@ fn box_signs(
         }
     }
     Some(out)
+}
+
+/// `t` rounded down to `bits` significant bits (a dyadic; `t` itself when
+/// it is 0 or has no more than that).
+fn round_relative(t: &Q, bits: u32) -> Q {
+    if t.is_zero() {
+        return t.clone();
+    }
+    let e = bits as i64 - 1 - crate::number::floor_log2_q(&t.abs());
+    if e < 0 {
+        return t.clone();
+    }
+    let m = (t.numer() << e as usize).div_floor(t.denom());
+    Q::new(m, BigInt::one() << e as usize)
 }
 
 /// The sign of S at every real critical point with an enclosure of the

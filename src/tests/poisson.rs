@@ -11,6 +11,7 @@ use crate::number::Q;
 use crate::number::reconstruct::{Fp, prime31};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, parse_poly};
+use crate::roots::RealAlg;
 use crate::roots::poisson::{ModAlgebra, solve_square};
 use crate::roots::rurcheck::{Check, vanish_on_roots};
 use crate::tangent::{Ellipsoid, Verdict};
@@ -198,6 +199,35 @@ fn agrees_with_the_exact_route(e: &str, s: &str) {
     b.sort();
     b.dedup();
     assert_eq!(a, b, "{s} on {e}");
+    // verdict only: when every sign is decided from boxes (the float
+    // filter first), one enclosure per real critical point, each holding
+    // an exact critical value of its sign
+    let vo_an = crate::tangent::poisson::analyze(&ell, &sp, false).unwrap();
+    if vo_an.judging.is_none() {
+        assert_eq!(
+            vo_an.enclosures.len(),
+            vo_an.real_points.len(),
+            "{s} on {e}"
+        );
+        for (sign, (lo, hi)) in &vo_an.enclosures {
+            assert!(lo <= hi, "{s} on {e}");
+            let held: Vec<&RealAlg> = b
+                .iter()
+                .filter(|v| v.cmp_rational(lo).is_ge() && v.cmp_rational(hi).is_le())
+                .collect();
+            assert!(
+                !held.is_empty(),
+                "{s} on {e}: [{lo}, {hi}] holds no critical value"
+            );
+            if *sign != 0 {
+                let want = sign.cmp(&0);
+                assert!(
+                    held.iter().all(|v| v.cmp_rational(&Q::zero()) == want),
+                    "{s} on {e}"
+                );
+            }
+        }
+    }
     let full = crate::tangent::decide_poly(&ell.poly, &sp).unwrap();
     let opts = crate::tangent::TangentOptions::default().without_values();
     let vo = crate::tangent::decide_with(
