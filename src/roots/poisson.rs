@@ -926,6 +926,98 @@ pub fn solve_square(
     decline("the prime limit was reached")
 }
 
+/// The residues of a block of polynomials' coefficients (in order, as
+/// given to [`BlockResidues`]) cut into one slice per polynomial, and the
+/// position after the last.
+fn split_residues<'a>(all: &'a [u64], polys: &[&ZPoly]) -> (Vec<&'a [u64]>, usize) {
+    let mut parts = Vec::with_capacity(polys.len());
+    let mut at = 0;
+    for p in polys {
+        parts.push(&all[at..at + p.coeffs().len()]);
+        at += p.coeffs().len();
+    }
+    (parts, at)
+}
+
+/// The bits the CRT modulus of [`value_polynomial`] must pass (it passes
+/// `target + 1`): the smaller of Landau's bound on the factor `R̄^e·A` of
+/// `Res(u − h, F)` (`‖R̄^e·A‖∞ ≤ 2^deg A·√(bezout + 1)·2^resultant_bits`,
+/// `√(bezout + 1) < 2^⌈bits(bezout + 1)/2⌉`) and a direct bound on it
+/// ([`ValueMap::direct_bits`]).
+pub fn value_target_bits(
+    resultant_bits: u64,
+    nf: usize,
+    bezout: usize,
+    direct_bits: Option<u64>,
+) -> u64 {
+    let sqrt_bits = (usize::BITS - (bezout + 1).leading_zeros()).div_ceil(2) as u64;
+    let landau = resultant_bits + nf as u64 + sqrt_bits;
+    direct_bits.map_or(landau, |d| d.min(landau))
+}
+
+/// `Res(u − v, F) = ± R̄ · charpoly(v)` exactly for the coordinates
+/// v = x, y, z, from the exact RUR: modulo p it is `lc(w)·χ(v_v/w′)` in
+/// `F_p[T]/(w)` (Poisson's formula; the coordinate that is ℓ gives w
+/// itself), at every prime where `lc(w) ≢ 0` and w is square-free (w′
+/// invertible modulo w).  They are resultants of the same degrees as
+/// `w = Res(u − ℓ, F)` with `f₀ = u − v` of coefficients at most those of
+/// `u − ℓ`, so the RUR's bound (`rur.bound_bits`) bounds them, and the CRT
+/// stops beyond it.  Their Mahler measures bound the coordinates of all
+/// zeros at once (see `tangent::poisson`, the judging polynomial's direct
+/// bound).
+pub fn coordinate_eliminants(rur: &PoissonRur, max_primes: usize) -> Result<[ZPoly; 3], Declined> {
+    let n = rur.w.degree().unwrap_or(0);
+    let own = (0..3).find(|&v| rur.form == unit_form(v));
+    let polys = [&rur.w, &rur.wd, &rur.v[0], &rur.v[1], &rur.v[2]];
+    let ints: Vec<&BigInt> = polys.iter().flat_map(|p| p.coeffs()).collect();
+    let mut blocks = BlockResidues::new(ints);
+    let mut crt = CrtVec::new(3 * (n + 1));
+    for k in 0..max_primes {
+        crate::budget::check_now();
+        let fp = Fp::new(prime31(k));
+        let all = blocks.residues(k, &fp);
+        let (parts, _) = split_residues(&all, &polys);
+        let wm = parts[0];
+        let r = *wm.last().expect("w has degree ≥ 1");
+        if r == 0 {
+            continue;
+        }
+        let Some(alg) = ModAlgebra::from_poly(fp, wm) else {
+            continue;
+        };
+        let mut wd = rem_mod(&fp, parts[1], wm);
+        wd.resize(n, 0);
+        let Some(dinv) = alg.inv(&wd) else {
+            continue;
+        };
+        let mut res = Vec::with_capacity(3 * (n + 1));
+        for v in 0..3 {
+            let chi = if own == Some(v) {
+                let mut f = alg.low();
+                f.push(1);
+                f
+            } else {
+                let mut num = rem_mod(&fp, parts[2 + v], wm);
+                num.resize(n, 0);
+                alg.charpoly(&alg.mul(&num, &dinv))
+            };
+            res.extend(chi.iter().map(|&c| fp.mul(c, r)));
+        }
+        crt.push(&fp, &res);
+        if crt.modulus_bits() > rur.bound_bits + 1 {
+            crt.flush();
+            let m = crt.modulus().clone();
+            let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();
+            return Ok(std::array::from_fn(|v| {
+                ZPoly::new(vals[v * (n + 1)..(v + 1) * (n + 1)].to_vec())
+            }));
+        }
+    }
+    Err(Declined(
+        "the prime limit was reached (coordinate eliminants)".into(),
+    ))
+}
+
 /// What [`value_polynomial`] computes: the values of `h` (an integer
 /// polynomial of degree `degree`) at the zeros, read from a polynomial
 /// `eval` with `h(ξ) = scale · eval(ξ)` at every zero ξ of the factor (e.g.
@@ -938,6 +1030,9 @@ pub struct ValueMap<'a> {
     pub eval: &'a ZMPoly,
     /// `h / eval` at the zeros.
     pub scale: &'a Q,
+    /// A bound (bits) on the coefficients of the result itself, used when
+    /// it is below the general one (see [`value_target_bits`]).
+    pub direct_bits: Option<u64>,
 }
 
 /// `R̄^e · ∏_{f(τ)=0} (u − h(ξ(τ)))` exactly, for a square-free factor `f`
@@ -957,10 +1052,7 @@ pub fn value_polynomial(
     if nf == 0 {
         return Ok((ZPoly::constant(BigInt::one()), 0));
     }
-    // ‖R̄^e·A‖∞ ≤ 2^deg A · √(deg Q_h + 1) · 2^resultant_bits (Landau)
-    // √(deg Q_h + 1) < 2^⌈bits(deg Q_h + 1)/2⌉
-    let sqrt_bits = (usize::BITS - (bezout + 1).leading_zeros()).div_ceil(2) as u64;
-    let target = resultant_bits + nf as u64 + sqrt_bits;
+    let target = value_target_bits(resultant_bits, nf, bezout, map.direct_bits);
     let rbar = rur.leading_resultant();
     let mut crt = CrtVec::new(nf + 1);
     // every big integer of a prime's step, reduced a block of primes at a
@@ -972,22 +1064,12 @@ pub fn value_polynomial(
         .chain([&rbar, map.scale.numer(), map.scale.denom()])
         .collect();
     let mut blocks = BlockResidues::new(ints);
-    let sep = match rur.form {
-        [1, 0, 0] => Some(0),
-        [0, 1, 0] => Some(1),
-        [0, 0, 1] => Some(2),
-        _ => None,
-    };
+    let sep = (0..3).find(|&v| rur.form == unit_form(v));
     for k in 0..max_primes {
         crate::budget::check_now();
         let fp = Fp::new(prime31(k));
         let all = blocks.residues(k, &fp);
-        let mut parts = Vec::with_capacity(polys.len());
-        let mut at = 0;
-        for p in polys {
-            parts.push(&all[at..at + p.coeffs().len()]);
-            at += p.coeffs().len();
-        }
+        let (parts, at) = split_residues(&all, &polys);
         let (r, sn, sd) = (all[at], all[at + 1], all[at + 2]);
         let fm = parts[0];
         if fm.last() == Some(&0) || r == 0 || sn == 0 || sd == 0 {

@@ -35,8 +35,8 @@ use crate::roots::krawczyk::{Fix, System, ZeroBox, eval_box};
 use crate::roots::krawczyk_filter::{BallSystem, enclose_on};
 use crate::roots::modrur::Declined;
 use crate::roots::poisson::{
-    ModAlgebra, PoissonRur, ValueMap, poly_gcd_mod, solve_square, value_bound_bits,
-    value_polynomial, zpoly_mod,
+    ModAlgebra, PoissonRur, ValueMap, coordinate_eliminants, poly_gcd_mod, solve_square,
+    value_bound_bits, value_polynomial, zpoly_mod,
 };
 use crate::roots::{RealAlg, RootInterval, isolate_squarefree};
 use num_bigint::BigInt;
@@ -87,6 +87,15 @@ pub struct PoissonAnalysis {
     pub value_bound_bits: u64,
     /// The number of primes of D(u).
     pub value_primes: usize,
+    /// Per coordinate v = x, y, z, an upper bound (bits) on
+    /// `log₂ ∏ max(1, |v(ξ)|)` over all zeros ξ of F, from the Mahler
+    /// measure of the exact eliminant `Res(u − v, F)` (when it was worth
+    /// computing: see [`coordinate_mahler_bits`]).
+    pub coordinate_mahler_bits: Option<[u64; 3]>,
+    /// The direct bound (bits) on the coefficients of `R̄^d·∏(u − S′(ξ))`
+    /// that follows from them ([`direct_value_bits`]); D(u)'s CRT stops
+    /// beyond the smaller of it and the Landau–Sombra bound.
+    pub value_direct_bits: Option<u64>,
     /// S at a 2^-32 approximation of each real critical point, with the S
     /// it was made for (see [`PoissonAnalysis::approx_values`]).
     approx_values: std::sync::OnceLock<(QMPoly, Vec<Option<Q>>)>,
@@ -427,6 +436,8 @@ fn finish(
         enclosures: Vec::new(),
         value_bound_bits: 0,
         value_primes: 0,
+        coordinate_mahler_bits: None,
+        value_direct_bits: None,
         approx_values: std::sync::OnceLock::new(),
         judging_roots: Vec::new(),
     };
@@ -446,10 +457,17 @@ fn finish(
     // S is evaluated reduced modulo E (degree ≤ 1 in x: fewer products),
     // which it equals at every critical point
     let (sr, kr) = reduce_mod_ellipsoid(s, e).to_primitive_z();
+    let degree = sz.total_degree().unwrap_or(0);
+    let nf = an.critical.degree().unwrap_or(0);
+    an.coordinate_mahler_bits = coordinate_mahler_bits(&an.rur, &sz, bits, nf, sys.bezout())?;
+    an.value_direct_bits = an
+        .coordinate_mahler_bits
+        .map(|m| direct_value_bits(&an.rur, &sz, nf, &m));
     let map = ValueMap {
-        degree: sz.total_degree().unwrap_or(0),
+        degree,
         eval: &sr,
         scale: &(&kr / &k),
+        direct_bits: an.value_direct_bits,
     };
     let (t, value_primes) =
         value_polynomial(&an.rur, &an.critical, &map, bits, sys.bezout(), MAX_PRIMES)?;
@@ -466,6 +484,72 @@ fn finish(
     an.value_bound_bits = bits;
     an.value_primes = value_primes;
     Ok(an)
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Tests: D(u) from the Landau–Sombra bound alone (no direct bound).
+    pub(crate) static GENERAL_BOUND_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// `⌈log₂ ‖h‖₁⌉` (the sum of the absolute values of the coefficients).
+fn l1_bits(h: &ZMPoly) -> u64 {
+    let l1: BigInt = h.terms().iter().map(|(_, c)| c.abs()).sum();
+    l1.bits()
+}
+
+/// The direct bound (bits) on the coefficients of `A = R̄^d·∏(u − S′(ξ))`
+/// over the `nf` critical points, from the coordinate bounds `m`
+/// (`m_v ≥ log₂ ∏_ξ max(1, |v(ξ)|)` over all zeros of F):
+/// `|S′(ξ)| ≤ ‖S′‖₁·∏_v max(1, |v(ξ)|)^d` (every monomial has degree ≤ d),
+/// so `∏ max(1, |S′(ξ)|) ≤ ‖S′‖₁^nf·2^(d·Σ m_v)`, and a coefficient of A
+/// is at most `|R̄|^d·C(nf, i)·∏ max(1, |S′(ξ)|)` with `C(nf, i) ≤ 2^nf`.
+pub(crate) fn direct_value_bits(rur: &PoissonRur, h: &ZMPoly, nf: usize, m: &[u64; 3]) -> u64 {
+    let d = h.total_degree().unwrap_or(0) as u64;
+    let nf = nf as u64;
+    d * rur.leading_resultant().bits() + nf + nf * l1_bits(h) + d * m.iter().sum::<u64>()
+}
+
+/// The coordinate bounds of [`direct_value_bits`], when they promise to
+/// save work: `None` unless the estimate from w alone (w is the
+/// eliminant of ℓ, exact already) saves D(u) at least two thirds as many
+/// bits of primes as the eliminants cost (a prime of D(u) costs about 1.5
+/// characteristic polynomials, one of an eliminant one; the eliminants
+/// need the RUR's bound, once per coordinate other than ℓ); otherwise the
+/// three exact eliminants `P_v = Res(u − v, F)` ([`coordinate_eliminants`]) give
+/// `∏_ξ max(1, |v(ξ)|) = M(P_v)/|R̄| ≤ ‖P_v‖₂/|R̄|` (Landau's inequality),
+/// i.e. at most `bits(‖P_v‖∞) + ⌈bits(n + 1)/2⌉ − (bits(R̄) − 1)` bits.
+fn coordinate_mahler_bits(
+    rur: &PoissonRur,
+    h: &ZMPoly,
+    resultant_bits: u64,
+    nf: usize,
+    bezout: usize,
+) -> Result<Option<[u64; 3]>, Declined> {
+    let n = rur.w.degree().unwrap_or(0);
+    let sqrt_bits = (usize::BITS - (n + 1).leading_zeros()).div_ceil(2) as u64;
+    let rb = rur.leading_resultant().bits();
+    let mahler = |p: &ZPoly| -> u64 {
+        let top = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
+        (top + sqrt_bits).saturating_sub(rb - 1)
+    };
+    let guess = mahler(&rur.w);
+    let estimate = direct_value_bits(rur, h, nf, &[guess; 3]);
+    let target = crate::roots::poisson::value_target_bits(resultant_bits, nf, bezout, None);
+    #[cfg(test)]
+    if GENERAL_BOUND_ONLY.with(|c| c.get()) {
+        return Ok(None);
+    }
+    let others = (0..3)
+        .filter(|&v| rur.form != std::array::from_fn(|i| i64::from(i == v)))
+        .count() as u64;
+    if 3 * target.saturating_sub(estimate) <= 2 * others * rur.bound_bits {
+        return Ok(None);
+    }
+    // without them (the prime limit) the general bound serves
+    Ok(coordinate_eliminants(rur, MAX_PRIMES)
+        .ok()
+        .map(|elims| [0, 1, 2].map(|v| mahler(&elims[v]))))
 }
 
 /// The real roots of D(u) (square-free, primitive, positive leading

@@ -16,7 +16,7 @@ use crate::roots::poisson::{ModAlgebra, solve_square};
 use crate::roots::rurcheck::{Check, vanish_on_roots};
 use crate::tangent::{Ellipsoid, Verdict};
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 use proptest::prelude::*;
 
 fn zpoly(s: &str) -> ZMPoly {
@@ -72,6 +72,29 @@ fn the_rur_is_exact() {
         // the a-priori bound holds the coefficients it was used for
         let bits = rur.w.coeffs().iter().map(|c| c.bits()).max().unwrap();
         assert!(bits <= rur.bound_bits, "{bits} > {}", rur.bound_bits);
+        // the coordinate eliminants: of degree Bézout with lc ±lc(w), each
+        // vanishing at its coordinate of every zero; ℓ's is w itself
+        let elims = crate::roots::poisson::coordinate_eliminants(&rur, 5000).unwrap();
+        for (v, p) in elims.iter().enumerate() {
+            assert_eq!(p.degree(), Some(sys.bezout()), "{gens:?}");
+            assert_eq!(p.lc().abs(), rur.w.lc().abs(), "{gens:?}");
+            let unit: [i64; 3] = std::array::from_fn(|i| i64::from(i == v));
+            if rur.form == unit {
+                assert_eq!(p, &rur.w, "{gens:?}");
+            }
+            let as_poly = ZMPoly::from_terms(p.coeffs().iter().enumerate().map(|(i, c)| {
+                let mut e = [0u32; crate::poly::mpoly::NVARS];
+                e[[X, Y, Z][v]] = i as u32;
+                (e, c.clone())
+            }));
+            let check = Check {
+                p: as_poly,
+                k: sys.bezout() as u32,
+                u_coef: BigInt::zero(),
+            };
+            vanish_on_roots(&rur.w, &rur.v, &rur.wd, &[check])
+                .unwrap_or_else(|e| panic!("{gens:?}: eliminant {v} ({e:?})"));
+        }
     }
 }
 
@@ -260,6 +283,34 @@ fn poisson_route_agrees_on_fixed_cases() {
         ("x^2 + 2y^2 + 3z^2 - 2", "x^3 + y^2*z - x*z + 4"),
     ] {
         agrees_with_the_exact_route(e, s);
+    }
+}
+
+/// D(u) with its CRT stopped by the direct bound (the Mahler measures of
+/// the coordinate eliminants) is D(u) with the Landau–Sombra bound: the
+/// same polynomial, from fewer primes.
+#[test]
+fn the_direct_bound_gives_the_same_judging_polynomial() {
+    for (e, s) in [
+        (
+            "18*x*x - 12*x*y + 10*x*z + 23*y*y - 24*y*z + 14*z*z - 2*x + 3*y + 2*z - 27",
+            "x^4 + y^4 + z^4 - x*y - 2",
+        ),
+        (
+            "x^2 + y^2 + z^2 - 4",
+            "x^4 + 2x^3*y - y^3*z + 3x*z^3 - 2y^2*z^2 + x^2 - y*z + z - 2",
+        ),
+    ] {
+        let (ell, sp) = (ellipsoid(e), parse_poly(s).unwrap());
+        let direct = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
+        let bits = direct.value_direct_bits.expect("the direct bound is used");
+        assert!(bits < direct.value_bound_bits, "{s} on {e}");
+        crate::tangent::poisson::GENERAL_BOUND_ONLY.with(|c| c.set(true));
+        let general = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
+        crate::tangent::poisson::GENERAL_BOUND_ONLY.with(|c| c.set(false));
+        assert!(general.value_direct_bits.is_none());
+        assert_eq!(direct.judging, general.judging, "{s} on {e}");
+        assert!(direct.value_primes < general.value_primes, "{s} on {e}");
     }
 }
 

@@ -172,9 +172,16 @@ pub fn tangent_human(r: &TangentReport) -> String {
                     an.rur.form[0], an.rur.form[1], an.rur.form[2]
                 );
                 if an.judging.is_some() {
+                    let judging = match an.value_direct_bits {
+                        Some(d) => format!(
+                            "{} and {} bits (Sombra; the second replaced by {d} bits from the Mahler measures of the coordinate eliminants)",
+                            an.rur.bound_bits, an.value_bound_bits
+                        ),
+                        None => format!("{} and {} bits (Sombra)", an.rur.bound_bits, an.value_bound_bits),
+                    };
                     format!(
-                        "{rur} and D(u) are resultants, computed modulo {} and {} primes beyond Sombra's bounds of {} and {} bits (exact, no verification needed)",
-                        an.rur.primes, an.value_primes, an.rur.bound_bits, an.value_bound_bits
+                        "{rur} and D(u) are resultants, computed modulo {} and {} primes beyond bounds of {judging} (exact, no verification needed)",
+                        an.rur.primes, an.value_primes
                     )
                 } else {
                     format!(
