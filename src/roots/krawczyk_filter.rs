@@ -84,27 +84,8 @@ impl BallSystem {
 
     /// Enclosures of `f` and of the Jacobian (row by row) on the box `x`.
     fn eval(&self, x: &[BallR; 3]) -> Vec<BallR> {
-        let one = BallR::input(1.0, 0);
-        let pw: Vec<Vec<BallR>> = x
-            .iter()
-            .map(|b| {
-                let mut v = vec![one];
-                for e in 1..=self.deg {
-                    let next = v[e - 1].mul(b);
-                    v.push(next);
-                }
-                v
-            })
-            .collect();
-        let mv: Vec<BallR> = self
-            .monos
-            .iter()
-            .map(|m| {
-                pw[0][m[0] as usize]
-                    .mul(&pw[1][m[1] as usize])
-                    .mul(&pw[2][m[2] as usize])
-            })
-            .collect();
+        let pw = powers(x, self.deg);
+        let mv: Vec<BallR> = self.monos.iter().map(|m| monomial(&pw, m)).collect();
         self.polys
             .iter()
             .map(|terms| {
@@ -115,12 +96,14 @@ impl BallSystem {
             .collect()
     }
 
-    /// Values and Jacobian at a point (midpoints: Newton's approximations).
-    fn approx_at(&self, c: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
+    /// Values and Jacobian at a point (midpoints: Newton's approximations),
+    /// with the enclosures they come from.
+    fn approx_at(&self, c: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3], Vec<BallR>) {
         let v = self.eval(&c.map(|x| BallR::input(x, 0)));
         (
             std::array::from_fn(|i| v[i].m),
             std::array::from_fn(|i| std::array::from_fn(|j| v[3 + 3 * i + j].m)),
+            v,
         )
     }
 
@@ -137,7 +120,7 @@ impl BallSystem {
         // Newton until a step is below 2^-30 relative, then one more
         let mut close = None;
         for round in 0..12 {
-            let (f, j) = self.approx_at(&c);
+            let (f, j, _) = self.approx_at(&c);
             let inv = inverse3(&j)?;
             let step: [f64; 3] = std::array::from_fn(|i| (0..3).map(|l| inv[i][l] * f[l]).sum());
             for (ci, s) in c.iter_mut().zip(&step) {
@@ -155,10 +138,10 @@ impl BallSystem {
             }
         }
         close?;
-        let y = inverse3(&self.approx_at(&c).1)?;
+        // one evaluation at the centre: Y from its Jacobian, f(c) enclosed
+        let (_, j, fc) = self.approx_at(&c);
+        let y = inverse3(&j)?;
         let size = c.iter().fold(1.0f64, |a, x| a.max(x.abs()));
-        let point = c.map(|x| BallR::input(x, 0));
-        let fc = self.eval(&point);
         for e in [40, 32, 24] {
             let r = size * pow2_neg(e)?;
             if let Some(k) = self.krawczyk(&c, r, &y, &fc[..3]) {
@@ -215,23 +198,9 @@ impl BallSystem {
 pub fn enclose_on(p: &ZMPoly, b: &ZeroBox) -> Option<(i32, (Q, Q))> {
     let x: [Option<BallR>; 3] = [0, 1, 2].map(|i| fix_ball(&b.enclosure[i], b.k));
     let x = [x[0]?, x[1]?, x[2]?];
-    let deg = p.total_degree().unwrap_or(0) as usize;
-    let pw: Vec<Vec<BallR>> = x
-        .iter()
-        .map(|v| {
-            let mut out = vec![BallR::input(1.0, 0)];
-            for e in 1..=deg {
-                let next = out[e - 1].mul(v);
-                out.push(next);
-            }
-            out
-        })
-        .collect();
+    let pw = powers(&x, p.total_degree().unwrap_or(0) as usize);
     let v = p.terms().iter().fold(BallR::input(0.0, 0), |acc, (e, c)| {
-        let m = pw[0][e[0] as usize]
-            .mul(&pw[1][e[1] as usize])
-            .mul(&pw[2][e[2] as usize]);
-        acc.add(&BallR::from_z(c).mul(&m))
+        acc.add(&BallR::from_z(c).mul(&monomial(&pw, &[e[0], e[1], e[2]])))
     });
     if !(v.m.is_finite() && v.r.is_finite()) {
         return None;
@@ -245,6 +214,27 @@ pub fn enclose_on(p: &ZMPoly, b: &ZeroBox) -> Option<(i32, (Q, Q))> {
         0
     };
     Some((sign, (&m - &r, &m + &r)))
+}
+
+/// The powers `x_v^0 … x_v^deg` of each coordinate.
+fn powers(x: &[BallR; 3], deg: usize) -> Vec<Vec<BallR>> {
+    x.iter()
+        .map(|b| {
+            let mut v = vec![BallR::input(1.0, 0)];
+            for e in 1..=deg {
+                let next = v[e - 1].mul(b);
+                v.push(next);
+            }
+            v
+        })
+        .collect()
+}
+
+/// `x^a y^b z^c` from the powers.
+fn monomial(pw: &[Vec<BallR>], m: &[u32; 3]) -> BallR {
+    pw[0][m[0] as usize]
+        .mul(&pw[1][m[1] as usize])
+        .mul(&pw[2][m[2] as usize])
 }
 
 /// The interval `[lo, hi]·2^-k` as a ball containing it.

@@ -787,7 +787,7 @@ pub(crate) fn zpoly_mod(fp: &Fp, p: &ZPoly) -> Vec<u64> {
 }
 
 /// The linear form of the variable `v`.
-fn unit_form(v: usize) -> [i64; 3] {
+pub(crate) fn unit_form(v: usize) -> [i64; 3] {
     let mut e = [0i64; 3];
     e[v] = 1;
     e
@@ -939,6 +939,11 @@ fn split_residues<'a>(all: &'a [u64], polys: &[&ZPoly]) -> (Vec<&'a [u64]>, usiz
     (parts, at)
 }
 
+/// `⌈bits(m)/2⌉`: `√m < 2^sqrt_bits(m)`.
+pub(crate) fn sqrt_bits(m: usize) -> u64 {
+    (usize::BITS - m.leading_zeros()).div_ceil(2) as u64
+}
+
 /// The bits the CRT modulus of [`value_polynomial`] must pass (it passes
 /// `target + 1`): the smaller of Landau's bound on the factor `R̄^e·A` of
 /// `Res(u − h, F)` (`‖R̄^e·A‖∞ ≤ 2^deg A·√(bezout + 1)·2^resultant_bits`,
@@ -950,8 +955,7 @@ pub fn value_target_bits(
     bezout: usize,
     direct_bits: Option<u64>,
 ) -> u64 {
-    let sqrt_bits = (usize::BITS - (bezout + 1).leading_zeros()).div_ceil(2) as u64;
-    let landau = resultant_bits + nf as u64 + sqrt_bits;
+    let landau = resultant_bits + nf as u64 + sqrt_bits(bezout + 1);
     direct_bits.map_or(landau, |d| d.min(landau))
 }
 

@@ -31,7 +31,7 @@ use crate::number::{Q, dyadic, dyadic_floor, qi};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::zpoly::DyadicSigner;
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
-use crate::roots::krawczyk::{Fix, System, ZeroBox, eval_box};
+use crate::roots::krawczyk::{Dyadic3, Fix, System, ZeroBox, eval_box};
 use crate::roots::krawczyk_filter::{BallSystem, enclose_on};
 use crate::roots::modrur::Declined;
 use crate::roots::poisson::{
@@ -526,8 +526,7 @@ fn coordinate_mahler_bits(
     nf: usize,
     bezout: usize,
 ) -> Result<Option<[u64; 3]>, Declined> {
-    let n = rur.w.degree().unwrap_or(0);
-    let sqrt_bits = (usize::BITS - (n + 1).leading_zeros()).div_ceil(2) as u64;
+    let sqrt_bits = crate::roots::poisson::sqrt_bits(rur.w.degree().unwrap_or(0) + 1);
     let rb = rur.leading_resultant().bits();
     let mahler = |p: &ZPoly| -> u64 {
         let top = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
@@ -541,7 +540,7 @@ fn coordinate_mahler_bits(
         return Ok(None);
     }
     let others = (0..3)
-        .filter(|&v| rur.form != std::array::from_fn(|i| i64::from(i == v)))
+        .filter(|&v| rur.form != crate::roots::poisson::unit_form(v))
         .count() as u64;
     if 3 * target.saturating_sub(estimate) <= 2 * others * rur.bound_bits {
         return Ok(None);
@@ -760,17 +759,19 @@ fn box_signs(
         let not_extra = |b: &ZeroBox| eval_box(l, &b.enclosure, b.k).sign() != 0;
         // the filter from the point at τ rounded to 24 bits (a shorter
         // evaluation of the RUR; Newton does the rest), then at 64 bits
-        let by_filter = |t: &Q| -> Option<ZeroBox> {
-            let start = rur.point_dyadic(t, 64)?;
-            filter.as_ref()?.certify(&start).filter(not_extra)
+        let by_filter = |start: &Dyadic3| -> Option<ZeroBox> {
+            filter.as_ref()?.certify(start).filter(not_extra)
         };
-        let b = by_filter(&round_relative(&t, 24))
-            .or_else(|| by_filter(&t))
+        let b = rur
+            .point_dyadic(&round_relative(&t, 24), 64)
+            .and_then(|start| by_filter(&start))
             .or_else(|| {
                 let start = rur.point_dyadic(&t, 64)?;
-                [64usize, 128, 256].iter().find_map(|&bits| {
-                    let b = sys.certify(&start, bits)?;
-                    not_extra(&b).then_some(b)
+                by_filter(&start).or_else(|| {
+                    [64usize, 128, 256].iter().find_map(|&bits| {
+                        let b = sys.certify(&start, bits)?;
+                        not_extra(&b).then_some(b)
+                    })
                 })
             })?;
         if boxes.iter().any(|o| !o.disjoint(&b)) {
