@@ -131,6 +131,13 @@ impl SquareSystem {
         Ok((gb, basis))
     }
 
+    /// Sombra's bound (bits) on `|R̄|`, the resultant of the three leading
+    /// forms (ternary forms of degrees `dᵢ` with `C(dᵢ + 2, 2)` monomials).
+    pub fn leading_resultant_bound_bits(&self) -> u64 {
+        let bounds: Vec<BigInt> = self.forms.iter().map(max_coeff).collect();
+        sombra_bits(&self.degs, &bounds, |a| (a + 1) * (a + 2) / 2)
+    }
+
     /// `± R̄ mod p` (the same sign at every prime), by the Poisson formula
     /// in two variables.
     pub fn leading_resultant_mod(&self, fp: &Fp) -> Result<u64, PrimeFail> {
@@ -275,11 +282,19 @@ fn binomial(n: u64, k: u64) -> BigInt {
 /// bounded in absolute value by `bounds[i]` (Sombra's height bound, see
 /// the module documentation).
 pub fn resultant_bound_bits(degs: &[u32; 4], bounds: &[BigInt; 4]) -> u64 {
+    sombra_bits(degs, bounds, |a| (a + 1) * (a + 2) * (a + 3) / 6)
+}
+
+/// Sombra's bound for dense polynomials with `count(d)` monomials of
+/// degree ≤ d: `∏ᵢ C(#Aᵢ + Dᵢ − 1, Dᵢ) · #Aᵢ^{Dᵢ} · cᵢ^{Dᵢ}`, in bits.
+fn sombra_bits(degs: &[u32], bounds: &[BigInt], count: impl Fn(u64) -> u64) -> u64 {
     let mut total = BigInt::one();
-    for i in 0..4 {
-        let di: u64 = (0..4).filter(|&j| j != i).map(|j| degs[j] as u64).product();
-        let a = degs[i] as u64;
-        let count = (a + 1) * (a + 2) * (a + 3) / 6;
+    for i in 0..degs.len() {
+        let di: u64 = (0..degs.len())
+            .filter(|&j| j != i)
+            .map(|j| degs[j] as u64)
+            .product();
+        let count = count(degs[i] as u64);
         total *= binomial(count + di - 1, di);
         total *= num_traits::pow(BigInt::from(count), di as usize);
         total *= num_traits::pow(bounds[i].abs().max(BigInt::one()), di as usize);

@@ -364,6 +364,20 @@ impl CrtVec {
         self.modulus *= BigInt::from(p);
     }
 
+    /// True when the newest prime left every value's symmetric
+    /// representative as it was: each newest mixed-radix digit is 0 (a
+    /// value in `[0, M/2)`) or `p − 1` (a negative value).  A heuristic for
+    /// "the image has stabilised", never a proof.
+    pub fn newest_digits_stable(&self) -> bool {
+        match (self.digits.last(), self.primes.last()) {
+            (Some(d), Some(&p)) if self.primes.len() >= 2 => {
+                let top = (p - 1) as u32;
+                d.iter().all(|&x| x == 0 || x == top)
+            }
+            _ => false,
+        }
+    }
+
     /// Converts the digits pushed since the last flush into the values.
     pub fn flush(&mut self) {
         let (from, to) = (self.converted, self.primes.len());

@@ -84,14 +84,22 @@ impl BallSystem {
 
     /// Enclosures of `f` and of the Jacobian (row by row) on the box `x`.
     fn eval(&self, x: &[BallR; 3]) -> Vec<BallR> {
+        self.eval_in(x)
+    }
+
+    /// [`BallSystem::eval`] in any ball arithmetic (real, or complex for
+    /// [`crate::roots::census`]).
+    pub(crate) fn eval_in<T: BallArith>(&self, x: &[T; 3]) -> Vec<T> {
         let pw = powers(x, self.deg);
-        let mv: Vec<BallR> = self.monos.iter().map(|m| monomial(&pw, m)).collect();
+        let mv: Vec<T> = self.monos.iter().map(|m| monomial(&pw, m)).collect();
         self.polys
             .iter()
             .map(|terms| {
                 terms
                     .iter()
-                    .fold(BallR::input(0.0, 0), |acc, (i, c)| acc.add(&c.mul(&mv[*i])))
+                    .fold(T::of_real(BallR::input(0.0, 0)), |acc, (i, c)| {
+                        acc.plus(&T::of_real(*c).times(&mv[*i]))
+                    })
             })
             .collect()
     }
@@ -216,13 +224,36 @@ pub fn enclose_on(p: &ZMPoly, b: &ZeroBox) -> Option<(i32, (Q, Q))> {
     Some((sign, (&m - &r, &m + &r)))
 }
 
+/// A ball arithmetic the system can be evaluated in: every operation
+/// returns a set containing every exact result of its operands' members.
+pub(crate) trait BallArith: Copy {
+    /// The real ball `b`.
+    fn of_real(b: BallR) -> Self;
+    /// `self + o`.
+    fn plus(&self, o: &Self) -> Self;
+    /// `self · o`.
+    fn times(&self, o: &Self) -> Self;
+}
+
+impl BallArith for BallR {
+    fn of_real(b: BallR) -> Self {
+        b
+    }
+    fn plus(&self, o: &Self) -> Self {
+        self.add(o)
+    }
+    fn times(&self, o: &Self) -> Self {
+        self.mul(o)
+    }
+}
+
 /// The powers `x_v^0 … x_v^deg` of each coordinate.
-fn powers(x: &[BallR; 3], deg: usize) -> Vec<Vec<BallR>> {
+fn powers<T: BallArith>(x: &[T; 3], deg: usize) -> Vec<Vec<T>> {
     x.iter()
         .map(|b| {
-            let mut v = vec![BallR::input(1.0, 0)];
+            let mut v = vec![T::of_real(BallR::input(1.0, 0))];
             for e in 1..=deg {
-                let next = v[e - 1].mul(b);
+                let next = v[e - 1].times(b);
                 v.push(next);
             }
             v
@@ -231,10 +262,10 @@ fn powers(x: &[BallR; 3], deg: usize) -> Vec<Vec<BallR>> {
 }
 
 /// `x^a y^b z^c` from the powers.
-fn monomial(pw: &[Vec<BallR>], m: &[u32; 3]) -> BallR {
+fn monomial<T: BallArith>(pw: &[Vec<T>], m: &[u32; 3]) -> T {
     pw[0][m[0] as usize]
-        .mul(&pw[1][m[1] as usize])
-        .mul(&pw[2][m[2] as usize])
+        .times(&pw[1][m[1] as usize])
+        .times(&pw[2][m[2] as usize])
 }
 
 /// The interval `[lo, hi]·2^-k` as a ball containing it.

@@ -9,6 +9,7 @@
 //! decided exactly (gcds and exact evaluation at rationals).
 
 mod algebraic;
+pub mod census;
 mod enclose;
 mod isolate;
 pub mod krawczyk;

@@ -44,14 +44,47 @@ pub struct PoissonRur {
     pub wd: ZPoly,
     /// The number of primes of the CRT.
     pub primes: usize,
-    /// The a-priori bound on the coefficients, in bits.
+    /// The bound on the coefficients the CRT passed, in bits: the smaller
+    /// of Sombra's a-priori bound and the census's a-posteriori one.
     pub bound_bits: u64,
+    /// Sombra's a-priori bound, in bits.
+    pub sombra_bits: u64,
     /// A prime modulo which `w` keeps its degree and is square-free (so `w`
     /// is square-free over Q).
     pub squarefree_prime: u64,
+    /// The census of all complex zeros behind the a-posteriori bound, when
+    /// the early stop was certified.
+    pub census: Option<RurCensus>,
+}
+
+/// The certified early stop of the RUR's CRT (docs/maths.md, "An
+/// a-posteriori bound for the RUR"): every zero of F enclosed, and the
+/// sizes it bounds.
+#[derive(Clone, Debug)]
+pub struct RurCensus {
+    /// One certified box per zero of F.
+    pub zeros: crate::roots::census::ZeroCensus,
+    /// `±R̄` exactly (its own CRT beyond Sombra's bound on it).
+    pub rbar: BigInt,
+    /// The primes of R̄'s CRT.
+    pub rbar_primes: usize,
+    /// Per coordinate v, a `b` with `∏_ξ (1 + |v(ξ)|) < 2^b`.
+    pub coordinate_bits: [u64; 3],
+    /// The a-posteriori bound on the RUR's coefficients, in bits.
+    pub bits: u64,
 }
 
 impl PoissonRur {
+    /// A bound (bits) on the coefficients of the coordinate eliminants
+    /// `Res(u − v, F)`: Sombra's bound for ℓ covers them (its `|ℓᵢ| + 1 ≥
+    /// 2`); with a census, `|R̄|·∏(1 + |v(ξ)|)` for the worst v.
+    pub fn eliminant_bound_bits(&self) -> u64 {
+        match &self.census {
+            Some(c) => c.rbar.bits() + c.coordinate_bits.iter().max().copied().unwrap_or(0),
+            None => self.sombra_bits,
+        }
+    }
+
     /// `± R̄`, the resultant of the leading forms (the leading coefficient
     /// of w).
     pub fn leading_resultant(&self) -> BigInt {
@@ -814,10 +847,18 @@ pub fn solve_square(
     let mut chosen: Option<usize> = None;
     let mut crt = CrtVec::new(4 * n + 1);
     let mut bound_bits = 0u64;
+    let mut sombra_bits = 0u64;
     let mut squarefree_prime = 0u64;
     let (mut fails, mut dim_fails) = (0usize, 0usize);
-    for k in 0..max_primes {
+    // R̄ on its own (every prime where it is defined), for the census
+    let mut rbar = CrtVec::new(1);
+    let mut census: Option<RurCensus> = None;
+    let mut census_tries = 0usize;
+    let mut next = 0usize;
+    while next < max_primes {
         crate::budget::check_now();
+        let k = next;
+        next += 1;
         let fp = Fp::new(prime31(k));
         // R̄ mod p first (a small computation): R̄ ≡ 0 means zeros at infinity
         // modulo p, and the Gröbner basis is not needed to see it
@@ -831,6 +872,7 @@ pub fn solve_square(
         };
         let r = match sys.leading_resultant_mod(&fp) {
             Ok(0) => {
+                rbar.push(&fp, &[0]);
                 if let Some(d) = zeros_at_infinity(&mut dim_fails) {
                     return d;
                 }
@@ -843,6 +885,7 @@ pub fn solve_square(
                 continue;
             }
         };
+        rbar.push(&fp, &[r]);
         let (gb, basis) = match sys.quotient_mod(&fp) {
             Ok(q) => q,
             Err(PrimeFail::TooLarge) => return decline("degree too large for the modular route"),
@@ -892,6 +935,7 @@ pub fn solve_square(
                 max_coeff(&sys.gens[2]),
             ];
             bound_bits = resultant_bound_bits(&degs, &bounds);
+            sombra_bits = bound_bits;
         }
         let mut res: Vec<u64> = f_low.iter().map(|&c| fp.mul(c, r)).collect();
         res.push(r);
@@ -900,6 +944,20 @@ pub fn solve_square(
         }
         crt.push(&fp, &res);
         crate::budget::check_size("the Poisson RUR", 4 * n + 1, crt.modulus_bits());
+        // the image looks stable: try to prove a smaller bound from it
+        // (when at least three primes remain to the a-priori bound)
+        if census.is_none()
+            && census_tries < census_limit()
+            && crt.modulus_bits() + 93 <= bound_bits + 1
+            && crt.newest_digits_stable()
+        {
+            census_tries += 1;
+            let form = forms[chosen.expect("chosen")];
+            if let Some(c) = try_census(sys, &mut crt, &mut rbar, &mut next, form, n) {
+                bound_bits = bound_bits.min(c.bits);
+                census = Some(c);
+            }
+        }
         if crt.modulus_bits() > bound_bits + 1 {
             crt.flush();
             let m = crt.modulus().clone();
@@ -916,7 +974,9 @@ pub fn solve_square(
                 wd,
                 primes: crt.primes(),
                 bound_bits,
+                sombra_bits,
                 squarefree_prime,
+                census,
             });
         }
         if fails > 16 + k / 2 {
@@ -924,6 +984,81 @@ pub fn solve_square(
         }
     }
     decline("the prime limit was reached")
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Tests: the RUR from Sombra's bound alone (no census).
+    pub(crate) static NO_CENSUS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// How many times the census is tried (three; none in tests that ask
+/// for the a-priori route).
+fn census_limit() -> usize {
+    #[cfg(test)]
+    if NO_CENSUS.with(|c| c.get()) {
+        return 0;
+    }
+    3
+}
+
+/// The symmetric images of the CRT's values (after a flush).
+fn symmetric_values(crt: &mut CrtVec) -> Vec<BigInt> {
+    crt.flush();
+    let m = crt.modulus().clone();
+    crt.values().iter().map(|x| symmetric_mod(x, &m)).collect()
+}
+
+/// The candidate `(w, V)` from the current image, its census, and R̄
+/// exactly (more primes for R̄ alone, from `next` on, until its CRT passes
+/// Sombra's bound on it); `None` when the census does not certify all `n`
+/// zeros.
+fn try_census(
+    sys: &SquareSystem,
+    crt: &mut CrtVec,
+    rbar: &mut CrtVec,
+    next: &mut usize,
+    form: [i64; 3],
+    n: usize,
+) -> Option<RurCensus> {
+    let vals = symmetric_values(crt);
+    let w = ZPoly::new(vals[..=n].to_vec());
+    let v: [ZPoly; 3] =
+        std::array::from_fn(|j| ZPoly::new(vals[n + 1 + j * n..n + 1 + (j + 1) * n].to_vec()));
+    if w.degree() != Some(n) {
+        return None;
+    }
+    let zeros = crate::roots::census::census(&sys.gens, &w, &v)?;
+    // the census proves n distinct zeros: exactly the Bézout number
+    if zeros.boxes.len() != n {
+        return None;
+    }
+    let target = sys.leading_resultant_bound_bits();
+    let mut misses = 0usize;
+    while rbar.modulus_bits() <= target + 1 {
+        crate::budget::check_now();
+        let fp = Fp::new(prime31(*next));
+        *next += 1;
+        match sys.leading_resultant_mod(&fp) {
+            Ok(r) => rbar.push(&fp, &[r]),
+            Err(_) => {
+                misses += 1;
+                if misses > 16 {
+                    return None;
+                }
+            }
+        }
+    }
+    let r = symmetric_values(rbar).pop().expect("one value");
+    let coordinate_bits = zeros.coordinate_bits()?;
+    let bits = zeros.rur_bits(form, r.bits())?;
+    Some(RurCensus {
+        zeros,
+        rbar_primes: rbar.primes(),
+        rbar: r,
+        coordinate_bits,
+        bits,
+    })
 }
 
 /// The residues of a block of polynomials' coefficients (in order, as
@@ -1008,7 +1143,7 @@ pub fn coordinate_eliminants(rur: &PoissonRur, max_primes: usize) -> Result<[ZPo
             res.extend(chi.iter().map(|&c| fp.mul(c, r)));
         }
         crt.push(&fp, &res);
-        if crt.modulus_bits() > rur.bound_bits + 1 {
+        if crt.modulus_bits() > rur.eliminant_bound_bits() + 1 {
             crt.flush();
             let m = crt.modulus().clone();
             let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();

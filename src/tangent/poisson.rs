@@ -459,10 +459,15 @@ fn finish(
     let (sr, kr) = reduce_mod_ellipsoid(s, e).to_primitive_z();
     let degree = sz.total_degree().unwrap_or(0);
     let nf = an.critical.degree().unwrap_or(0);
-    an.coordinate_mahler_bits = coordinate_mahler_bits(&an.rur, &sz, bits, nf, sys.bezout())?;
-    an.value_direct_bits = an
-        .coordinate_mahler_bits
-        .map(|m| direct_value_bits(&an.rur, &sz, nf, &m));
+    an.value_direct_bits = match census_value_bits(&an.rur, &sz) {
+        Some(b) => Some(b),
+        None => {
+            an.coordinate_mahler_bits =
+                coordinate_mahler_bits(&an.rur, &sz, bits, nf, sys.bezout())?;
+            an.coordinate_mahler_bits
+                .map(|m| direct_value_bits(&an.rur, &sz, nf, &m))
+        }
+    };
     let map = ValueMap {
         degree,
         eval: &sr,
@@ -508,6 +513,21 @@ pub(crate) fn direct_value_bits(rur: &PoissonRur, h: &ZMPoly, nf: usize, m: &[u6
     let d = h.total_degree().unwrap_or(0) as u64;
     let nf = nf as u64;
     d * rur.leading_resultant().bits() + nf + nf * l1_bits(h) + d * m.iter().sum::<u64>()
+}
+
+/// With the RUR's census of all zeros of F: the bound (bits) on the
+/// coefficients of `A = R̄^d·∏(u − S′(ξ))` over the critical points,
+/// `d·bits(R̄) + b` with `∏_ξ (1 + |S′(ξ)|) < 2^b` over all zeros (S′
+/// enclosed on every box): a coefficient of `∏(u − a_ξ)` is at most
+/// `∏(1 + |a_ξ|)`, and the factors of the zeros left out are ≥ 1.
+fn census_value_bits(rur: &PoissonRur, h: &ZMPoly) -> Option<u64> {
+    #[cfg(test)]
+    if GENERAL_BOUND_ONLY.with(|c| c.get()) {
+        return None;
+    }
+    let c = rur.census.as_ref()?;
+    let d = h.total_degree().unwrap_or(0) as u64;
+    Some(d * c.rbar.bits() + c.zeros.polynomial_bits(h)?)
 }
 
 /// The coordinate bounds of [`direct_value_bits`], when they promise to

@@ -314,6 +314,111 @@ fn the_direct_bound_gives_the_same_judging_polynomial() {
     }
 }
 
+/// The census route (an a-posteriori bound from certified boxes around
+/// all complex zeros) and Sombra's a-priori bound give the same RUR and
+/// the same D(u); the census's bound holds every coefficient it was used
+/// for, its R̄ is w's leading coefficient, it has one box per zero, and it
+/// saves primes.
+#[test]
+fn the_census_bound_gives_the_same_rur_and_judging_polynomial() {
+    use crate::roots::poisson::NO_CENSUS;
+    for (e, s) in [
+        (
+            "18*x*x - 12*x*y + 10*x*z + 23*y*y - 24*y*z + 14*z*z - 2*x + 3*y + 2*z - 27",
+            "x^4 + y^4 + z^4 - x*y - 2",
+        ),
+        (
+            "x^2 + y^2 + z^2 - 4",
+            "x^4 + 2x^3*y - y^3*z + 3x*z^3 - 2y^2*z^2 + x^2 - y*z + z - 2",
+        ),
+        (
+            "x^2 + 2*y^2 + 3*z^2 - 7",
+            "x^5 - 3x^2*y^3 + y*z^4 - 2x*y*z + z^3 - x + 4",
+        ),
+    ] {
+        let (ell, sp) = (ellipsoid(e), parse_poly(s).unwrap());
+        let with = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
+        NO_CENSUS.with(|c| c.set(true));
+        let without = crate::tangent::poisson::analyze(&ell, &sp, true);
+        NO_CENSUS.with(|c| c.set(false));
+        let without = without.unwrap();
+        assert!(without.rur.census.is_none());
+        let c = with.rur.census.as_ref().expect("the census certifies");
+        assert_eq!(with.rur.w, without.rur.w, "{s} on {e}");
+        assert_eq!(with.rur.v, without.rur.v, "{s} on {e}");
+        assert_eq!(with.judging, without.judging, "{s} on {e}");
+        assert_eq!(c.zeros.boxes.len(), with.rur.w.degree().unwrap());
+        assert_eq!(c.rbar.abs(), with.rur.w.lc().abs());
+        let top = std::iter::once(&with.rur.w)
+            .chain(with.rur.v.iter())
+            .flat_map(|p| p.coeffs())
+            .map(|x| x.bits())
+            .max()
+            .unwrap();
+        assert!(
+            top <= c.bits && c.bits == with.rur.bound_bits,
+            "{top} vs {}",
+            c.bits
+        );
+        assert!(with.rur.primes < without.rur.primes, "{s} on {e}");
+        // the eliminant bound from the census holds the exact eliminants
+        let elims = crate::roots::poisson::coordinate_eliminants(&without.rur, 5000).unwrap();
+        for (v, p) in elims.iter().enumerate() {
+            let bits = p.coeffs().iter().map(|x| x.bits()).max().unwrap();
+            assert!(
+                bits <= c.rbar.bits() + c.coordinate_bits[v],
+                "{s} on {e}: v = {v}"
+            );
+        }
+        // D(u)'s bound from the census holds D(u) before the scaling
+        assert!(with.value_direct_bits.unwrap() < without.value_direct_bits.unwrap_or(u64::MAX));
+    }
+}
+
+/// The census proves statements about F, never about the candidate: from
+/// a wrong candidate it still encloses the true zeros (every real zero of
+/// the exact RUR lies in one of its boxes) or declines; at a double zero
+/// it declines.
+#[test]
+fn the_census_is_about_the_system_not_the_candidate() {
+    use crate::roots::census::census;
+    let gens = [
+        "x^2 + 2y^2 + 3z^2 - 6",
+        "x^3 - 2x*y + z - 1",
+        "y^3 + x*z - 2",
+    ]
+    .map(zpoly);
+    let mut sys = SquareSystem::new(gens.clone()).unwrap();
+    let rur = solve_square(&mut sys, &FORMS, 5000).unwrap();
+    let mut wrong = rur.w.coeffs().to_vec();
+    wrong[0] += BigInt::from(1);
+    let wrong = crate::poly::ZPoly::new(wrong);
+    for w in [&rur.w, &wrong] {
+        let Some(c) = census(&gens, w, &rur.v) else {
+            continue;
+        };
+        assert_eq!(c.boxes.len(), 18);
+        for t in RealAlg::roots_of(&rur.w) {
+            let mut t = t;
+            t.refine_to(&Q::new(BigInt::one(), BigInt::one() << 80usize));
+            let p = rur.point_at(&t.to_rational_approx(80)).unwrap();
+            let inside = c.boxes.iter().any(|b| {
+                (0..3).all(|k| {
+                    let x = crate::number::float::nearest_double(&p[k]).unwrap();
+                    (x - b.centre[k].re).abs() <= b.half * 1.001 && b.centre[k].im.abs() <= b.half
+                })
+            });
+            assert!(inside, "a real zero outside every box");
+        }
+    }
+    // a double zero: x² = 0, y = 1, z = 2 (N = 2 with multiplicity)
+    let gens = ["x^2", "y - 1", "z - 2"].map(zpoly);
+    let zp = |v: &[i64]| crate::poly::ZPoly::new(v.iter().map(|&c| BigInt::from(c)).collect());
+    let w = zp(&[0, 0, 1]);
+    let v = [zp(&[0, 0]), zp(&[0, 2]), zp(&[0, 4])];
+    assert!(census(&gens, &w, &v).is_none());
+}
+
 /// A degenerate critical point (the critical ideal is not radical: 12
 /// points, 14 with multiplicity) makes every square subsystem non-radical:
 /// the route declines, and the exact route answers.

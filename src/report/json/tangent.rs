@@ -230,7 +230,16 @@ fn method_json(m: &Analysis) -> Value {
                 "critical_factor": upoly_string(&an.critical, T),
                 "real_critical_points": an.real_points.iter().map(|a| alg_json_in(a, T)).collect::<Vec<_>>(),
                 "primes": {"rur": r.primes, "judging": an.value_primes},
-                "bound_bits": {"rur": r.bound_bits, "judging": an.value_bound_bits},
+                "bound_bits": {"rur": r.bound_bits, "rur_sombra": r.sombra_bits, "judging": an.value_bound_bits},
+                "rur_census": r.census.as_ref().map(|c| json!({
+                    "leading_resultant_primes": c.rbar_primes,
+                    "coordinate_bits": c.coordinate_bits,
+                    "bound_bits": c.bits,
+                    "boxes": c.zeros.boxes.iter().map(|b| json!({
+                        "centre": b.centre.iter().map(|z| [z.re, z.im]).collect::<Vec<_>>(),
+                        "half_width": b.half,
+                    })).collect::<Vec<_>>(),
+                })),
                 "coordinate_mahler_bits": an.coordinate_mahler_bits,
                 "judging_direct_bits": an.value_direct_bits,
                 "squarefree_prime": r.squarefree_prime,
@@ -239,9 +248,9 @@ fn method_json(m: &Analysis) -> Value {
                     "sign": sign,
                     "interval": [crate::number::fmt_q(lo), crate::number::fmt_q(hi)],
                 })).collect::<Vec<_>>(),
-                "soundness": "rur_poly w(t) = Res(t − ℓ, F) and the numerators V = −∂_ε Res(t − ℓ − ε·(x, y, z), F) are resultants of F = square_system (integer polynomials in its coefficients, by the Poisson formula ± leading_resultant · charpoly(ℓ) and the Kronecker numerators on Q[x, y, z]/F); their residues modulo primes where the quotient has dimension zeros = d1·d2·d3 are the residues computed there, and the CRT modulus exceeds twice Sombra's bound (bound_bits.rur), so they are exact; w is square-free modulo squarefree_prime, so the zeros of F are exactly (x, y, z) = rur_coordinates(t) / w′(t) over the roots t of w, all simple",
+                "soundness": "rur_poly w(t) = Res(t − ℓ, F) and the numerators V = −∂_ε Res(t − ℓ − ε·(x, y, z), F) are resultants of F = square_system (integer polynomials in its coefficients, by the Poisson formula ± leading_resultant · charpoly(ℓ) and the Kronecker numerators on Q[x, y, z]/F); their residues modulo primes where the quotient has dimension zeros = d1·d2·d3 are the residues computed there, and the CRT modulus exceeds twice bound_bits.rur, so they are exact; bound_bits.rur is Sombra's bound (bound_bits.rur_sombra) or, when rur_census is given, the a-posteriori bound |leading_resultant|·∏(1 + |ℓ(ξ)|)·Σ|v(ξ)| over all zeros ξ: each of rur_census.boxes (centre ± half_width in the real and imaginary part of each coordinate) is proved by the Krawczyk test in complex ball arithmetic to hold exactly one zero of F, they are pairwise disjoint, and there are zeros = d1·d2·d3 of them, the number of zeros with multiplicity (leading_resultant ≠ 0: none at infinity), so they hold all zeros and |ℓ|, |v| are bounded on them (leading_resultant exactly, by its own CRT over rur_census.leading_resultant_primes primes beyond Sombra's bound on it); w is square-free modulo squarefree_prime, so the zeros of F are exactly (x, y, z) = rur_coordinates(t) / w′(t) over the roots t of w, all simple",
                 "extras": "a zero of F with m = ∇S × ∇E ≠ 0 has m ∥ n, hence n·∇E = n·∇S = 0; extra_factor = gcd(w, (n·∇E)(x(t), y(t), z(t))·w′(t)) holds those zeros, and n·m does not vanish at any of them (modulo extras_prime), so none is critical: the critical points are the roots of critical_factor = w / extra_factor",
-                "judging": "judging_poly is the primitive part (scaled to S) of leading_resultant^d · ∏ (u − S′(ξ)) over the critical points ξ, an integer polynomial (Gauss's lemma on Res(u − S′, F)) whose residues are the characteristic polynomials of S′(ξ(t)) modulo critical_factor; the CRT modulus exceeds the bound 2^(N + bound_bits.judging)·√(zeros + 1) (Landau, Sombra), or, when judging_direct_bits is given and smaller, twice 2^judging_direct_bits = |leading_resultant|^d·2^N·‖S′‖₁^N·2^(d·Σ coordinate_mahler_bits) (N critical points, d = deg S′): |S′(ξ)| ≤ ‖S′‖₁·∏_v max(1, |v(ξ)|)^d, and ∏ over all zeros of max(1, |v(ξ)|) = M(P_v)/|leading_resultant| ≤ ‖P_v‖₂/|leading_resultant| ≤ 2^coordinate_mahler_bits[v] (Landau's inequality) for the eliminants P_v = Res(u − v, F), computed exactly beyond bound_bits.rur like w",
+                "judging": "judging_poly is the primitive part (scaled to S) of leading_resultant^d · ∏ (u − S′(ξ)) over the critical points ξ, an integer polynomial (Gauss's lemma on Res(u − S′, F)) whose residues are the characteristic polynomials of S′(ξ(t)) modulo critical_factor; the CRT modulus exceeds the bound 2^(N + bound_bits.judging)·√(zeros + 1) (Landau, Sombra), or, when judging_direct_bits is given and smaller, twice 2^judging_direct_bits = |leading_resultant|^d·2^N·‖S′‖₁^N·2^(d·Σ coordinate_mahler_bits) (N critical points, d = deg S′): |S′(ξ)| ≤ ‖S′‖₁·∏_v max(1, |v(ξ)|)^d, and ∏ over all zeros of max(1, |v(ξ)|) = M(P_v)/|leading_resultant| ≤ ‖P_v‖₂/|leading_resultant| ≤ 2^coordinate_mahler_bits[v] (Landau's inequality) for the eliminants P_v = Res(u − v, F), computed exactly beyond bound_bits.rur like w; with rur_census, judging_direct_bits = d·bits(leading_resultant) + b with ∏(1 + |S′(ξ)|) < 2^b over the boxes (S′ enclosed on each), which bounds every coefficient of leading_resultant^d·∏(u − S′(ξ))",
                 "resultant_elimination": Value::Null,
             })
         }

@@ -171,13 +171,26 @@ pub fn tangent_human(r: &TangentReport) -> String {
                     "RUR in t = {}·x + {}·y + {}·z",
                     an.rur.form[0], an.rur.form[1], an.rur.form[2]
                 );
+                let rur_bound = match &an.rur.census {
+                    Some(c) => format!(
+                        "{} bits (a-posteriori: all {} complex zeros in certified boxes; Sombra's was {})",
+                        c.bits,
+                        c.zeros.boxes.len(),
+                        an.rur.sombra_bits
+                    ),
+                    None => format!("{} bits (Sombra)", an.rur.bound_bits),
+                };
                 if an.judging.is_some() {
-                    let judging = match an.value_direct_bits {
-                        Some(d) => format!(
-                            "{} and {} bits (Sombra; the second replaced by {d} bits from the Mahler measures of the coordinate eliminants)",
-                            an.rur.bound_bits, an.value_bound_bits
+                    let judging = match (an.value_direct_bits, &an.rur.census) {
+                        (Some(d), Some(_)) => format!(
+                            "{rur_bound} and {d} bits (S on the boxes; Sombra's was {})",
+                            an.value_bound_bits
                         ),
-                        None => format!("{} and {} bits (Sombra)", an.rur.bound_bits, an.value_bound_bits),
+                        (Some(d), None) => format!(
+                            "{rur_bound} and {} bits (Sombra; replaced by {d} bits from the Mahler measures of the coordinate eliminants)",
+                            an.value_bound_bits
+                        ),
+                        (None, _) => format!("{rur_bound} and {} bits (Sombra)", an.value_bound_bits),
                     };
                     format!(
                         "{rur} and D(u) are resultants, computed modulo {} and {} primes beyond bounds of {judging} (exact, no verification needed)",
@@ -185,8 +198,8 @@ pub fn tangent_human(r: &TangentReport) -> String {
                     )
                 } else {
                     format!(
-                        "{rur}, a resultant computed modulo {} primes beyond Sombra's bound of {} bits (exact, no verification needed); signs of S proven on enclosures of the real critical points (value_enclosures)",
-                        an.rur.primes, an.rur.bound_bits
+                        "{rur}, a resultant computed modulo {} primes beyond a bound of {rur_bound} (exact, no verification needed); signs of S proven on enclosures of the real critical points (value_enclosures)",
+                        an.rur.primes
                     )
                 }
             }
