@@ -21,15 +21,7 @@ pub fn double_value(x: f64) -> Option<Q> {
     if !x.is_finite() {
         return None;
     }
-    let bits = x.to_bits();
-    let neg = bits >> 63 == 1;
-    let exp = ((bits >> 52) & 0x7ff) as i64;
-    let frac = bits & ((1u64 << 52) - 1);
-    let (m, e) = if exp == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1u64 << 52), exp - 1075)
-    };
+    let (neg, m, e) = double_parts(x);
     let m = if neg {
         -BigInt::from(m)
     } else {
@@ -40,6 +32,19 @@ pub fn double_value(x: f64) -> Option<Q> {
     } else {
         super::dyadic(m, (-e) as usize)
     })
+}
+
+/// A finite double as `(negative, m, e)` with `|x| = m·2^e` exactly.
+pub fn double_parts(x: f64) -> (bool, u64, i64) {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (m, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    };
+    (bits >> 63 == 1, m, e)
 }
 
 /// The double nearest to `x`, ties to even (IEEE-754 round to nearest);

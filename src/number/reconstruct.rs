@@ -364,6 +364,13 @@ impl CrtVec {
         self.modulus *= BigInt::from(p);
     }
 
+    /// The values in the symmetric range `(−M/2, M/2]` (flushes first).
+    pub fn symmetric_values(&mut self) -> Vec<BigInt> {
+        self.flush();
+        let m = &self.modulus;
+        self.values.iter().map(|x| symmetric_mod(x, m)).collect()
+    }
+
     /// True when the newest prime left every value's symmetric
     /// representative as it was: each newest mixed-radix digit is 0 (a
     /// value in `[0, M/2)`) or `p − 1` (a negative value).  A heuristic for

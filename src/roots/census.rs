@@ -31,7 +31,7 @@
 //! and a failure (`None`) leaves the caller on its a-priori route.
 
 use super::krawczyk::System;
-use super::krawczyk_filter::{BallArith, BallSystem};
+use super::krawczyk_filter::{BallArith, BallSystem, monomial, powers};
 use crate::number::filter::{BallR, SignRing};
 use crate::poly::{ZMPoly, ZPoly};
 use num_bigint::BigUint;
@@ -175,14 +175,14 @@ impl CBall {
 /// imaginary part of each coordinate) holds exactly one zero of the
 /// system.
 #[derive(Clone, Debug)]
-pub struct ZeroBox {
+pub struct CensusBox {
     /// The centre.
     pub centre: [C64; 3],
     /// The half-width.
     pub half: f64,
 }
 
-impl ZeroBox {
+impl CensusBox {
     /// The box as complex balls.
     pub(crate) fn balls(&self) -> [CBall; 3] {
         self.centre.map(|z| CBall::square(z, self.half))
@@ -190,7 +190,7 @@ impl ZeroBox {
 
     /// True when the two boxes are proved disjoint (some coordinate's real
     /// or imaginary parts are further apart than the half-widths allow).
-    fn disjoint(&self, o: &ZeroBox) -> bool {
+    fn disjoint(&self, o: &CensusBox) -> bool {
         let gap = (self.half + o.half) * INFL;
         // |a − b| rounded is at least (1 − 2^-53)·|a − b|
         let far = |a: f64, b: f64| (a - b).abs() * (1.0 - 1.0 / 4_503_599_627_370_496.0) > gap;
@@ -205,7 +205,7 @@ impl ZeroBox {
 #[derive(Clone, Debug)]
 pub struct ZeroCensus {
     /// One box per zero, pairwise disjoint.
-    pub boxes: Vec<ZeroBox>,
+    pub boxes: Vec<CensusBox>,
 }
 
 impl ZeroCensus {
@@ -262,24 +262,11 @@ impl ZeroCensus {
             .max()
             .unwrap_or(0);
         self.product_bits(|x| {
-            let pw: Vec<Vec<CBall>> = x
-                .iter()
-                .map(|b| {
-                    let mut v = vec![CBall::of_real(BallR::input(1.0, 0))];
-                    for k in 1..=deg as usize {
-                        let next = v[k - 1].times(b);
-                        v.push(next);
-                    }
-                    v
-                })
-                .collect();
+            let pw = powers(x, deg as usize);
             terms
                 .iter()
                 .fold(CBall::of_real(BallR::input(0.0, 0)), |acc, (e, c)| {
-                    let m = pw[0][e[0] as usize]
-                        .times(&pw[1][e[1] as usize])
-                        .times(&pw[2][e[2] as usize]);
-                    acc.plus(&CBall::of_real(*c).times(&m))
+                    acc.plus(&CBall::of_real(*c).times(&monomial(&pw, e)))
                 })
         })
     }
@@ -308,14 +295,7 @@ fn split_double(a: f64) -> Option<(BigUint, i64)> {
     if !(a.is_finite() && a > 0.0) {
         return None;
     }
-    let bits = a.to_bits();
-    let raw_exp = ((bits >> 52) & 0x7ff) as i64;
-    let frac = bits & ((1u64 << 52) - 1);
-    let (m, e) = if raw_exp == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1u64 << 52), raw_exp - 1075)
-    };
+    let (_, m, e) = crate::number::float::double_parts(a);
     Some((BigUint::from(m), e))
 }
 
@@ -328,7 +308,7 @@ pub fn census(gens: &[ZMPoly; 3], w: &ZPoly, v: &[ZPoly; 3]) -> Option<ZeroCensu
     let taus = aberth(w)?;
     let wd = Scaled::new(&w.derivative());
     let vs: Vec<Scaled> = v.iter().map(Scaled::new).collect();
-    let mut boxes: Vec<ZeroBox> = Vec::with_capacity(n);
+    let mut boxes: Vec<CensusBox> = Vec::with_capacity(n);
     for t in taus {
         crate::budget::check();
         let start: [C64; 3] = std::array::from_fn(|k| ratio_at(&vs[k], &wd, t, n - 1));
@@ -350,7 +330,7 @@ pub fn census(gens: &[ZMPoly; 3], w: &ZPoly, v: &[ZPoly; 3]) -> Option<ZeroCensu
 /// Newton's iteration on F from `start` in complex doubles, then the
 /// Krawczyk test on squares of relative half-width `2^-40`, `2^-32`,
 /// `2^-24` around the result.
-fn certify_complex(sys: &BallSystem, start: [C64; 3]) -> Option<ZeroBox> {
+fn certify_complex(sys: &BallSystem, start: [C64; 3]) -> Option<CensusBox> {
     let mut c = start;
     let mut close = false;
     for _ in 0..40 {
@@ -380,7 +360,7 @@ fn certify_complex(sys: &BallSystem, start: [C64; 3]) -> Option<ZeroBox> {
     for e in [40, 32, 24] {
         let r = size * 2f64.powi(-e);
         if krawczyk(sys, &c, r, &y, &v[..3]) {
-            return Some(ZeroBox { centre: c, half: r });
+            return Some(CensusBox { centre: c, half: r });
         }
     }
     None

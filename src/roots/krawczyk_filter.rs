@@ -248,7 +248,7 @@ impl BallArith for BallR {
 }
 
 /// The powers `x_v^0 … x_v^deg` of each coordinate.
-fn powers<T: BallArith>(x: &[T; 3], deg: usize) -> Vec<Vec<T>> {
+pub(crate) fn powers<T: BallArith>(x: &[T; 3], deg: usize) -> Vec<Vec<T>> {
     x.iter()
         .map(|b| {
             let mut v = vec![T::of_real(BallR::input(1.0, 0))];
@@ -262,7 +262,7 @@ fn powers<T: BallArith>(x: &[T; 3], deg: usize) -> Vec<Vec<T>> {
 }
 
 /// `x^a y^b z^c` from the powers.
-fn monomial<T: BallArith>(pw: &[Vec<T>], m: &[u32; 3]) -> T {
+pub(crate) fn monomial<T: BallArith>(pw: &[Vec<T>], m: &[u32; 3]) -> T {
     pw[0][m[0] as usize]
         .times(&pw[1][m[1] as usize])
         .times(&pw[2][m[2] as usize])

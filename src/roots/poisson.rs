@@ -26,7 +26,7 @@ use crate::elim::f4::{
 use crate::elim::poisson::{PrimeFail, SquareSystem, max_coeff, resultant_bound_bits};
 use crate::number::Q;
 use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
-use crate::number::reconstruct::{BlockResidues, CrtVec, Fp, prime31, symmetric_mod};
+use crate::number::reconstruct::{BlockResidues, CrtVec, Fp, prime31};
 use crate::poly::{ZMPoly, ZPoly};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -959,13 +959,7 @@ pub fn solve_square(
             }
         }
         if crt.modulus_bits() > bound_bits + 1 {
-            crt.flush();
-            let m = crt.modulus().clone();
-            let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();
-            let w = ZPoly::new(vals[..=n].to_vec());
-            let v: [ZPoly; 3] = std::array::from_fn(|j| {
-                ZPoly::new(vals[n + 1 + j * n..n + 1 + (j + 1) * n].to_vec())
-            });
+            let (w, v) = rur_image(&mut crt, n);
             let wd = w.derivative();
             return Ok(PoissonRur {
                 form: forms[chosen.expect("chosen")],
@@ -1002,11 +996,13 @@ fn census_limit() -> usize {
     3
 }
 
-/// The symmetric images of the CRT's values (after a flush).
-fn symmetric_values(crt: &mut CrtVec) -> Vec<BigInt> {
-    crt.flush();
-    let m = crt.modulus().clone();
-    crt.values().iter().map(|x| symmetric_mod(x, &m)).collect()
+/// The RUR `(w, V)` the CRT's values stand for (symmetric images): w's
+/// `n + 1` coefficients, then the `n` of each numerator.
+fn rur_image(crt: &mut CrtVec, n: usize) -> (ZPoly, [ZPoly; 3]) {
+    let vals = crt.symmetric_values();
+    let w = ZPoly::new(vals[..=n].to_vec());
+    let v = std::array::from_fn(|j| ZPoly::new(vals[n + 1 + j * n..n + 1 + (j + 1) * n].to_vec()));
+    (w, v)
 }
 
 /// The candidate `(w, V)` from the current image, its census, and R̄
@@ -1021,10 +1017,7 @@ fn try_census(
     form: [i64; 3],
     n: usize,
 ) -> Option<RurCensus> {
-    let vals = symmetric_values(crt);
-    let w = ZPoly::new(vals[..=n].to_vec());
-    let v: [ZPoly; 3] =
-        std::array::from_fn(|j| ZPoly::new(vals[n + 1 + j * n..n + 1 + (j + 1) * n].to_vec()));
+    let (w, v) = rur_image(crt, n);
     if w.degree() != Some(n) {
         return None;
     }
@@ -1049,7 +1042,7 @@ fn try_census(
             }
         }
     }
-    let r = symmetric_values(rbar).pop().expect("one value");
+    let r = rbar.symmetric_values().pop().expect("one value");
     let coordinate_bits = zeros.coordinate_bits()?;
     let bits = zeros.rur_bits(form, r.bits())?;
     Some(RurCensus {
@@ -1144,9 +1137,7 @@ pub fn coordinate_eliminants(rur: &PoissonRur, max_primes: usize) -> Result<[ZPo
         }
         crt.push(&fp, &res);
         if crt.modulus_bits() > rur.eliminant_bound_bits() + 1 {
-            crt.flush();
-            let m = crt.modulus().clone();
-            let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();
+            let vals = crt.symmetric_values();
             return Ok(std::array::from_fn(|v| {
                 ZPoly::new(vals[v * (n + 1)..(v + 1) * (n + 1)].to_vec())
             }));
@@ -1255,10 +1246,7 @@ pub fn value_polynomial(
         crt.push(&fp, &res);
         crate::budget::check_size("the value polynomial", nf + 1, crt.modulus_bits());
         if crt.modulus_bits() > target + 1 {
-            crt.flush();
-            let m = crt.modulus().clone();
-            let vals: Vec<BigInt> = crt.values().iter().map(|x| symmetric_mod(x, &m)).collect();
-            return Ok((ZPoly::new(vals), crt.primes()));
+            return Ok((ZPoly::new(crt.symmetric_values()), crt.primes()));
         }
     }
     Err(Declined(
@@ -1300,11 +1288,7 @@ pub(crate) fn value_resultant(
     for j in 0..MAX_VALUE_PRIMES {
         crate::budget::check_now();
         if crt.modulus_bits() > bound + 1 {
-            crt.flush();
-            let m = crt.modulus().clone();
-            return Some(ZPoly::new(
-                crt.values().iter().map(|x| symmetric_mod(x, &m)).collect(),
-            ));
+            return Some(ZPoly::new(crt.symmetric_values()));
         }
         let fp = Fp::new(prime31(j));
         let all = blocks.residues(j, &fp);
