@@ -173,6 +173,27 @@ impl RealAlg {
         }
     }
 
+    /// Narrows the isolating interval to `(a, b)` when `lo < a < b < hi`
+    /// and the defining polynomial has non-zero values of opposite signs at
+    /// a and b (then `(a, b)` holds the one root of `(lo, hi)`); returns
+    /// whether it did.  The caller's guess of where the root is only
+    /// decides whether the narrowing happens.
+    pub(crate) fn narrow_within(&mut self, a: &Q, b: &Q) -> bool {
+        let Repr::Root { poly, lo, hi } = &mut self.repr else {
+            return false;
+        };
+        if !(&*lo < a && a < b && b < &*hi) {
+            return false;
+        }
+        let sa = poly.sign_at(a);
+        if sa == 0 || poly.sign_at(b) != -sa {
+            return false;
+        }
+        *lo = a.clone();
+        *hi = b.clone();
+        true
+    }
+
     /// Refines until the interval is at most `width` wide.
     pub fn refine_to(&mut self, width: &Q) {
         if let Repr::Root { poly, lo, hi } = &mut self.repr {
@@ -631,6 +652,21 @@ pub fn has_root_in_open(q: &ZPoly, a: &Q, b: &Q) -> bool {
 mod tests {
     use super::*;
     use crate::number::q;
+
+    /// Narrowing needs both ends inside and a sign change between them.
+    #[test]
+    fn narrowing_keeps_the_root() {
+        let mut s2 = RealAlg::roots_of(&ZPoly::from_i64s(&[-2, 0, 1]))[1].clone();
+        let (lo, hi) = s2.interval();
+        assert!(lo < q(7, 5) && q(3, 2) < hi, "{lo} {hi}");
+        // no sign change on (3/2, 8/5), and (0, 3/2) leaves the interval
+        assert!(!s2.narrow_within(&q(3, 2), &q(8, 5)));
+        assert!(!s2.narrow_within(&(&lo - &q(1, 8)), &q(3, 2)));
+        assert!(s2.narrow_within(&q(7, 5), &q(3, 2)));
+        assert_eq!(s2.interval(), (q(7, 5), q(3, 2)));
+        assert_eq!(s2.cmp_rational(&q(141, 100)), Ordering::Greater);
+        assert_eq!(s2.cmp_rational(&q(142, 100)), Ordering::Less);
+    }
 
     #[test]
     fn compare_and_sign() {
