@@ -8,6 +8,7 @@
 //! exact division, which is all the fraction-free algorithms need.
 
 pub mod extension;
+pub(crate) mod horner;
 pub mod mpoly;
 pub mod parse;
 mod public;

@@ -320,6 +320,9 @@ pub struct DyadicSigner<'a> {
     width: usize,
     /// `B`: every `|c_i| < 2^B`.
     coeff_bits: u64,
+    /// The coefficients' top bits for [`DyadicSigner::float_value`], made
+    /// on first use.
+    tops: std::sync::OnceLock<super::horner::FloatCoeffs>,
 }
 
 impl<'a> DyadicSigner<'a> {
@@ -349,7 +352,23 @@ impl<'a> DyadicSigner<'a> {
             limbs,
             width,
             coeff_bits,
+            tops: std::sync::OnceLock::new(),
         }
+    }
+
+    /// `p(m/2^k)` in floating point with `prec` bits per step and a
+    /// rigorous error bound ([`horner_float`](super::horner::horner_float)),
+    /// with `p′` when `derivative`.
+    pub(crate) fn float_value(
+        &self,
+        m: &BigInt,
+        k: u64,
+        prec: u64,
+        derivative: bool,
+    ) -> Option<super::horner::FloatValue> {
+        let c = self.p.coeffs();
+        let tops = self.tops.get_or_init(|| super::horner::FloatCoeffs::new(c));
+        super::horner::horner_float(c, tops, m, k, prec, derivative)
     }
 
     /// Exact sign (-1, 0, 1) of `p(m / 2^k)`.  `O(n)` operations on numbers
@@ -361,6 +380,9 @@ impl<'a> DyadicSigner<'a> {
         }
         crate::budget::check();
         if let Some(s) = self.sign_at_fixed(m, k) {
+            return s;
+        }
+        if let Some(s) = self.sign_at_truncated(m, k) {
             return s;
         }
         let long = c.len() > SHORT;
@@ -377,6 +399,26 @@ impl<'a> DyadicSigner<'a> {
             }
         }
         sign_z(&acc)
+    }
+
+    /// The sign from [`horner_float`](super::horner::horner_float) passes
+    /// keeping `k + 128` and then `2k + 384` bits per step (plus
+    /// `bits(n)`), when one decides and the exact pass's numbers (`n·max(bits(m),
+    /// k)` bits beyond the coefficients) would be more than twice as long:
+    /// away from clusters of roots, a few hundred bits instead of `n·k`.
+    fn sign_at_truncated(&self, m: &BigInt, k: u64) -> Option<i32> {
+        let n = (self.p.coeffs().len() - 1) as u64;
+        let exact = n.checked_mul(m.bits().max(k))?;
+        let log_n = 64 - u64::from(n.leading_zeros());
+        for prec in [k + 128 + log_n, 2 * k + 384 + log_n] {
+            if prec.checked_mul(2)? > exact {
+                return None;
+            }
+            if let Some(s) = self.float_value(m, k, prec, false)?.sign() {
+                return Some(s);
+            }
+        }
+        None
     }
 
     /// The [`Fixed`] path, when the headroom bound allows it.

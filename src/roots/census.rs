@@ -188,6 +188,20 @@ impl CensusBox {
         self.centre.map(|z| CBall::square(z, self.half))
     }
 
+    /// True when the centre is real: the box is then its own complex
+    /// conjugate, so its unique zero (F has real coefficients, so the
+    /// conjugate of a zero is a zero) is real.
+    pub fn is_real(&self) -> bool {
+        self.centre.iter().all(|z| z.im == 0.0)
+    }
+
+    /// True when the box misses the real space (some coordinate's
+    /// imaginary part is further from 0 than the half-width; doubles
+    /// compared exactly), so its zero is not real.
+    pub fn misses_real_space(&self) -> bool {
+        self.centre.iter().any(|z| z.im.abs() > self.half)
+    }
+
     /// True when the two boxes are proved disjoint (some coordinate's real
     /// or imaginary parts are further apart than the half-widths allow).
     fn disjoint(&self, o: &CensusBox) -> bool {
@@ -329,7 +343,8 @@ pub fn census(gens: &[ZMPoly; 3], w: &ZPoly, v: &[ZPoly; 3]) -> Option<ZeroCensu
 
 /// Newton's iteration on F from `start` in complex doubles, then the
 /// Krawczyk test on squares of relative half-width `2^-40`, `2^-32`,
-/// `2^-24` around the result.
+/// `2^-24` around the result (around its real part first when it looks
+/// real, see [`CensusBox::is_real`]).
 fn certify_complex(sys: &BallSystem, start: [C64; 3]) -> Option<CensusBox> {
     let mut c = start;
     let mut close = false;
@@ -353,10 +368,26 @@ fn certify_complex(sys: &BallSystem, start: [C64; 3]) -> Option<CensusBox> {
     if !close {
         return None;
     }
+    let size = c.iter().fold(1.0f64, |a, z| a.max(z.abs()));
+    // a zero that looks real is tried first around its real part: a box
+    // with a real centre is its own conjugate, so success proves the zero
+    // real (a non-real one would bring its conjugate into the box, against
+    // uniqueness); failure leaves the complex centre to try
+    if c.iter().all(|z| z.im.abs() <= size * 1e-9) {
+        let real = c.map(|z| C64::new(z.re, 0.0));
+        if let Some(b) = krawczyk_squares(sys, real, size) {
+            return Some(b);
+        }
+    }
+    krawczyk_squares(sys, c, size)
+}
+
+/// The Krawczyk test on squares of half-width `size·2^-40`, `2^-32`,
+/// `2^-24` around `c`: the first that succeeds.
+fn krawczyk_squares(sys: &BallSystem, c: [C64; 3], size: f64) -> Option<CensusBox> {
     let v = sys.eval_in(&c.map(CBall::point));
     let j: [[C64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|l| v[3 + 3 * i + l].mid()));
     let y = inverse3(&j)?;
-    let size = c.iter().fold(1.0f64, |a, z| a.max(z.abs()));
     for e in [40, 32, 24] {
         let r = size * 2f64.powi(-e);
         if krawczyk(sys, &c, r, &y, &v[..3]) {

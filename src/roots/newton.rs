@@ -45,6 +45,41 @@ fn eval_with_derivative(p: &ZPoly, m: &BigInt, k: u64) -> (BigInt, BigInt) {
     (v, dv)
 }
 
+/// The exact sign of p at `m/2^km` and a pair `(v, dv)` with
+/// `v/(dv·2^km) ≈ p/p′` there, as [`eval_with_derivative`]'s exact
+/// `(2^{km·n} p, 2^{km(n−1)} p′)` would give.  When those exact numbers
+/// would be long, the pair comes from a floating Horner pass
+/// ([`DyadicSigner::float_value`]) keeping enough bits for a Newton point on the grid
+/// `2^e`: the Newton point is only a proposal, which the caller verifies
+/// by exact signs.  That pass's value decides the sign when it exceeds its
+/// error bound; otherwise the signer does, exactly.
+fn newton_values(
+    p: &ZPoly,
+    signs: &DyadicSigner,
+    m: &BigInt,
+    km: u64,
+    e: i64,
+) -> (i32, BigInt, BigInt) {
+    let n = p.degree().unwrap_or(0) as u64;
+    let prec = km.max((-e).max(0) as u64) + 128 + u64::from(64 - n.leading_zeros());
+    let fv = (prec.saturating_mul(2) <= n.saturating_mul(m.bits().max(km)))
+        .then(|| signs.float_value(m, km, prec, true))
+        .flatten();
+    let Some(fv) = fv else {
+        let (v, dv) = eval_with_derivative(p, m, km);
+        return (sign_z(&v), v, dv);
+    };
+    let sign = fv.sign().unwrap_or_else(|| signs.sign_at(m, km));
+    // v/dv = 2^km·(a·2^f)/(d·2^fd)
+    let sh = fv.f - fv.fd + km as i64;
+    let (v, dv) = if sh >= 0 {
+        (fv.a << sh as usize, fv.d)
+    } else {
+        (fv.a, fv.d << (-sh) as usize)
+    };
+    (sign, v, dv)
+}
+
 /// Refines the bracket `br` around a simple root of `p` (`s_lo` = sign of p
 /// at its lower end, non-zero) until its width is at most `width`; sets
 /// `iv` to the result (an exact root if one is hit).
@@ -93,18 +128,15 @@ pub(crate) fn refine_dyadic_newton(
         // one Horner pass gives the midpoint's sign (bisection) and p'
         let m: BigInt = &br.a + &br.b;
         let km = br.k + 1;
-        let (v, dv) = eval_with_derivative(p, &m, km);
-        if let Halved::Root(r) = br.halve_at(m.clone(), sign_z(&v), s_lo) {
-            return exact(iv, r);
-        }
-        if dv.is_zero() {
-            continue;
-        }
         // the width is in (2^(l−1), 2^l]; Newton's point rounded to the
         // grid 2^e, bracketed by its two neighbours on that grid
         let l = (&br.b - &br.a).bits() as i64 - br.k as i64;
         let e = (l - gain).max(e_min);
-        if e >= l - 1 {
+        let (sign, v, dv) = newton_values(p, signs, &m, km, e);
+        if let Halved::Root(r) = br.halve_at(m.clone(), sign, s_lo) {
+            return exact(iv, r);
+        }
+        if dv.is_zero() || e >= l - 1 {
             continue;
         }
         // x_N = (m·dv − v) / (dv·2^km); t = ⌊x_N / 2^e⌋

@@ -156,9 +156,14 @@ impl PoissonAnalysis {
     }
 
     /// A rational approximation of real critical point `i` (dyadic, within
-    /// `2^-(bits+16)` of the point at a `2^-bits` approximation of its τ).
+    /// about `2^-(bits+16)` of the point at a `2^-bits` approximation of
+    /// its τ).  An approximation only: every use checks what it finds
+    /// exactly (witnesses, the isolation of D(u)'s roots).
     pub fn approx_point(&self, i: usize, bits: u32) -> Option<[Q; 3]> {
         let t = self.real_points[i].to_rational_approx(bits);
+        if let Some(p) = self.approx_point_float(&t, bits) {
+            return p;
+        }
         let (dn, dd) = self.rur.wd.eval_homogeneous(t.numer(), t.denom());
         if dn.is_zero() {
             return None;
@@ -172,6 +177,47 @@ impl PoissonAnalysis {
             }
             dyadic_floor(&num, &den, bits as usize + 16)
         }))
+    }
+
+    /// [`Self::approx_point`] at a dyadic τ from floating Horner passes
+    /// ([`horner_float`](crate::poly::horner::horner_float), `bits + 160`
+    /// bits per step), when their error bounds leave `bits + 24` right
+    /// bits in `w′(τ)` and the `Vᵢ(τ)`: the exact pass's numbers grow to
+    /// `deg·bits(τ)` bits.  `None` to fall back to the exact pass.
+    fn approx_point_float(&self, t: &Q, bits: u32) -> Option<Option<[Q; 3]>> {
+        use crate::poly::horner::{FloatCoeffs, FloatValue, horner_float};
+        let d = t.denom();
+        let k = d.trailing_zeros()?;
+        if d.bits() != k + 1 {
+            return None;
+        }
+        let prec = u64::from(bits) + 160;
+        let need = i64::from(bits) + 24;
+        let at = |p: &ZPoly| -> Option<FloatValue> {
+            if p.is_zero() {
+                return None;
+            }
+            let v = horner_float(
+                p.coeffs(),
+                &FloatCoeffs::new(p.coeffs()),
+                t.numer(),
+                k,
+                prec,
+                false,
+            )?;
+            (v.correct_bits()? >= need).then_some(v)
+        };
+        let dw = at(&self.rur.wd)?.to_q();
+        let mut out: [Q; 3] = Default::default();
+        for (o, v) in out.iter_mut().zip(&self.rur.v) {
+            let x = if v.is_zero() {
+                Q::zero()
+            } else {
+                &at(v)?.to_q() / &dw
+            };
+            *o = dyadic_floor(x.numer(), x.denom(), bits as usize + 16);
+        }
+        Some(Some(out))
     }
 
     /// A witness near the real critical point whose value is `value`.
@@ -309,6 +355,78 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly, values: bool) -> Result<PoissonAnalysi
     Err(last)
 }
 
+/// The real roots of `critical` (a factor of the RUR's squarefree `w`)
+/// read off the census, without an isolation: `None` unless every box is
+/// either real ([`CensusBox::is_real`](crate::roots::census::CensusBox::is_real))
+/// or proved to hold a non-real zero with a non-real `ℓ`, and the real
+/// boxes' ℓ-intervals `ℓ(centre) ± Σ|ℓᵢ|·half` are pairwise disjoint.
+///
+/// Then `w = c·∏(u − ℓ(ξ))` has as real roots exactly the `ℓ(ξ)` of the
+/// real zeros, one in each of those intervals, each simple.  `critical`
+/// divides w, so on each interval it either has that root, simple (its
+/// sign changes, checked exactly at the ends), or no root (the root is
+/// one of the extra factor's); an end where it vanishes declines.  The
+/// intervals are those of the boxes, about 2^-40 relative.
+pub(crate) fn census_real_roots(
+    critical: &ZPoly,
+    census: &crate::roots::census::ZeroCensus,
+    form: [i64; 3],
+) -> Option<Vec<RealAlg>> {
+    let mut spans: Vec<(Q, Q)> = Vec::new();
+    // |Im ℓ| over a box, below: the three-term sums in doubles are within
+    // 2^-50 of the exact ones relative to Σ|ℓᵢ|·|imᵢ| (with room to spare),
+    // so `|Σ ℓᵢ imᵢ| − slack > Σ|ℓᵢ|·half` proves Im ℓ ≠ 0 on the box
+    let lf = form.map(|l| l as f64);
+    let im_excludes_zero = |b: &crate::roots::census::CensusBox| {
+        let (mut mid, mut size, mut rad) = (0.0f64, 0.0f64, 0.0f64);
+        for (l, z) in lf.iter().zip(&b.centre) {
+            mid += l * z.im;
+            size += (l * z.im).abs();
+            rad += l.abs() * b.half;
+        }
+        let slack = size * 2f64.powi(-48) + rad * 2f64.powi(-48);
+        (mid.abs() - slack - rad).is_finite() && mid.abs() - slack > rad
+    };
+    for b in &census.boxes {
+        if b.is_real() {
+            spans.push(real_ell_span(b, form)?);
+        } else if !(b.misses_real_space() && im_excludes_zero(b)) {
+            return None;
+        }
+    }
+    spans.sort_by(|a, b| a.0.cmp(&b.0));
+    if spans.windows(2).any(|w| w[0].1 >= w[1].0) {
+        return None;
+    }
+    let sq = critical.squarefree_part();
+    let mut roots = Vec::new();
+    for (a, b) in spans {
+        let (sa, sb) = (sq.sign_at(&a), sq.sign_at(&b));
+        if sa == 0 || sb == 0 {
+            return None;
+        }
+        if sa != sb {
+            roots.push(RealAlg::from_primitive(&sq, &RootInterval { lo: a, hi: b }));
+        }
+    }
+    Some(roots)
+}
+
+/// `ℓ(re centre) ± Σ|ℓᵢ|·half`, exactly: the values of ℓ on the real
+/// points of the box.
+fn real_ell_span(b: &crate::roots::census::CensusBox, form: [i64; 3]) -> Option<(Q, Q)> {
+    let q = |x: f64| crate::number::float::double_value(x);
+    let h = q(b.half)?;
+    let mut mid = Q::zero();
+    let mut rad = Q::zero();
+    for (l, z) in form.iter().zip(&b.centre) {
+        let l = Q::from_integer(BigInt::from(*l));
+        mid = &mid + &(&l * &q(z.re)?);
+        rad = &rad + &(&l.abs() * &h);
+    }
+    Some((&mid - &rad, &mid + &rad))
+}
+
 /// Narrows the isolating intervals of the real roots from the census:
 /// a box that meets the real space (every imaginary part within its
 /// half-width) gives the interval `ℓ(re centre) ± Σ|ℓᵢ|·half`, which holds
@@ -322,22 +440,11 @@ fn narrow_from_census(
     census: &crate::roots::census::ZeroCensus,
     form: [i64; 3],
 ) {
-    let q = |x: f64| crate::number::float::double_value(x);
     let spans: Vec<(Q, Q)> = census
         .boxes
         .iter()
         .filter(|b| b.centre.iter().all(|z| z.im.abs() <= b.half))
-        .filter_map(|b| {
-            let h = q(b.half)?;
-            let mut mid = Q::zero();
-            let mut rad = Q::zero();
-            for (l, z) in form.iter().zip(&b.centre) {
-                let l = Q::from_integer(BigInt::from(*l));
-                mid = &mid + &(&l * &q(z.re)?);
-                rad = &rad + &(&l.abs() * &h);
-            }
-            Some((&mid - &rad, &mid + &rad))
-        })
+        .filter_map(|b| real_ell_span(b, form))
         .collect();
     for p in points.iter_mut() {
         for (a, b) in &spans {
@@ -451,10 +558,20 @@ fn finish(
     if critical.degree().unwrap_or(0) == 0 {
         return decline("no critical point");
     }
-    let mut real_points = RealAlg::roots_of(&critical);
-    if let Some(c) = &rur.census {
-        narrow_from_census(&mut real_points, &c.zeros, rur.form);
-    }
+    let from_census = rur
+        .census
+        .as_ref()
+        .and_then(|c| census_real_roots(&critical, &c.zeros, rur.form));
+    let mut real_points = match from_census {
+        Some(r) => r,
+        None => {
+            let mut r = RealAlg::roots_of(&critical);
+            if let Some(c) = &rur.census {
+                narrow_from_census(&mut r, &c.zeros, rur.form);
+            }
+            r
+        }
+    };
     // refined once, in place, to the 2^-64 the boxes start from: the boxes
     // and the witnesses then refine no copies, and printing only finishes
     let w64 = Q::new(BigInt::one(), BigInt::one() << 64usize);

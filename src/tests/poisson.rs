@@ -314,6 +314,23 @@ fn the_direct_bound_gives_the_same_judging_polynomial() {
     }
 }
 
+/// Three systems the census certifies: a quartic on a general ellipsoid, a
+/// dense quartic on a sphere, a quintic on an axis-aligned ellipsoid.
+const CENSUS_CASES: [(&str, &str); 3] = [
+    (
+        "18*x*x - 12*x*y + 10*x*z + 23*y*y - 24*y*z + 14*z*z - 2*x + 3*y + 2*z - 27",
+        "x^4 + y^4 + z^4 - x*y - 2",
+    ),
+    (
+        "x^2 + y^2 + z^2 - 4",
+        "x^4 + 2x^3*y - y^3*z + 3x*z^3 - 2y^2*z^2 + x^2 - y*z + z - 2",
+    ),
+    (
+        "x^2 + 2*y^2 + 3*z^2 - 7",
+        "x^5 - 3x^2*y^3 + y*z^4 - 2x*y*z + z^3 - x + 4",
+    ),
+];
+
 /// The census route (an a-posteriori bound from certified boxes around
 /// all complex zeros) and Sombra's a-priori bound give the same RUR and
 /// the same D(u); the census's bound holds every coefficient it was used
@@ -322,20 +339,7 @@ fn the_direct_bound_gives_the_same_judging_polynomial() {
 #[test]
 fn the_census_bound_gives_the_same_rur_and_judging_polynomial() {
     use crate::roots::poisson::NO_CENSUS;
-    for (e, s) in [
-        (
-            "18*x*x - 12*x*y + 10*x*z + 23*y*y - 24*y*z + 14*z*z - 2*x + 3*y + 2*z - 27",
-            "x^4 + y^4 + z^4 - x*y - 2",
-        ),
-        (
-            "x^2 + y^2 + z^2 - 4",
-            "x^4 + 2x^3*y - y^3*z + 3x*z^3 - 2y^2*z^2 + x^2 - y*z + z - 2",
-        ),
-        (
-            "x^2 + 2*y^2 + 3*z^2 - 7",
-            "x^5 - 3x^2*y^3 + y*z^4 - 2x*y*z + z^3 - x + 4",
-        ),
-    ] {
+    for (e, s) in CENSUS_CASES {
         let (ell, sp) = (ellipsoid(e), parse_poly(s).unwrap());
         let with = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
         NO_CENSUS.with(|c| c.set(true));
@@ -372,6 +376,35 @@ fn the_census_bound_gives_the_same_rur_and_judging_polynomial() {
         }
         // D(u)'s bound from the census holds D(u) before the scaling
         assert!(with.value_direct_bits.unwrap() < without.value_direct_bits.unwrap_or(u64::MAX));
+    }
+}
+
+/// The real roots read off the census boxes (no isolation) are the roots
+/// an isolation finds, in the same order, and the boxes of the real zeros
+/// have real centres.
+#[test]
+fn census_boxes_give_the_real_roots_of_the_isolation() {
+    for (e, s) in CENSUS_CASES {
+        let (ell, sp) = (ellipsoid(e), parse_poly(s).unwrap());
+        let an = crate::tangent::poisson::analyze(&ell, &sp, false).unwrap();
+        let c = an.rur.census.as_ref().expect("the census certifies");
+        let from_boxes =
+            crate::tangent::poisson::census_real_roots(&an.critical, &c.zeros, an.rur.form)
+                .expect("every box is classified");
+        let isolated = RealAlg::roots_of(&an.critical);
+        assert!(!isolated.is_empty());
+        assert_eq!(from_boxes.len(), isolated.len(), "{s} on {e}");
+        for (a, b) in from_boxes.iter().zip(&isolated) {
+            assert_eq!(a.cmp_exact(b), std::cmp::Ordering::Equal, "{s} on {e}");
+        }
+        let real_boxes = c.zeros.boxes.iter().filter(|b| b.is_real()).count();
+        assert!(real_boxes >= isolated.len(), "{s} on {e}");
+        assert!(
+            c.zeros
+                .boxes
+                .iter()
+                .all(|b| b.is_real() || b.misses_real_space())
+        );
     }
 }
 
