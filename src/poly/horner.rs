@@ -21,6 +21,10 @@ use crate::number::sign_z;
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 
+/// Below this degree the exact pass is used directly: its numbers stay
+/// short, and a floating pass costs about as much per step.
+pub(crate) const FLOAT_MIN_DEGREE: u64 = 24;
+
 /// A non-negative upper bound `mant·2^exp` (`mant < 2^62`), rounded up
 /// by every operation.
 #[derive(Clone, Copy, Debug)]
@@ -158,6 +162,7 @@ impl FloatValue {
 /// magnitude limbs of its top `TOP_BITS` bits `⌊|c| / 2^e⌋`, and `e`, so a
 /// step reads a short number: `⌊⌊|c|/2^e⌋·2^{e−f}⌋` is within 2 of
 /// `|c|/2^f` (one truncation more than the whole coefficient's).
+#[derive(Clone, Debug)]
 pub(crate) struct FloatCoeffs {
     tops: Vec<(bool, Vec<u64>, i64)>,
 }

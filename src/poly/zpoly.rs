@@ -408,6 +408,9 @@ impl<'a> DyadicSigner<'a> {
     /// away from clusters of roots, a few hundred bits instead of `n·k`.
     fn sign_at_truncated(&self, m: &BigInt, k: u64) -> Option<i32> {
         let n = (self.p.coeffs().len() - 1) as u64;
+        if n < super::horner::FLOAT_MIN_DEGREE {
+            return None;
+        }
         let exact = n.checked_mul(m.bits().max(k))?;
         let log_n = 64 - u64::from(n.leading_zeros());
         for prec in [k + 128 + log_n, 2 * k + 384 + log_n] {

@@ -685,7 +685,7 @@ fn aberth(w: &ZPoly) -> Option<Vec<C64>> {
                 return None;
             }
             z[i] = z[i].sub(step);
-            if step.abs() <= 1.5e-14 * z[i].abs() {
+            if step.abs() <= 1e-10 * z[i].abs() {
                 done[i] = true;
             } else {
                 moved = true;

@@ -62,9 +62,10 @@ fn newton_values(
 ) -> (i32, BigInt, BigInt) {
     let n = p.degree().unwrap_or(0) as u64;
     let prec = km.max((-e).max(0) as u64) + 128 + u64::from(64 - n.leading_zeros());
-    let fv = (prec.saturating_mul(2) <= n.saturating_mul(m.bits().max(km)))
-        .then(|| signs.float_value(m, km, prec, true))
-        .flatten();
+    let fv = (n >= crate::poly::horner::FLOAT_MIN_DEGREE
+        && prec.saturating_mul(2) <= n.saturating_mul(m.bits().max(km)))
+    .then(|| signs.float_value(m, km, prec, true))
+    .flatten();
     let Some(fv) = fv else {
         let (v, dv) = eval_with_derivative(p, m, km);
         return (sign_z(&v), v, dv);
@@ -128,15 +129,21 @@ pub(crate) fn refine_dyadic_newton(
         // one Horner pass gives the midpoint's sign (bisection) and p'
         let m: BigInt = &br.a + &br.b;
         let km = br.k + 1;
+        // the grid the Newton point will be rounded to, from the width
+        // before halving (at most one bit coarser than after)
+        let l0 = (&br.b - &br.a).bits() as i64 - br.k as i64;
+        let (sign, v, dv) = newton_values(p, signs, &m, km, (l0 - 1 - gain).max(e_min));
+        if let Halved::Root(r) = br.halve_at(m.clone(), sign, s_lo) {
+            return exact(iv, r);
+        }
+        if dv.is_zero() {
+            continue;
+        }
         // the width is in (2^(l−1), 2^l]; Newton's point rounded to the
         // grid 2^e, bracketed by its two neighbours on that grid
         let l = (&br.b - &br.a).bits() as i64 - br.k as i64;
         let e = (l - gain).max(e_min);
-        let (sign, v, dv) = newton_values(p, signs, &m, km, e);
-        if let Halved::Root(r) = br.halve_at(m.clone(), sign, s_lo) {
-            return exact(iv, r);
-        }
-        if dv.is_zero() || e >= l - 1 {
+        if e >= l - 1 {
             continue;
         }
         // x_N = (m·dv − v) / (dv·2^km); t = ⌊x_N / 2^e⌋

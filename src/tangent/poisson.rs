@@ -96,9 +96,12 @@ pub struct PoissonAnalysis {
     /// that follows from them ([`direct_value_bits`]); D(u)'s CRT stops
     /// beyond the smaller of it and the Landau–Sombra bound.
     pub value_direct_bits: Option<u64>,
-    /// S at a 2^-32 approximation of each real critical point, with the S
+    /// S at a 2^-96 approximation of each real critical point, with the S
     /// it was made for (see [`PoissonAnalysis::approx_values`]).
     approx_values: std::sync::OnceLock<(QMPoly, Vec<Option<Q>>)>,
+    /// w′ and the RUR's numerators prepared for floating Horner passes
+    /// ([`PoissonAnalysis::approx_point`]), made on first use.
+    rur_float: std::sync::OnceLock<Vec<crate::poly::horner::FloatCoeffs>>,
     /// With [`PoissonAnalysis::separates`]: the real roots of D(u),
     /// increasing (isolated once, in [`analyze`]).
     judging_roots: Vec<RealAlg>,
@@ -121,14 +124,15 @@ impl PoissonAnalysis {
         }
     }
 
-    /// S at a 2^-32 approximation of each real critical point (`None`
+    /// S at a 2^-96 approximation of each real critical point (`None`
     /// where w′ vanished there): made once for the analysed S and shared
-    /// (by the isolation of D(u)'s roots and the witnesses of min and max);
-    /// for another S computed afresh.
+    /// (by the isolation of D(u)'s roots, which brackets them to about
+    /// 2^-86, and the witnesses of min and max); for another S computed
+    /// afresh.
     fn approx_values(&self, s: &QMPoly) -> std::borrow::Cow<'_, [Option<Q>]> {
         let values_of = || -> Vec<Option<Q>> {
             (0..self.real_points.len())
-                .map(|i| Some(approx_value(s, &self.approx_point(i, 32)?)))
+                .map(|i| Some(approx_value(s, &self.approx_point(i, VALUE_BITS)?)))
                 .collect()
         };
         let cached = self.approx_values.get_or_init(|| (s.clone(), values_of()));
@@ -193,27 +197,25 @@ impl PoissonAnalysis {
         }
         let prec = u64::from(bits) + 160;
         let need = i64::from(bits) + 24;
-        let at = |p: &ZPoly| -> Option<FloatValue> {
+        let polys = [&self.rur.wd, &self.rur.v[0], &self.rur.v[1], &self.rur.v[2]];
+        let prepared = self
+            .rur_float
+            .get_or_init(|| polys.iter().map(|p| FloatCoeffs::new(p.coeffs())).collect());
+        let at = |i: usize| -> Option<FloatValue> {
+            let p = polys[i];
             if p.is_zero() {
                 return None;
             }
-            let v = horner_float(
-                p.coeffs(),
-                &FloatCoeffs::new(p.coeffs()),
-                t.numer(),
-                k,
-                prec,
-                false,
-            )?;
+            let v = horner_float(p.coeffs(), &prepared[i], t.numer(), k, prec, false)?;
             (v.correct_bits()? >= need).then_some(v)
         };
-        let dw = at(&self.rur.wd)?.to_q();
+        let dw = at(0)?.to_q();
         let mut out: [Q; 3] = Default::default();
-        for (o, v) in out.iter_mut().zip(&self.rur.v) {
+        for (i, (o, v)) in out.iter_mut().zip(&self.rur.v).enumerate() {
             let x = if v.is_zero() {
                 Q::zero()
             } else {
-                &at(v)?.to_q() / &dw
+                &at(i + 1)?.to_q() / &dw
             };
             *o = dyadic_floor(x.numer(), x.denom(), bits as usize + 16);
         }
@@ -274,13 +276,22 @@ fn approx_value(p: &QMPoly, pt: &[Q; 3]) -> Q {
         .map(|x| x.numer() * (BigInt::one() << (kk - (x.denom().bits() as usize - 1))))
         .collect();
     let d = pz.total_degree().unwrap_or(0) as usize;
+    // the powers m_v^e, e ≤ d, once
+    let pw: Vec<Vec<BigInt>> = m
+        .iter()
+        .map(|mv| {
+            std::iter::successors(Some(BigInt::one()), |x| Some(x * mv))
+                .take(d + 1)
+                .collect()
+        })
+        .collect();
     let mut acc = BigInt::zero();
     for (ex, c) in pz.terms() {
         let deg = (ex[X] + ex[Y] + ex[Z]) as usize;
         let mut t = c.clone();
         for (v, &e) in [ex[X], ex[Y], ex[Z]].iter().enumerate() {
             if e > 0 {
-                t *= num_traits::pow(m[v].clone(), e as usize);
+                t *= &pw[v][e as usize];
             }
         }
         acc += t << (kk * (d - deg));
@@ -572,11 +583,13 @@ fn finish(
             r
         }
     };
-    // refined once, in place, to the 2^-64 the boxes start from: the boxes
-    // and the witnesses then refine no copies, and printing only finishes
-    let w64 = Q::new(BigInt::one(), BigInt::one() << 64usize);
+    // refined once, in place, to 2^-96: the boxes (from 2^-64), the values'
+    // approximations (2^-96), the witnesses and the printed 20 digits then
+    // refine no copies
+    let w96 = Q::new(BigInt::one(), BigInt::one() << 96usize);
     for p in real_points.iter_mut() {
-        p.refine_to(&w64);
+        p.refine_to(&w96);
+        p.refine_for_approx(20);
     }
     if real_points.is_empty() {
         // S attains its extremes on the compact E at real critical points
@@ -598,6 +611,7 @@ fn finish(
         coordinate_mahler_bits: None,
         value_direct_bits: None,
         approx_values: std::sync::OnceLock::new(),
+        rur_float: std::sync::OnceLock::new(),
         judging_roots: Vec::new(),
     };
     if !values {
@@ -756,22 +770,24 @@ pub(crate) fn isolate_by_values(d: &ZPoly, approx: &[Option<Q>]) -> Option<Vec<R
     let k = d.root_bound_log2()?.max(0) as usize;
     let big = Q::from_integer(BigInt::one() << k);
     let mut ends = vec![-big.clone()];
+    let mut separators = Vec::new();
     for w in v.windows(2) {
-        // the simplest rational in the middle half between neighbours
+        // the shortest dyadic in the middle half between neighbours (its
+        // sign is then a short floating Horner pass, usually)
         let q = (&w[1] - &w[0]) / Q::from_integer(BigInt::from(4));
-        ends.push(crate::roots::simplest_rational_in(
-            &(&w[0] + &q),
-            &(&w[1] - &q),
-        ));
+        let (m, k) = short_dyadic_in(&(&w[0] + &q), &(&w[1] - &q));
+        ends.push(dyadic(m.clone(), k as usize));
+        separators.push((m, k));
     }
     ends.push(big);
     if ends.windows(2).any(|w| w[0] >= w[1]) {
         return None;
     }
     // D's signs at −2^k, t₁, …, t_{R−1}, 2^k must alternate
+    let signer = DyadicSigner::new(d);
     let mut sign = at_minus_inf;
-    for t in &ends[1..ends.len() - 1] {
-        let st = d.sign_at(t);
+    for (m, k) in &separators {
+        let st = signer.sign_at(m, *k);
         if st != -sign {
             return None;
         }
@@ -783,7 +799,6 @@ pub(crate) fn isolate_by_values(d: &ZPoly, approx: &[Option<Q>]) -> Option<Vec<R
     }
     // every interval (ends[i], ends[i+1]) holds exactly one root; narrow it
     // around v[i] where D's signs confirm
-    let signer = DyadicSigner::new(d);
     let mut s_lo = at_minus_inf;
     let roots = (0..v.len())
         .map(|i| {
@@ -799,12 +814,47 @@ pub(crate) fn isolate_by_values(d: &ZPoly, approx: &[Option<Q>]) -> Option<Vec<R
     Some(roots)
 }
 
-/// A bracket of about 2^-24 relative width around `v` inside `(a, b)`, on
-/// which D (of sign `s_lo` just above `a`, one root in `(a, b)`) changes
-/// sign: dyadic ends about 2^8 steps of a grid of about 2^-32·|v| from `v`.
+/// The dyadic `m/2^k` in `[lo, hi]` (`lo < hi`) with the least `k ≥ 0`.
+pub(crate) fn short_dyadic_in(lo: &Q, hi: &Q) -> (BigInt, u64) {
+    let w = hi - lo;
+    // a step 2^-k ≤ w always has a multiple in [lo, hi]
+    let enough = (w.denom().bits() as i64 - w.numer().bits() as i64 + 1).max(0) as u64;
+    for k in 0..enough {
+        let m = (lo.numer() << k as usize).div_ceil(lo.denom());
+        if dyadic(m.clone(), k as usize) <= *hi {
+            return (m, k);
+        }
+    }
+    ((lo.numer() << enough as usize).div_ceil(lo.denom()), enough)
+}
+
+/// A bracket of about 2^-86 (failing that, 2^-22) relative width around
+/// `v` inside `(a, b)`, on which D (of sign `s_lo` just above `a`, one root
+/// in `(a, b)`) changes sign: dyadic ends 2^8 steps of a grid of about
+/// 2^-95·|v| (2^-31·|v|) from `v`.
 fn narrow_around(signer: &DyadicSigner, v: &Q, s_lo: i32, a: &Q, b: &Q) -> Option<RootInterval> {
-    // the grid 2^g, about 2^-32 of |v|; t = ⌊v / 2^g⌋
-    let g = v.numer().bits() as i64 - v.denom().bits() as i64 - 31;
+    // first as fine as the value allows (about 2^-86 of |v|: the printed
+    // 20 digits need no refinement), then at 2^-22
+    [i64::from(VALUE_BITS) - 1, 31]
+        .into_iter()
+        .find_map(|digits| narrow_on_grid(signer, v, s_lo, a, b, digits))
+}
+
+/// The values of S at real critical points are computed from `2^-VALUE_BITS`
+/// approximations of their τ ([`PoissonAnalysis::approx_values`]).
+const VALUE_BITS: u32 = 96;
+
+/// [`narrow_around`] on the grid `2^g`, `g = log₂|v| − digits`: the
+/// bracket `[(t − 256)·2^g, (t + 257)·2^g]`, `t = ⌊v / 2^g⌋`.
+fn narrow_on_grid(
+    signer: &DyadicSigner,
+    v: &Q,
+    s_lo: i32,
+    a: &Q,
+    b: &Q,
+    digits: i64,
+) -> Option<RootInterval> {
+    let g = v.numer().bits() as i64 - v.denom().bits() as i64 - digits;
     let t: BigInt = if g <= 0 {
         (v.numer() << (-g) as usize).div_floor(v.denom())
     } else {
@@ -897,6 +947,15 @@ fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
     let (a, b) = eval_box(&pz, &fbox, k).to_q(k);
     let (a, b) = (a * &scale, b * &scale);
     if scale.is_negative() { (b, a) } else { (a, b) }
+}
+
+/// `[lo, hi]` widened to the grid `2^-g`: `[⌊lo·2^g⌋, ⌈hi·2^g⌉]/2^g` (the
+/// same interval when its ends are on the grid already).
+fn outward((lo, hi): (Q, Q), g: u32) -> (Q, Q) {
+    let g = g as usize;
+    let down = (lo.numer() << g).div_floor(lo.denom());
+    let up = (hi.numer() << g).div_ceil(hi.denom());
+    (dyadic(down, g), dyadic(up, g))
 }
 
 /// An enclosure of S at the zero of the RUR whose τ lies in `[lo, hi]`.
@@ -1058,7 +1117,9 @@ fn sign_at_point(
             let v = s.eval(&full);
             return (crate::number::sign_q(&v), Some((v.clone(), v)));
         }
-        let (lo, hi) = a.interval();
+        // the interval rounded outwards to the stage's grid: a point
+        // refined further (to 2^-96, for printing) gives no longer numbers
+        let (lo, hi) = outward(a.interval(), bits.max(64));
         if let Some((vl, vh)) = enclose_value(rur, s, &lo, &hi) {
             if vl.is_positive() {
                 return (1, Some((vl, vh)));
@@ -1090,7 +1151,7 @@ fn identify_values(
     for p in points {
         let mut a = p.clone();
         let mut found = None;
-        for _ in 0..200 {
+        for round in 0..200 {
             crate::budget::check_now();
             if let Some(x) = a.as_rational() {
                 let pt = rur
@@ -1109,7 +1170,13 @@ fn identify_values(
                 break;
             }
             let (lo, hi) = a.interval();
-            if let Some((vl, vh)) = enclose_value(rur, s, &lo, &hi) {
+            // first on the 2^-64 grid (shorter numbers), then as refined
+            let (el, eh) = if round == 0 {
+                outward((lo.clone(), hi.clone()), 64)
+            } else {
+                (lo.clone(), hi.clone())
+            };
+            if let Some((vl, vh)) = enclose_value(rur, s, &el, &eh) {
                 let hits: Vec<usize> = (0..ivs.len())
                     .filter(|&j| crate::roots::meets(&ivs[j], &vl, &vh))
                     .collect();

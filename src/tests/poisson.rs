@@ -557,6 +557,29 @@ fn witnesses_of_min_and_max_and_of_another_surface() {
 /// brackets where an approximation is within 2^-24, the isolating interval
 /// between separators otherwise, and `None` when a sign does not alternate,
 /// an approximation is missing or two coincide.
+/// The separators of D(u)'s roots: the dyadic with the fewest bits in an
+/// interval lies in it, and no dyadic with one bit less does.
+#[test]
+fn shortest_dyadics() {
+    use crate::tangent::poisson::short_dyadic_in;
+    let q = |n: i64, d: i64| Q::new(BigInt::from(n), BigInt::from(d));
+    for (lo, hi, want) in [
+        (q(1, 3), q(2, 3), (BigInt::from(1), 1)),
+        (q(-5, 2), q(7, 1), (BigInt::from(-2), 0)),
+        (q(1, 1000), q(3, 1000), (BigInt::from(1), 9)),
+        (
+            q(7, 5),
+            q(7_000_001, 5_000_000),
+            (BigInt::from(2_936_013), 21),
+        ),
+    ] {
+        let (m, k) = short_dyadic_in(&lo, &hi);
+        let x = crate::number::dyadic(m.clone(), k as usize);
+        assert!(lo <= x && x <= hi, "{lo}..{hi}: {x}");
+        assert_eq!((m, k), want, "{lo}..{hi}");
+    }
+}
+
 #[test]
 fn judging_roots_from_approximate_values() {
     use crate::tangent::poisson::isolate_by_values;
@@ -582,6 +605,13 @@ fn judging_roots_from_approximate_values() {
             .iter()
             .all(|r| width(r) <= &tiny * Q::from_integer(BigInt::from(4)))
     );
+    // within 2^-100: brackets of about 2^-86, narrow enough to print 20
+    // digits without refining
+    let close = Q::one() + Q::new(BigInt::one(), BigInt::one() << 100usize);
+    let roots = isolate_by_values(&d, &[q(-2, 1), Some(close), q(3, 1)]).expect("isolated");
+    assert_eq!(roots, exact);
+    let w84 = Q::new(BigInt::one(), BigInt::one() << 84usize);
+    assert!(width(&roots[1]) <= w84, "{:?}", roots[1].interval());
     // off by 10^-3: still isolated, the brackets stay between separators
     let rough = [q(-2001, 1000), q(1001, 1000), q(2999, 1000)];
     let roots = isolate_by_values(&d, &rough).expect("isolated");

@@ -166,7 +166,10 @@ fn method_json(m: &Analysis) -> Value {
                 "rur_poly": upoly_string(&an.rur.f, T),
                 "rur_coordinates": coords,
                 "rur_value": MPoly::from_univariate(&an.value_poly, T).to_string_canonical(),
-                "real_critical_points": an.rur.real_roots.iter().map(|a| alg_json_in(a, T)).collect::<Vec<_>>(),
+                "real_critical_points": an.rur.real_roots.iter().map({
+                    let mut w = AlgWriter::new(T);
+                    move |a| w.json(a)
+                }).collect::<Vec<_>>(),
                 "critical_conics": conics_json(&an.conics),
                 "resultant_elimination": elim,
             })
@@ -228,7 +231,10 @@ fn method_json(m: &Analysis) -> Value {
                 "rur_denominator": upoly_string(&r.wd, T),
                 "extra_factor": upoly_string(&an.extras, T),
                 "critical_factor": upoly_string(&an.critical, T),
-                "real_critical_points": an.real_points.iter().map(|a| alg_json_in(a, T)).collect::<Vec<_>>(),
+                "real_critical_points": an.real_points.iter().map({
+                    let mut w = AlgWriter::new(T);
+                    move |a| w.json(a)
+                }).collect::<Vec<_>>(),
                 "primes": {"rur": r.primes, "judging": an.value_primes},
                 "bound_bits": {"rur": r.bound_bits, "rur_sombra": r.sombra_bits, "judging": an.value_bound_bits},
                 "rur_census": r.census.as_ref().map(|c| json!({
@@ -266,6 +272,8 @@ fn method_json(m: &Analysis) -> Value {
 /// cached: the critical values, min and max usually share D(u), whose
 /// decimal digits are written once.
 struct AlgWriter {
+    /// The variable the polynomials are printed in.
+    var: usize,
     cache: Vec<(ZPoly, String)>,
     /// The 20-digit approximations by (polynomial index, interval): min
     /// and max repeat critical values, each root is refined once.
@@ -273,12 +281,20 @@ struct AlgWriter {
 }
 
 impl AlgWriter {
+    fn new(var: usize) -> AlgWriter {
+        AlgWriter {
+            var,
+            cache: Vec::new(),
+            approx: Vec::new(),
+        }
+    }
+
     fn json(&mut self, a: &RealAlg) -> Value {
         let p = a.poly();
         let k = match self.cache.iter().position(|(q, _)| *q == p) {
             Some(k) => k,
             None => {
-                let s = MPoly::from_univariate(&p, U).to_string_canonical();
+                let s = MPoly::from_univariate(&p, self.var).to_string_canonical();
                 self.cache.push((p, s));
                 self.cache.len() - 1
             }
@@ -303,10 +319,7 @@ impl AlgWriter {
 /// `quadsect tangent --json`.
 pub fn tangent_json(r: &TangentReport) -> Value {
     let c = &r.certificate;
-    let mut algs = AlgWriter {
-        cache: Vec::new(),
-        approx: Vec::new(),
-    };
+    let mut algs = AlgWriter::new(U);
     let mut cert = method_json(&c.method);
     if let Value::Object(m) = &mut cert {
         m.insert(
