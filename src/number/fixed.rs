@@ -273,12 +273,18 @@ pub fn bigint_from_limbs(limbs: &[u64]) -> BigInt {
     if negative {
         negate(&mut mag);
     }
-    let digits: Vec<u32> = mag
-        .iter()
-        .flat_map(|&l| [l as u32, (l >> 32) as u32])
-        .collect();
     let sign = if negative { Sign::Minus } else { Sign::Plus };
-    BigInt::from_biguint(sign, BigUint::new(digits))
+    BigInt::from_biguint(sign, biguint_from_limbs(&mag))
+}
+
+/// The value of little-endian magnitude limbs as a `BigUint`.
+pub fn biguint_from_limbs(limbs: &[u64]) -> BigUint {
+    BigUint::new(
+        limbs
+            .iter()
+            .flat_map(|&l| [l as u32, (l >> 32) as u32])
+            .collect(),
+    )
 }
 
 /// Two's-complement negation in place (`!x + 1`).

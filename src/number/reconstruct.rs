@@ -411,7 +411,7 @@ impl CrtVec {
                 mul_add_limbs(&mut limbs, m, digit(j) + primes[j] * digit(j + 1));
             }
             if limbs.iter().any(|&l| l != 0) {
-                let z = BigInt::from_biguint(Sign::Plus, biguint_of_limbs(&limbs));
+                let z = BigInt::from_biguint(Sign::Plus, super::fixed::biguint_from_limbs(&limbs));
                 *v += &self.converted_modulus * z;
             }
         }
@@ -433,15 +433,6 @@ fn mul_add_limbs(z: &mut Vec<u64>, m: u64, c: u64) {
     if carry != 0 {
         z.push(carry as u64);
     }
-}
-
-/// The natural number with these little-endian 64-bit limbs.
-fn biguint_of_limbs(limbs: &[u64]) -> BigUint {
-    let digits: Vec<u32> = limbs
-        .iter()
-        .flat_map(|&l| [l as u32, (l >> 32) as u32])
-        .collect();
-    BigUint::new(digits)
 }
 
 /// The rational `n/d` (`d > 0`, `gcd(n, d) = 1`) with `n ≡ a·d (mod m)` and

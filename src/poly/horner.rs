@@ -195,12 +195,7 @@ struct Mant {
 
 impl Mant {
     fn to_bigint(&self) -> BigInt {
-        let m = BigInt::from(num_bigint::BigUint::new(
-            self.mag
-                .iter()
-                .flat_map(|&l| [l as u32, (l >> 32) as u32])
-                .collect(),
-        ));
+        let m = BigInt::from(crate::number::fixed::biguint_from_limbs(&self.mag));
         if self.neg { -m } else { m }
     }
 }

@@ -374,6 +374,13 @@ impl<'a> DyadicSigner<'a> {
     /// Exact sign (-1, 0, 1) of `p(m / 2^k)`.  `O(n)` operations on numbers
     /// of `B + n·max(bits(m), k)` bits.
     pub fn sign_at(&self, m: &BigInt, k: u64) -> i32 {
+        self.sign_at_past(m, k, 0)
+    }
+
+    /// [`DyadicSigner::sign_at`] for a caller whose own floating pass with
+    /// `tried` bits per step did not decide: floating passes with no more
+    /// bits than that are not run again.
+    pub(crate) fn sign_at_past(&self, m: &BigInt, k: u64, tried: u64) -> i32 {
         let c = self.p.coeffs();
         if c.is_empty() {
             return 0;
@@ -382,7 +389,7 @@ impl<'a> DyadicSigner<'a> {
         if let Some(s) = self.sign_at_fixed(m, k) {
             return s;
         }
-        if let Some(s) = self.sign_at_truncated(m, k) {
+        if let Some(s) = self.sign_at_truncated(m, k, tried) {
             return s;
         }
         let long = c.len() > SHORT;
@@ -406,7 +413,7 @@ impl<'a> DyadicSigner<'a> {
     /// `bits(n)`), when one decides and the exact pass's numbers (`n·max(bits(m),
     /// k)` bits beyond the coefficients) would be more than twice as long:
     /// away from clusters of roots, a few hundred bits instead of `n·k`.
-    fn sign_at_truncated(&self, m: &BigInt, k: u64) -> Option<i32> {
+    fn sign_at_truncated(&self, m: &BigInt, k: u64, tried: u64) -> Option<i32> {
         let n = (self.p.coeffs().len() - 1) as u64;
         if n < super::horner::FLOAT_MIN_DEGREE {
             return None;
@@ -416,6 +423,9 @@ impl<'a> DyadicSigner<'a> {
         for prec in [k + 128 + log_n, 2 * k + 384 + log_n] {
             if prec.checked_mul(2)? > exact {
                 return None;
+            }
+            if prec <= tried {
+                continue;
             }
             if let Some(s) = self.float_value(m, k, prec, false)?.sign() {
                 return Some(s);

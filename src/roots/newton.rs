@@ -70,7 +70,7 @@ fn newton_values(
         let (v, dv) = eval_with_derivative(p, m, km);
         return (sign_z(&v), v, dv);
     };
-    let sign = fv.sign().unwrap_or_else(|| signs.sign_at(m, km));
+    let sign = fv.sign().unwrap_or_else(|| signs.sign_at_past(m, km, prec));
     // v/dv = 2^km·(a·2^f)/(d·2^fd)
     let sh = fv.f - fv.fd + km as i64;
     let (v, dv) = if sh >= 0 {
