@@ -149,12 +149,22 @@ enum Command {
 
 /// Prints the JSON or the human form (only the one asked for is built).
 fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() -> String) {
-    let mut out = std::io::stdout().lock();
-    let _ = if json {
-        writeln!(out, "{}", v())
+    if json {
+        emit_json(&v());
     } else {
-        write!(out, "{}", human())
-    };
+        let _ = write!(std::io::stdout().lock(), "{}", human());
+    }
+}
+
+/// Writes `v` as one line of JSON to standard output, serialized straight
+/// into a buffer (no intermediate `Value` copy, no formatting machinery:
+/// a tangent answer's certificate can be megabytes).
+fn emit_json(v: &impl serde::Serialize) {
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    if serde_json::to_writer(&mut out, v).is_ok() {
+        let _ = writeln!(out);
+    }
+    let _ = out.flush();
 }
 
 fn number_mode(float: bool) -> crate::number::NumberMode {
@@ -172,11 +182,11 @@ fn number_mode(float: bool) -> crate::number::NumberMode {
 /// is reported.
 fn answer(json: bool, limits: &LimitArgs, request: Request) -> Result<(), Error> {
     let a = request.execute(&limits.budget())?;
-    emit(
-        json,
-        || serde_json::to_value(&a).unwrap_or(serde_json::Value::Null),
-        || a.to_string(),
-    );
+    if json {
+        emit_json(&a);
+    } else {
+        let _ = write!(std::io::stdout().lock(), "{a}");
+    }
     match a.exhausted() {
         Some(e) => Err(e.clone().into()),
         None => Ok(()),

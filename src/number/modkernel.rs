@@ -132,22 +132,27 @@ unsafe fn fold_row_avx2(row: &mut [u64], a: u64, c: &[u32], p2: u64) {
 }
 
 dispatch! {
-    /// `M·v` for a matrix stored by columns (entries in `[0, p)`).
-    pub fn mat_vec / mat_vec_avx2 / mat_vec_generic(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64>
+    /// `M·v` for a matrix of `rows` rows stored by columns, one after the
+    /// other in `cols` (entries in `[0, p)`).
+    pub fn mat_vec / mat_vec_avx2 / mat_vec_generic(fp: &Fp, cols: &[u32], rows: usize, v: &[u64]) -> Vec<u64>
 }
 
 #[inline(always)]
-fn mat_vec_generic(fp: &Fp, cols: &[Vec<u32>], v: &[u64]) -> Vec<u64> {
-    let p2 = fp.p2;
-    let mut acc = vec![0u64; cols.first().map_or(0, |c| c.len())];
-    for (col, &vj) in cols.iter().zip(v) {
+fn mat_vec_generic(fp: &Fp, cols: &[u32], rows: usize, v: &[u64]) -> Vec<u64> {
+    let p2 = fp.p2 as i64;
+    let mut acc = vec![0u64; rows];
+    if rows == 0 {
+        return acc;
+    }
+    for (col, &vj) in cols.chunks_exact(rows).zip(v) {
         if vj == 0 {
             continue;
         }
         let vj = vj as u32 as u64;
         for (a, &m) in acc.iter_mut().zip(col) {
+            // below p² + p² < 2^63: the signed compare is exact
             let t = *a + m as u64 * vj;
-            *a = if t >= p2 { t - p2 } else { t };
+            *a = if t as i64 >= p2 { t - p2 as u64 } else { t };
         }
     }
     acc.iter().map(|&a| fp.reduce(a)).collect()
@@ -231,30 +236,26 @@ fn axpy_lazy_generic(fp: &Fp, acc: &mut [u64], a: u64, x: &[u64]) {
 }
 
 dispatch! {
-    /// `Σ aᵢ·bᵢ mod p` (entries in `[0, p)`), in four lazy lanes.
+    /// `Σ aᵢ·bᵢ mod p` (entries in `[0, p)`): each product (below 2^62)
+    /// split into its low and high 32 bits, each part summed without any
+    /// reduction (no overflow below 2^31 terms), so the loop
+    /// is multiplies, masks, shifts and adds only; two reductions at the
+    /// end.
     pub fn dot / dot_avx2 / dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64
 }
 
 #[inline(always)]
 fn dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
-    let p2 = fp.p2;
-    let mut lanes = [0u64; 4];
-    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
-    let (ra, rb) = (ca.remainder(), cb.remainder());
-    for (x, y) in ca.zip(cb) {
-        for l in 0..4 {
-            let t = lanes[l] + (x[l] as u32 as u64) * (y[l] as u32 as u64);
-            lanes[l] = if t >= p2 { t - p2 } else { t };
-        }
+    const LOW: u64 = 0xffff_ffff;
+    let (mut lo, mut hi) = (0u64, 0u64);
+    // integer sums: the compiler spreads them over vector lanes
+    for (&x, &y) in a.iter().zip(b) {
+        let t = (x as u32 as u64) * (y as u32 as u64);
+        lo += t & LOW;
+        hi += t >> 32;
     }
-    let mut acc = 0u64;
-    for l in lanes {
-        acc = fp.add(acc, fp.reduce(l));
-    }
-    for (&x, &y) in ra.iter().zip(rb) {
-        acc = fp.add(acc, fp.mul(x, y));
-    }
-    acc
+    // h·2^32 + l, each part reduced first
+    fp.reduce(fp.reduce(hi) * fp.reduce(1 << 32) + fp.reduce(lo))
 }
 
 dispatch! {
@@ -278,6 +279,62 @@ fn shoup_horner_generic(y: &mut [u32], d: &[u32], a: u64, w: u64, p: u64) {
         let v = r + u64::from(di);
         *yi = if v >= two_p { v - two_p } else { v } as u32;
     }
+}
+
+dispatch! {
+    /// `acc_j ← (acc_j + a·c_j) mod p`, reduced, for a fixed vector c with
+    /// Shoup's quotients `cw_j = ⌊c_j·2^32/p⌋` ([`shoup_quotients`]);
+    /// `a`, `acc_j`, `c_j` in `[0, p)`.  `a·c_j − ⌊a·cw_j/2^32⌋·p` is in
+    /// `[0, 2p)` (`a < 2^32`), so two conditional subtractions reduce, with
+    /// 32-bit factors only: the step `T·v mod f` of a multiplication
+    /// matrix's columns, vectorised.
+    pub fn axpy_shoup / axpy_shoup_avx2 / axpy_shoup_generic(p: u64, acc: &mut [u64], a: u64, c: &[u64], cw: &[u64]) -> ()
+}
+
+#[inline(always)]
+fn axpy_shoup_generic(p: u64, acc: &mut [u64], a: u64, c: &[u64], cw: &[u64]) {
+    let (a, p) = (a as u32 as u64, p as u32 as u64);
+    for (y, (&cj, &wj)) in acc.iter_mut().zip(c.iter().zip(cw)) {
+        let q = (a * (wj as u32 as u64)) >> 32;
+        let r = (a * (cj as u32 as u64)).wrapping_sub(q * p);
+        let r = if r >= p { r - p } else { r };
+        let t = *y + r;
+        *y = if t >= p { t - p } else { t };
+    }
+}
+
+dispatch! {
+    /// Lazy entries (below `p²`) reduced modulo p, as 32-bit words.  For
+    /// `2^30 < p < 2^31` with `m = ⌊2^62/p⌋ < 2^32`, the quotient estimate
+    /// `q = ⌊⌊x/2^30⌋·m/2^32⌋` satisfies `x/p − 3 < q ≤ x/p`, so
+    /// `x − q·p` is in `[0, 3p)` and two conditional subtractions finish:
+    /// 32-bit factors only, vectorised (Barrett's reduction takes a
+    /// 128-bit product per entry).  Smaller primes take [`Fp::reduce`].
+    pub fn reduce_to_u32 / reduce_to_u32_avx2 / reduce_to_u32_generic(fp: &Fp, x: &[u64]) -> Vec<u32>
+}
+
+#[inline(always)]
+fn reduce_to_u32_generic(fp: &Fp, x: &[u64]) -> Vec<u32> {
+    let p = fp.p;
+    if p <= 1 << 30 {
+        return x.iter().map(|&v| fp.reduce(v) as u32).collect();
+    }
+    let m = (1u64 << 62) / p;
+    x.iter()
+        .map(|&v| {
+            debug_assert!(v < fp.p2);
+            let q = (((v >> 30) as u32 as u64) * (m as u32 as u64)) >> 32;
+            let r = v - q * p;
+            let r = if r >= p { r - p } else { r };
+            (if r >= p { r - p } else { r }) as u32
+        })
+        .collect()
+}
+
+/// Shoup's quotients `⌊c_j·2^32/p⌋` of a fixed vector (entries below p),
+/// for [`axpy_shoup`].
+pub fn shoup_quotients(p: u64, c: &[u64]) -> Vec<u64> {
+    c.iter().map(|&x| (x << 32) / p).collect()
 }
 
 #[cfg(test)]
@@ -327,6 +384,37 @@ mod tests {
 
     /// `solve_columns` solves: `K·x = r` holds for every right-hand side,
     /// and a singular matrix gives `None`.
+    /// Shoup's product reduces exactly, also at the extremes `p − 1`.
+    #[test]
+    fn axpy_shoup_agrees_with_the_definition() {
+        for k in [0usize, 3, 17] {
+            let fp = Fp::new(prime31(k));
+            let mut seed = 9;
+            for n in [0usize, 1, 5, 16, 33] {
+                let mut c = rand_vec(&mut seed, n, fp.p);
+                let mut acc = rand_vec(&mut seed, n, fp.p);
+                if n > 0 {
+                    c[0] = fp.p - 1;
+                    acc[0] = fp.p - 1;
+                }
+                let cw = shoup_quotients(fp.p, &c);
+                for a in [0, 1, 12345, fp.p - 1] {
+                    let want: Vec<u64> = acc
+                        .iter()
+                        .zip(&c)
+                        .map(|(&y, &x)| fp.add(y, fp.mul(a, x)))
+                        .collect();
+                    let mut got = acc.clone();
+                    axpy_shoup(fp.p, &mut got, a, &c, &cw);
+                    assert_eq!(got, want, "p = {}, n = {n}, a = {a}", fp.p);
+                    let mut plain = acc.clone();
+                    axpy_shoup_generic(fp.p, &mut plain, a, &c, &cw);
+                    assert_eq!(plain, want);
+                }
+            }
+        }
+    }
+
     #[test]
     fn axpy_and_dot_agree_with_the_definition() {
         let fp = Fp::new(prime31(2));
@@ -339,12 +427,66 @@ mod tests {
                 .zip(&b)
                 .fold(0, |s, (&x, &y)| fp.add(s, fp.mul(x, y)));
             assert_eq!(dot(&fp, &a, &b), want);
+            assert_eq!(dot_generic(&fp, &a, &b), want);
             let mut acc = b.clone();
             axpy_lazy(&fp, &mut acc, 12345, &a);
             axpy_lazy(&fp, &mut acc, fp.p - 1, &a);
             for i in 0..n {
                 let w = fp.add(b[i], fp.mul(12344, a[i]));
                 assert_eq!(fp.reduce(acc[i]), w);
+            }
+        }
+    }
+
+    /// The vectorised reduction equals Barrett's on random lazy entries and
+    /// at the extremes (0, multiples of p, `p² − 1`), for several primes.
+    #[test]
+    fn reduce_to_u32_agrees_with_barrett() {
+        let mut seed = 77u64;
+        for k in [0usize, 1, 40, 5000] {
+            let fp = Fp::new(prime31(k));
+            let p = fp.p;
+            let mut x: Vec<u64> = (0..1000)
+                .map(|_| {
+                    seed = seed
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    seed % fp.p2
+                })
+                .collect();
+            x.extend([
+                0,
+                1,
+                p - 1,
+                p,
+                p + 1,
+                2 * p,
+                3 * p - 1,
+                (p - 1) * p,
+                fp.p2 - 1,
+            ]);
+            let want: Vec<u32> = x.iter().map(|&v| fp.reduce(v) as u32).collect();
+            assert_eq!(reduce_to_u32(&fp, &x), want, "p = {p}");
+            assert_eq!(reduce_to_u32_generic(&fp, &x), want, "p = {p}");
+        }
+        // a small prime takes Barrett's reduction (p² − 1 ≡ p − 1)
+        let small = Fp::new(1_000_003);
+        assert_eq!(
+            reduce_to_u32(&small, &[small.p2 - 1, 5]),
+            vec![1_000_002, 5]
+        );
+    }
+
+    /// The split sums of [`dot`] at their largest: every entry `p − 1`.
+    #[test]
+    fn dot_of_the_largest_entries() {
+        for k in [0usize, 5] {
+            let fp = Fp::new(prime31(k));
+            for n in [1usize, 3, 4, 1001, 100_003] {
+                let a = vec![fp.p - 1; n];
+                // (p − 1)² = 1 (mod p)
+                assert_eq!(dot(&fp, &a, &a), n as u64 % fp.p);
+                assert_eq!(dot_generic(&fp, &a, &a), n as u64 % fp.p);
             }
         }
     }
@@ -358,11 +500,8 @@ mod tests {
             let rhs: Vec<Vec<u64>> = (0..3).map(|_| rand_vec(&mut seed, n, fp.p)).collect();
             let sol = solve_columns(&fp, &k, &rhs).expect("random matrices are invertible");
             for (r, x) in rhs.iter().zip(&sol) {
-                let cols: Vec<Vec<u32>> = k
-                    .iter()
-                    .map(|c| c.iter().map(|&v| v as u32).collect())
-                    .collect();
-                assert_eq!(&mat_vec(&fp, &cols, x), r);
+                let cols: Vec<u32> = k.iter().flatten().map(|&v| v as u32).collect();
+                assert_eq!(&mat_vec(&fp, &cols, n, x), r);
             }
         }
         let mut k: Vec<Vec<u64>> = (0..4).map(|_| rand_vec(&mut seed, 4, fp.p)).collect();

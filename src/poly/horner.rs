@@ -141,11 +141,29 @@ impl FloatValue {
     }
 
     /// The value as a rational (exactly `a·2^f`).
+    #[cfg(test)]
     pub(crate) fn to_q(&self) -> crate::number::Q {
         crate::number::dyadic(
             self.a.clone() << self.f.max(0) as usize,
             (-self.f).max(0) as usize,
         )
+    }
+
+    /// `⌊(self / by)·2^k⌋ / 2^k` of the two values' centres, by one
+    /// integer division (no gcd); `None` when `by`'s centre is 0.
+    pub(crate) fn quotient_floor(&self, by: &FloatValue, k: usize) -> Option<crate::number::Q> {
+        use num_integer::Integer;
+        if by.a.is_zero() {
+            return None;
+        }
+        // a·2^f / (b·2^g) · 2^k = a·2^(f − g + k) / b
+        let sh = self.f - by.f + k as i64;
+        let q = if sh >= 0 {
+            (&self.a << sh as usize).div_floor(&by.a)
+        } else {
+            self.a.div_floor(&(&by.a << (-sh) as usize))
+        };
+        Some(crate::number::dyadic(q, k))
     }
 
     /// The sign of `p(x)` when `|a|·2^f` exceeds the error bound.
@@ -513,6 +531,37 @@ mod tests {
                 horner_float(p.coeffs(), &FloatCoeffs::new(p.coeffs()), &m, k, 200, false).unwrap();
             let x = Q::new(m.clone(), BigInt::one() << k as usize);
             assert_eq!(v.sign(), Some(p.sign_at(&x)), "{m}/2^{k}");
+        }
+    }
+
+    /// The quotient of two centres, floored on the grid 2^-k, equals the
+    /// floor of the exact quotient of their rationals (signs mixed, at
+    /// positive and negative exponents).
+    #[test]
+    fn quotient_floor_is_the_floor_of_the_quotient() {
+        let p = ZPoly::from_i64s(&[-7, 3, 0, 5, -1]);
+        let q = ZPoly::from_i64s(&[2, -9, 4, 1, 3]);
+        for (m, k) in [
+            (BigInt::from(5), 3u64),
+            (BigInt::from(-1234567), 10),
+            (BigInt::from(3) << 70usize, 2),
+        ] {
+            let at = |r: &ZPoly| {
+                horner_float(r.coeffs(), &FloatCoeffs::new(r.coeffs()), &m, k, 200, false).unwrap()
+            };
+            let (a, b) = (at(&p), at(&q));
+            for bits in [0usize, 5, 64, 130] {
+                let x = a.to_q() / b.to_q();
+                let want = crate::number::dyadic_floor(x.numer(), x.denom(), bits);
+                assert_eq!(
+                    a.quotient_floor(&b, bits),
+                    Some(want),
+                    "{m}/2^{k}, {bits} bits"
+                );
+                let y = b.to_q() / a.to_q();
+                let want = crate::number::dyadic_floor(y.numer(), y.denom(), bits);
+                assert_eq!(b.quotient_floor(&a, bits), Some(want));
+            }
         }
     }
 }

@@ -162,23 +162,21 @@ fn image_mod_p(
     // a separating linear form t = x + a·y + b·z gives A ≅ F_p[T]/(m_t)
     let mut kp = None;
     for (a, b) in [(12345u64, 678), (31, 1_000_003), (7_777_777, 2)] {
-        let cols: Vec<Vec<u32>> = (0..n)
-            .map(|j| {
-                (0..n)
-                    .map(|i| {
-                        let s = quo.mult[0][j][i] as u64
-                            + a * quo.mult[1][j][i] as u64
-                            + b * quo.mult[2][j][i] as u64;
-                        fp.reduce(s) as u32
-                    })
-                    .collect()
+        let mult = &quo.mult;
+        let cols: Vec<u32> = (0..n)
+            .flat_map(|j| {
+                (0..n).map(move |i| {
+                    let s =
+                        mult[0][j][i] as u64 + a * mult[1][j][i] as u64 + b * mult[2][j][i] as u64;
+                    fp.reduce(s) as u32
+                })
             })
             .collect();
         let mut kry = Vec::with_capacity(n + 1);
         kry.push(e1.clone());
         for _ in 0..n {
             crate::budget::check();
-            let next = mat_vec(fp, &cols, kry.last().expect("non-empty"));
+            let next = mat_vec(fp, &cols, n, kry.last().expect("non-empty"));
             kry.push(next);
         }
         let top = kry.pop().expect("n + 1 vectors");

@@ -130,16 +130,15 @@ pub(crate) fn kronecker_mod(
     ell: [u64; 3],
 ) -> Option<(Vec<u64>, [Vec<u64>; 3])> {
     let n = quo.dim();
-    let cols: Vec<Vec<u32>> = (0..n)
-        .map(|j| {
-            (0..n)
-                .map(|i| {
-                    let s = ell[0] * quo.mult[0][j][i] as u64
-                        + ell[1] * quo.mult[1][j][i] as u64
-                        + ell[2] * quo.mult[2][j][i] as u64;
-                    fp.reduce(s) as u32
-                })
-                .collect()
+    let mult = &quo.mult;
+    let cols: Vec<u32> = (0..n)
+        .flat_map(|j| {
+            (0..n).map(move |i| {
+                let s = ell[0] * mult[0][j][i] as u64
+                    + ell[1] * mult[1][j][i] as u64
+                    + ell[2] * mult[2][j][i] as u64;
+                fp.reduce(s) as u32
+            })
         })
         .collect();
     let mut e1 = vec![0u64; n];
@@ -148,7 +147,7 @@ pub(crate) fn kronecker_mod(
     kry.push(e1);
     for _ in 0..n {
         crate::budget::check();
-        let next = mat_vec(fp, &cols, kry.last().expect("non-empty"));
+        let next = mat_vec(fp, &cols, n, kry.last().expect("non-empty"));
         kry.push(next);
     }
     let top = kry.pop().expect("n + 1 vectors");
@@ -308,12 +307,15 @@ pub(crate) struct ModAlgebra {
     fp: Fp,
     /// `T^n = Σ c_j T^j` (length n).
     c: Vec<u64>,
+    /// Shoup's quotients of c, for [`ModAlgebra::times_t`].
+    cw: Vec<u64>,
 }
 
 impl ModAlgebra {
     /// From `c` with `T^n = Σ c_j T^j`.
     pub(crate) fn from_c(fp: Fp, c: Vec<u64>) -> ModAlgebra {
-        ModAlgebra { fp, c }
+        let cw = crate::number::modkernel::shoup_quotients(fp.p, &c);
+        ModAlgebra { fp, c, cw }
     }
 
     /// From a polynomial with ascending residues and a non-zero leading
@@ -325,7 +327,7 @@ impl ModAlgebra {
         }
         let inv = fp.inv(lc)?;
         let c = low.iter().map(|&a| fp.neg(fp.mul(a, inv))).collect();
-        Some(ModAlgebra { fp, c })
+        Some(ModAlgebra::from_c(fp, c))
     }
 
     fn n(&self) -> usize {
@@ -412,57 +414,89 @@ impl ModAlgebra {
         p
     }
 
+    /// `T·v mod f`: a shift and one fold (n products).
+    fn times_t(&self, v: &[u64]) -> Vec<u64> {
+        let mut out = Vec::with_capacity(self.n());
+        out.push(0);
+        out.extend_from_slice(&v[..self.n() - 1]);
+        self.fold_top(&mut out, v[self.n() - 1]);
+        out
+    }
+
+    /// `out ← out + top·T^n mod f` (the fold of [`Self::times_t`]).
+    fn fold_top(&self, out: &mut [u64], top: u64) {
+        if top != 0 {
+            crate::number::modkernel::axpy_shoup(self.fp.p, out, top, &self.c, &self.cw);
+        }
+    }
+
+    /// The columns `s·T^j mod f` (`j < n`) of the multiplication by `s`,
+    /// one after the other, each from the one before by a shift and a fold
+    /// (`n²` products).
+    fn mult_columns(&self, s: &[u64]) -> Vec<u64> {
+        let n = self.n();
+        let mut m = Vec::with_capacity(n * n);
+        m.extend_from_slice(&s[..s.len().min(n)]);
+        m.resize(n, 0);
+        for j in 1..n {
+            let prev = (j - 1) * n;
+            let top = m[prev + n - 1];
+            m.push(0);
+            m.extend_from_within(prev..prev + n - 1);
+            self.fold_top(&mut m[j * n..], top);
+        }
+        m
+    }
+
+    /// [`Self::mult_columns`] as 32-bit entries, for
+    /// [`mat_vec`](crate::number::modkernel::mat_vec).
+    fn mult_matrix(&self, s: &[u64]) -> Vec<u32> {
+        self.mult_columns(s).into_iter().map(|x| x as u32).collect()
+    }
+
     /// The characteristic polynomial of the multiplication by `s`
-    /// (ascending, monic, degree n): power sums `Tr(s^k)` by baby steps and
-    /// giant steps over the Hankel matrix of traces, then Newton's
-    /// identities (p > n).
+    /// (ascending, monic, degree n): power sums `Tr(s^k)` by baby steps
+    /// and giant steps, then Newton's identities (p > n).  With r = ⌈√(n+1)⌉
+    /// and `G = s^r`, `Tr(s^(jr+i)) = λ_j(s^i)` for the linear forms
+    /// `λ_j = Tr(G^j ·)`: the baby steps `s^i` are products by the matrix
+    /// of s, the forms `λ_(j+1)(x) = λ_j(G·x)` products by the transpose
+    /// of G's matrix (`λ_0` = the traces of the powers of T), so about
+    /// `(2√n + 4)·n²` products in all, no product modulo f.
     pub(crate) fn charpoly(&self, s: &[u64]) -> Vec<u64> {
-        use crate::number::modkernel::{axpy_lazy, dot};
+        use crate::number::modkernel::{dot, mat_vec};
         let fp = &self.fp;
         let n = self.n();
-        let t = self.traces(2 * n - 1);
-        // r = ⌈√(n + 1)⌉ baby steps
         let r = (1..)
             .find(|&r: &usize| r * r > n)
             .expect("r² > n for some r");
-        // baby steps s^0 … s^(r−1) and H·s^i (H_ij = Tr(T^(i+j)))
+        let ms = self.mult_matrix(s);
+        // baby steps s^0 … s^(r−1), then G = s^r
         let mut one = vec![0u64; n];
         one[0] = 1;
         let mut baby: Vec<Vec<u64>> = vec![one];
-        for i in 1..r {
+        for i in 1..=r {
             crate::budget::check();
-            let next = self.mul(&baby[i - 1], s);
+            let next = mat_vec(fp, &ms, n, &baby[i - 1]);
             baby.push(next);
         }
-        let hank: Vec<Vec<u64>> = baby
-            .iter()
-            .map(|b| {
-                let mut acc = vec![0u64; n];
-                for (j, &bj) in b.iter().enumerate() {
-                    if bj != 0 {
-                        axpy_lazy(fp, &mut acc, bj, &t[j..j + n]);
-                    }
-                }
-                acc.iter().map(|&x| fp.reduce(x)).collect()
-            })
-            .collect();
-        let giant = self.mul(&baby[r - 1], s);
+        let giant = baby.pop().expect("r + 1 powers");
+        let mg = self.mult_columns(&giant);
         // power sums P_k = Tr(s^k) for k = 1 … n
         let mut ps = vec![0u64; n + 1];
-        let mut g = baby[0].clone();
+        let mut lam = self.traces(n);
         let mut k0 = 0;
         while k0 <= n {
             crate::budget::check();
-            for (i, h) in hank.iter().enumerate() {
+            for (i, b) in baby.iter().enumerate() {
                 let k = k0 + i;
                 if k > n {
                     break;
                 }
-                ps[k] = dot(fp, &g, h);
+                ps[k] = dot(fp, &lam, b);
             }
             k0 += r;
             if k0 <= n {
-                g = self.mul(&g, &giant);
+                lam = mg.chunks_exact(n).map(|col| dot(fp, &lam, col)).collect();
             }
         }
         // Newton: χ = Σ e_k u^(n−k), k·e_k = −Σ_{i=1}^k P_i e_{k−i}
@@ -480,11 +514,13 @@ impl ModAlgebra {
     }
 
     /// [`ModAlgebra::eval`] when coordinate `sep` is T itself (the
-    /// separating coordinate of a RUR; `xyz[sep]` is not read): the
-    /// polynomials in T are placed, not multiplied, and multiplying by them
-    /// costs `n·deg` — full products only for the powers of one other
-    /// coordinate and for Horner in the third.
+    /// separating coordinate of a RUR; `xyz[sep]` is not read): a term
+    /// `c·u1^a·u2^b·T^e` adds `c·T^e·u2^b` (powers of u2 by its matrix,
+    /// then shifts by T) to the coefficient of `u1^a`, and Horner's rule in
+    /// u1 runs by the matrix of u1: `(deg u1 + deg u2 + 2)·n²` products
+    /// and `n` per term, no product modulo f.
     pub(crate) fn eval_sep(&self, p: &ModPoly, xyz: [&[u64]; 3], sep: usize) -> Vec<u64> {
+        use crate::number::modkernel::{axpy_lazy, mat_vec};
         let fp = &self.fp;
         let n = self.n();
         let terms: Vec<([u32; 3], u64)> = p.iter().map(|&(m, c)| (exps(m), c as u64)).collect();
@@ -500,40 +536,54 @@ impl ModAlgebra {
             (others[1], others[0])
         };
         let (d1, d2, ds) = (deg(u1), deg(u2), deg(sep));
+        // T^e·u2^b for b ≤ d2, e ≤ ds: powers by the matrix of u2, then shifts
         let mut one = vec![0u64; n];
         one[0] = 1;
         let mut pw: Vec<Vec<u64>> = vec![one];
-        for k in 1..=d2 {
-            crate::budget::check();
-            let next = self.mul(&pw[k - 1], xyz[u2]);
-            pw.push(next);
+        if d2 >= 1 {
+            let mut u = xyz[u2].to_vec();
+            u.resize(n, 0);
+            pw.push(u);
         }
-        // C_a = Σ_b u2^b · P_{a,b}(T)
-        let mut short = vec![vec![vec![0u64; ds + 1]; d2 + 1]; d1 + 1];
-        for (e, c) in &terms {
-            let x = &mut short[e[u1] as usize][e[u2] as usize][e[sep] as usize];
-            *x = fp.add(*x, *c);
+        if d2 >= 2 {
+            let m2 = self.mult_matrix(xyz[u2]);
+            for k in 2..=d2 {
+                crate::budget::check();
+                let next = mat_vec(fp, &m2, n, &pw[k - 1]);
+                pw.push(next);
+            }
         }
-        let coeffs: Vec<Vec<u64>> = short
-            .iter()
-            .map(|row| {
-                let mut acc = vec![0u64; n];
-                for (b, pt) in row.iter().enumerate() {
-                    if pt.iter().all(|&x| x == 0) {
-                        continue;
-                    }
-                    let prod = self.mul(&pw[b], pt);
-                    for (a, x) in acc.iter_mut().zip(prod) {
-                        *a = fp.add(*a, x);
-                    }
+        let shifted: Vec<Vec<Vec<u64>>> = pw
+            .into_iter()
+            .map(|p| {
+                let mut row = Vec::with_capacity(ds + 1);
+                row.push(p);
+                for e in 1..=ds {
+                    let next = self.times_t(&row[e - 1]);
+                    row.push(next);
                 }
-                acc
+                row
             })
             .collect();
-        let mut acc = coeffs[d1].clone();
-        for a in (0..d1).rev() {
-            acc = self.mul(&acc, xyz[u1]);
-            for (x, &y) in acc.iter_mut().zip(&coeffs[a]) {
+        // C_a = Σ c·T^e·u2^b over the terms of exponent a in u1
+        let mut coeffs = vec![vec![0u64; n]; d1 + 1];
+        for (e, c) in &terms {
+            let v = &shifted[e[u2] as usize][e[sep] as usize];
+            axpy_lazy(fp, &mut coeffs[e[u1] as usize], *c, v);
+        }
+        for c in coeffs.iter_mut() {
+            c.iter_mut().for_each(|x| *x = fp.reduce(*x));
+        }
+        // Horner in u1 by its matrix
+        let mut acc = coeffs.pop().expect("d1 + 1 coefficients");
+        if d1 == 0 {
+            return acc;
+        }
+        let m1 = self.mult_matrix(xyz[u1]);
+        for c in coeffs.iter().rev() {
+            crate::budget::check();
+            acc = mat_vec(fp, &m1, n, &acc);
+            for (x, &y) in acc.iter_mut().zip(c) {
                 *x = fp.add(*x, y);
             }
         }
@@ -744,14 +794,14 @@ fn euclid(
         }
         // the divisor and its cofactor reduced once, on 32 bits; the
         // quotient's terms are top·lc⁻¹
-        let d: Vec<u32> = r1.iter().map(|&x| fp.reduce(x) as u32).collect();
+        let d = crate::number::modkernel::reduce_to_u32(fp, &r1);
         let il = fp
             .inv(*d.last().expect("non-empty") as u64)
             .expect("non-zero");
         let e = (len > 0).then(|| {
             // entries past the cofactor's degree were never touched
             let sl = s1.iter().rposition(|&x| x != 0).map_or(0, |i| i + 1);
-            let mut e: Vec<u32> = s1[..sl].iter().map(|&x| fp.reduce(x) as u32).collect();
+            let mut e = crate::number::modkernel::reduce_to_u32(fp, &s1[..sl]);
             while e.last() == Some(&0) {
                 e.pop();
             }

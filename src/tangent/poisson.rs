@@ -209,15 +209,12 @@ impl PoissonAnalysis {
             let v = horner_float(p.coeffs(), &prepared[i], t.numer(), k, prec, false)?;
             (v.correct_bits()? >= need).then_some(v)
         };
-        let dw = at(0)?.to_q();
+        let dw = at(0)?;
         let mut out: [Q; 3] = Default::default();
         for (i, (o, v)) in out.iter_mut().zip(&self.rur.v).enumerate() {
-            let x = if v.is_zero() {
-                Q::zero()
-            } else {
-                &at(i + 1)?.to_q() / &dw
-            };
-            *o = dyadic_floor(x.numer(), x.denom(), bits as usize + 16);
+            if !v.is_zero() {
+                *o = at(i + 1)?.quotient_floor(&dw, bits as usize + 16)?;
+            }
         }
         Some(Some(out))
     }
@@ -296,7 +293,8 @@ fn approx_value(p: &QMPoly, pt: &[Q; 3]) -> Q {
         }
         acc += t << (kk * (d - deg));
     }
-    Q::new(acc, BigInt::one() << (kk * d)) * k
+    // over a power of two: no gcd
+    dyadic(acc, kk * d) * k
 }
 
 /// A basis `a, b` of the plane orthogonal to `n ≠ 0` (integer vectors).
@@ -405,14 +403,18 @@ pub(crate) fn census_real_roots(
             return None;
         }
     }
+    // ends rounded outward to a grid of an eighth of the span's width
+    // (short dyadics: cheap exact signs), still disjoint
+    let mut spans: Vec<_> = spans.iter().map(|(a, b)| round_out(a, b)).collect();
     spans.sort_by(|a, b| a.0.cmp(&b.0));
     if spans.windows(2).any(|w| w[0].1 >= w[1].0) {
         return None;
     }
     let sq = critical.squarefree_part();
+    let signer = DyadicSigner::new(&sq);
     let mut roots = Vec::new();
-    for (a, b) in spans {
-        let (sa, sb) = (sq.sign_at(&a), sq.sign_at(&b));
+    for (a, b, (ma, mb, k)) in spans {
+        let (sa, sb) = (signer.sign_at(&ma, k), signer.sign_at(&mb, k));
         if sa == 0 || sb == 0 {
             return None;
         }
@@ -421,6 +423,37 @@ pub(crate) fn census_real_roots(
         }
     }
     Some(roots)
+}
+
+/// `[a, b]` (`a < b`) widened to the grid `2^g` with `2^(g+3) ≤ b − a`:
+/// the ends as rationals and as numerators over `2^k` (`k = max(0, −g)`).
+fn round_out(a: &Q, b: &Q) -> (Q, Q, (BigInt, BigInt, u64)) {
+    let w = b - a;
+    let g = w.numer().bits() as i64 - w.denom().bits() as i64 - 4;
+    let (k, sh) = ((-g).max(0) as usize, g.max(0) as usize);
+    // ⌊a·2^-g⌋ and ⌈b·2^-g⌉ on the grid, as numerators over 2^k
+    let scaled = |x: &Q| -> (BigInt, BigInt) {
+        let n = if g <= 0 {
+            x.numer() << k
+        } else {
+            x.numer().clone()
+        };
+        let d = if g <= 0 {
+            x.denom().clone()
+        } else {
+            x.denom() << sh
+        };
+        (n, d)
+    };
+    let (na, da) = scaled(a);
+    let (nb, db) = scaled(b);
+    let ma = na.div_floor(&da) << sh;
+    let mb = nb.div_ceil(&db) << sh;
+    (
+        dyadic(ma.clone(), k),
+        dyadic(mb.clone(), k),
+        (ma, mb, k as u64),
+    )
 }
 
 /// `ℓ(re centre) ± Σ|ℓᵢ|·half`, exactly: the values of ℓ on the real

@@ -197,6 +197,52 @@ fn algebra_mod_p_is_consistent() {
     }
 }
 
+/// The characteristic polynomial by baby steps, giant steps and Newton's
+/// identities equals its definition where f splits: for
+/// `f = ∏(T − aᵢ)` with distinct `aᵢ`, `χ_s(u) = ∏(u − s(aᵢ))`.  Sizes
+/// around the square numbers, where the number of baby steps changes.
+#[test]
+fn charpoly_is_the_product_over_the_roots_of_a_split_f() {
+    let fp = Fp::new(prime31(7));
+    let mut seed = 41u64;
+    let mut rnd = |n: usize| crate::roots::poisson::residues_for_tests(&fp, &mut seed, n);
+    // (Σ cᵢ Xⁱ)·(X − a), ascending
+    let times_linear = |c: &[u64], a: u64| -> Vec<u64> {
+        let mut out = vec![0u64; c.len() + 1];
+        for (i, &ci) in c.iter().enumerate() {
+            out[i + 1] = fp.add(out[i + 1], ci);
+            out[i] = fp.add(out[i], fp.neg(fp.mul(ci, a)));
+        }
+        out
+    };
+    let eval = |c: &[u64], x: u64| {
+        c.iter()
+            .rev()
+            .fold(0, |acc, &ci| fp.add(fp.mul(acc, x), ci))
+    };
+    for n in [1usize, 2, 3, 4, 8, 9, 10, 15, 16, 17, 48, 49, 120] {
+        let mut roots = rnd(n);
+        roots.sort_unstable();
+        roots.dedup();
+        let n = roots.len();
+        let f = roots
+            .iter()
+            .fold(vec![1u64], |acc, &a| times_linear(&acc, a));
+        let alg = ModAlgebra::from_poly(fp, &f).unwrap();
+        for s in [rnd(n), {
+            // a constant: one eigenvalue of multiplicity n
+            let mut t = vec![0u64; n];
+            t[0] = 3;
+            t
+        }] {
+            let want = roots
+                .iter()
+                .fold(vec![1u64], |acc, &a| times_linear(&acc, eval(&s, a)));
+            assert_eq!(alg.charpoly(&s), want, "n = {n}");
+        }
+    }
+}
+
 fn ellipsoid(e: &str) -> Ellipsoid {
     Ellipsoid::from_poly(&parse_poly(e).unwrap()).unwrap()
 }
