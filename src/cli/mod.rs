@@ -148,23 +148,18 @@ enum Command {
 }
 
 /// Prints the JSON or the human form (only the one asked for is built).
-fn emit(json: bool, v: impl FnOnce() -> serde_json::Value, human: impl FnOnce() -> String) {
+/// The JSON is serialized straight into a buffered standard output (no
+/// intermediate copy: a tangent answer's certificate can be megabytes).
+fn emit<T: serde::Serialize>(json: bool, v: impl FnOnce() -> T, human: impl FnOnce() -> String) {
     if json {
-        emit_json(&v());
+        let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+        if serde_json::to_writer(&mut out, &v()).is_ok() {
+            let _ = writeln!(out);
+        }
+        let _ = out.flush();
     } else {
         let _ = write!(std::io::stdout().lock(), "{}", human());
     }
-}
-
-/// Writes `v` as one line of JSON to standard output, serialized straight
-/// into a buffer (no intermediate `Value` copy, no formatting machinery:
-/// a tangent answer's certificate can be megabytes).
-fn emit_json(v: &impl serde::Serialize) {
-    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    if serde_json::to_writer(&mut out, v).is_ok() {
-        let _ = writeln!(out);
-    }
-    let _ = out.flush();
 }
 
 fn number_mode(float: bool) -> crate::number::NumberMode {
@@ -182,11 +177,7 @@ fn number_mode(float: bool) -> crate::number::NumberMode {
 /// is reported.
 fn answer(json: bool, limits: &LimitArgs, request: Request) -> Result<(), Error> {
     let a = request.execute(&limits.budget())?;
-    if json {
-        emit_json(&a);
-    } else {
-        let _ = write!(std::io::stdout().lock(), "{a}");
-    }
+    emit(json, || &a, || a.to_string());
     match a.exhausted() {
         Some(e) => Err(e.clone().into()),
         None => Ok(()),

@@ -669,6 +669,24 @@ impl ModQuotient {
         Some(ModQuotient { basis, mult })
     }
 
+    /// The matrix of the multiplication by `Σ c_v·x_v` modulo p, by
+    /// columns one after the other (for
+    /// [`mat_vec`](crate::number::modkernel::mat_vec)).
+    pub fn combined_columns(&self, fp: &Fp, c: [u64; 3]) -> Vec<u32> {
+        let n = self.dim();
+        let mult = &self.mult;
+        (0..n)
+            .flat_map(|j| {
+                (0..n).map(move |i| {
+                    let s = c[0] * mult[0][j][i] as u64
+                        + c[1] * mult[1][j][i] as u64
+                        + c[2] * mult[2][j][i] as u64;
+                    fp.reduce(s) as u32
+                })
+            })
+            .collect()
+    }
+
     /// Dimension of `A_p`.
     pub fn dim(&self) -> usize {
         self.basis.len()

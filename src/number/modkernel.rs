@@ -255,7 +255,7 @@ fn dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
         hi += t >> 32;
     }
     // h·2^32 + l, each part reduced first
-    fp.reduce(fp.reduce(hi) * fp.reduce(1 << 32) + fp.reduce(lo))
+    fp.reduce(fp.reduce(hi) * fp.c32 + fp.reduce(lo))
 }
 
 dispatch! {

@@ -28,8 +28,9 @@ pub struct Fp {
     pub p2: u64,
     /// `⌊(2^64 − 1)/p⌋`.
     barrett: u64,
-    /// `2^32 mod p` and `2^64 mod p` (for [`Fp::fold_digit`]).
-    c32: u64,
+    /// `2^32 mod p` and `2^64 mod p` (for [`Fp::fold_digit`] and the dot
+    /// products of `modkernel`).
+    pub(crate) c32: u64,
     c64: u64,
 }
 

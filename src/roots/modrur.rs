@@ -162,16 +162,7 @@ fn image_mod_p(
     // a separating linear form t = x + a·y + b·z gives A ≅ F_p[T]/(m_t)
     let mut kp = None;
     for (a, b) in [(12345u64, 678), (31, 1_000_003), (7_777_777, 2)] {
-        let mult = &quo.mult;
-        let cols: Vec<u32> = (0..n)
-            .flat_map(|j| {
-                (0..n).map(move |i| {
-                    let s =
-                        mult[0][j][i] as u64 + a * mult[1][j][i] as u64 + b * mult[2][j][i] as u64;
-                    fp.reduce(s) as u32
-                })
-            })
-            .collect();
+        let cols = quo.combined_columns(fp, [1, a, b]);
         let mut kry = Vec::with_capacity(n + 1);
         kry.push(e1.clone());
         for _ in 0..n {

@@ -130,17 +130,7 @@ pub(crate) fn kronecker_mod(
     ell: [u64; 3],
 ) -> Option<(Vec<u64>, [Vec<u64>; 3])> {
     let n = quo.dim();
-    let mult = &quo.mult;
-    let cols: Vec<u32> = (0..n)
-        .flat_map(|j| {
-            (0..n).map(move |i| {
-                let s = ell[0] * mult[0][j][i] as u64
-                    + ell[1] * mult[1][j][i] as u64
-                    + ell[2] * mult[2][j][i] as u64;
-                fp.reduce(s) as u32
-            })
-        })
-        .collect();
+    let cols = quo.combined_columns(fp, ell);
     let mut e1 = vec![0u64; n];
     e1[0] = 1;
     let mut kry = Vec::with_capacity(n + 1);

@@ -431,29 +431,23 @@ fn round_out(a: &Q, b: &Q) -> (Q, Q, (BigInt, BigInt, u64)) {
     let w = b - a;
     let g = w.numer().bits() as i64 - w.denom().bits() as i64 - 4;
     let (k, sh) = ((-g).max(0) as usize, g.max(0) as usize);
-    // ⌊a·2^-g⌋ and ⌈b·2^-g⌉ on the grid, as numerators over 2^k
-    let scaled = |x: &Q| -> (BigInt, BigInt) {
-        let n = if g <= 0 {
-            x.numer() << k
-        } else {
-            x.numer().clone()
-        };
-        let d = if g <= 0 {
-            x.denom().clone()
-        } else {
-            x.denom() << sh
-        };
-        (n, d)
-    };
-    let (na, da) = scaled(a);
-    let (nb, db) = scaled(b);
-    let ma = na.div_floor(&da) << sh;
-    let mb = nb.div_ceil(&db) << sh;
+    let ma = grid_index(a, g, false) << sh;
+    let mb = grid_index(b, g, true) << sh;
     (
         dyadic(ma.clone(), k),
         dyadic(mb.clone(), k),
         (ma, mb, k as u64),
     )
+}
+
+/// `⌊x / 2^g⌋`, or `⌈x / 2^g⌉` when `up`: x's place on the grid `2^g`.
+fn grid_index(x: &Q, g: i64, up: bool) -> BigInt {
+    let (n, d) = if g <= 0 {
+        (x.numer() << (-g) as usize, x.denom().clone())
+    } else {
+        (x.numer().clone(), x.denom() << g as usize)
+    };
+    if up { n.div_ceil(&d) } else { n.div_floor(&d) }
 }
 
 /// `ℓ(re centre) ± Σ|ℓᵢ|·half`, exactly: the values of ℓ on the real
@@ -888,11 +882,7 @@ fn narrow_on_grid(
     digits: i64,
 ) -> Option<RootInterval> {
     let g = v.numer().bits() as i64 - v.denom().bits() as i64 - digits;
-    let t: BigInt = if g <= 0 {
-        (v.numer() << (-g) as usize).div_floor(v.denom())
-    } else {
-        v.numer().div_floor(&(v.denom() << g as usize))
-    };
+    let t = grid_index(v, g, false);
     // the ends (t − 256)·2^g and (t + 257)·2^g as numerators over 2^k
     let (k, sh) = ((-g).max(0) as usize, g.max(0) as usize);
     let (ml, mh): (BigInt, BigInt) = ((&t - 256) << sh, (&t + 257) << sh);
@@ -985,10 +975,9 @@ fn box_eval(p: &QMPoly, bx: &[(Q, Q); 3]) -> (Q, Q) {
 /// `[lo, hi]` widened to the grid `2^-g`: `[⌊lo·2^g⌋, ⌈hi·2^g⌉]/2^g` (the
 /// same interval when its ends are on the grid already).
 fn outward((lo, hi): (Q, Q), g: u32) -> (Q, Q) {
-    let g = g as usize;
-    let down = (lo.numer() << g).div_floor(lo.denom());
-    let up = (hi.numer() << g).div_ceil(hi.denom());
-    (dyadic(down, g), dyadic(up, g))
+    let down = grid_index(&lo, -i64::from(g), false);
+    let up = grid_index(&hi, -i64::from(g), true);
+    (dyadic(down, g as usize), dyadic(up, g as usize))
 }
 
 /// An enclosure of S at the zero of the RUR whose τ lies in `[lo, hi]`.
