@@ -249,7 +249,8 @@ fn reduce_row<'p>(
     for &(c, v) in row {
         acc[c as usize] = v as u64;
     }
-    let mut out = Vec::new();
+    // the reduced row is usually about as long as the row
+    let mut out = Vec::with_capacity(row.len());
     let (p, p2) = (fp.p, fp.p2);
     for c in start as usize..acc.len() {
         let a = acc[c];

@@ -236,9 +236,9 @@ fn axpy_lazy_generic(fp: &Fp, acc: &mut [u64], a: u64, x: &[u64]) {
 }
 
 dispatch! {
-    /// `Σ aᵢ·bᵢ mod p` (entries in `[0, p)`): each product (below 2^62)
-    /// split into its low and high 32 bits, each part summed without any
-    /// reduction (no overflow below 2^31 terms), so the loop
+    /// `Σ aᵢ·bᵢ mod p` (entries below 2^32, e.g. in `[0, p)`): each
+    /// product (below 2^64) split into its low and high 32 bits, each part
+    /// summed without any reduction (no overflow below 2^32 terms), so the loop
     /// is multiplies, masks, shifts and adds only; two reductions at the
     /// end.
     pub fn dot / dot_avx2 / dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64

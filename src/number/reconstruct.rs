@@ -132,20 +132,34 @@ impl Fp {
 /// Primes per block of [`BlockResidues`].
 const BLOCK: usize = 8;
 
+/// Integers of more than this many 64-bit digits take the dot-product path
+/// of [`BlockResidues`].
+const LONG: usize = 8;
+
 /// Residues of a fixed list of integers modulo the primes [`prime31`]`(k)`,
-/// `k = 0, 1, …`, a block of [`BlockResidues::BLOCK`] consecutive primes at
-/// a time: each integer's digits are read once, from the top, and folded
-/// into the eight residues together (one Barrett step per 64-bit digit and
-/// prime, independent across primes, so they overlap in the pipeline): a
-/// quarter fewer instructions than a long division by the block's product
-/// followed by reductions of the remainder (300-bit cubic), and fewer
-/// passes over memory than one pass over the digits per prime.
+/// `k = 0, 1, …`.  Integers of at most [`LONG`] 64-bit digits are reduced a
+/// block of [`BlockResidues::BLOCK`] consecutive primes at a time: each
+/// integer's digits are read once, from the top, and folded into the eight
+/// residues together (one Barrett step per 64-bit digit and prime,
+/// independent across primes, so they overlap in the pipeline).  Longer
+/// ones are cut once into 32-bit digits `hᵢ`, and their residue modulo p is
+/// the dot product `Σ hᵢ·(2^(32i) mod p)` ([`super::modkernel::dot`]:
+/// vectorised multiplies and adds, one reduction per integer and prime; on
+/// the 2000-bit RUR of dense degree 8 against a rotated ellipsoid, with 501
+/// primes of D(u), 87 instead of 148 million instructions).
 pub struct BlockResidues<'a> {
     ints: Vec<&'a BigInt>,
     /// The index of the cached block (`usize::MAX`: none).
     block: usize,
-    /// Per integer, its residues modulo the block's primes (sign applied).
+    /// Per short integer, its residues modulo the block's primes (sign
+    /// applied; zeros for the long ones).
     rems: Vec<[u64; BLOCK]>,
+    /// The 32-bit digits of the long integers (ascending, one per word).
+    digits: Vec<u64>,
+    /// Per long integer: its index, where its digits start, how many.
+    long: Vec<(usize, usize, usize)>,
+    /// `2^(32i) mod p` for the current prime (a buffer).
+    powers: Vec<u64>,
 }
 
 impl<'a> BlockResidues<'a> {
@@ -154,10 +168,22 @@ impl<'a> BlockResidues<'a> {
 
     /// The residues of `ints` will be asked for.
     pub fn new(ints: Vec<&'a BigInt>) -> Self {
+        let mut digits = Vec::new();
+        let mut long = Vec::new();
+        for (i, x) in ints.iter().enumerate() {
+            if x.magnitude().iter_u64_digits().len() > LONG {
+                let start = digits.len();
+                digits.extend(x.magnitude().iter_u32_digits().map(u64::from));
+                long.push((i, start, digits.len() - start));
+            }
+        }
         BlockResidues {
             ints,
             block: usize::MAX,
             rems: Vec::new(),
+            digits,
+            long,
+            powers: Vec::new(),
         }
     }
 
@@ -173,6 +199,9 @@ impl<'a> BlockResidues<'a> {
                 .iter()
                 .map(|x| {
                     let mut acc = [0u64; BLOCK];
+                    if x.magnitude().iter_u64_digits().len() > LONG {
+                        return acc;
+                    }
                     for d in x.magnitude().iter_u64_digits().rev() {
                         for (a, f) in acc.iter_mut().zip(&fields) {
                             *a = f.fold_digit(*a, d);
@@ -189,7 +218,28 @@ impl<'a> BlockResidues<'a> {
             self.block = b;
         }
         let j = k % Self::BLOCK;
-        self.rems.iter().map(|r| r[j]).collect()
+        let mut out: Vec<u64> = self.rems.iter().map(|r| r[j]).collect();
+        if let Some(longest) = self.long.iter().map(|l| l.2).max() {
+            self.powers.clear();
+            let mut pw = 1 % fp.p;
+            for _ in 0..longest {
+                self.powers.push(pw);
+                pw = fp.mul(pw, fp.c32);
+            }
+            for &(i, start, len) in &self.long {
+                let r = super::modkernel::dot(
+                    fp,
+                    &self.digits[start..start + len],
+                    &self.powers[..len],
+                );
+                out[i] = if self.ints[i].sign() == Sign::Minus {
+                    fp.neg(r)
+                } else {
+                    r
+                };
+            }
+        }
+        out
     }
 }
 
@@ -603,6 +653,11 @@ mod tests {
             -(big << 64usize) + BigInt::one(),
             // every digit 2^64 − 1: the largest terms of the fold
             (BigInt::one() << 4096usize) - BigInt::one(),
+            // the longest folded integer, the shortest dotted one, and an
+            // odd number of 32-bit digits
+            (BigInt::one() << 512usize) - BigInt::one(),
+            BigInt::one() << 512usize,
+            -((BigInt::one() << 544usize) + BigInt::from(7)),
         ];
         let mut blocks = BlockResidues::new(ints.iter().collect());
         for k in [0usize, 1, 7, 8, 9, 3, 17, 40] {

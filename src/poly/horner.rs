@@ -256,6 +256,7 @@ fn shift_into(x: &[u64], s: i64, out: &mut Vec<u64>) {
     }
     if s >= 0 {
         let (limbs, bits) = ((s / 64) as usize, (s % 64) as u32);
+        out.reserve(limbs + x.len() + 1);
         out.resize(limbs, 0);
         if bits == 0 {
             out.extend_from_slice(x);
@@ -273,6 +274,7 @@ fn shift_into(x: &[u64], s: i64, out: &mut Vec<u64>) {
             return;
         }
         let x = &x[limbs..];
+        out.reserve(x.len());
         if bits == 0 {
             out.extend_from_slice(x);
         } else {

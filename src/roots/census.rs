@@ -464,6 +464,7 @@ struct Dd {
 }
 
 /// `a + b = s + e` exactly.
+#[inline(always)]
 fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
@@ -477,10 +478,17 @@ fn split(x: f64) -> (f64, f64) {
     (h, x - h)
 }
 
-/// `a·b = p + e` exactly for `b = bh + bl` split (Dekker's product, no
-/// fused multiply-add).
-fn two_prod(a: f64, b: f64, (bh, bl): (f64, f64)) -> (f64, f64) {
+/// `a·b = p + e` exactly for `b = bh + bl` split: by one fused
+/// multiply-add when `FMA` (only in code compiled for a processor that has
+/// it), by Dekker's product otherwise.  Both give the exact error (no
+/// overflow: the scaled coefficients and points are at most 1 in size;
+/// barring underflow, below 2^-969), so the two agree bit for bit.
+#[inline(always)]
+fn two_prod<const FMA: bool>(a: f64, b: f64, (bh, bl): (f64, f64)) -> (f64, f64) {
     let p = a * b;
+    if FMA {
+        return (p, a.mul_add(b, -p));
+    }
     let (ah, al) = split(a);
     (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
@@ -488,6 +496,7 @@ fn two_prod(a: f64, b: f64, (bh, bl): (f64, f64)) -> (f64, f64) {
 impl Dd {
     const ZERO: Dd = Dd { hi: 0.0, lo: 0.0 };
 
+    #[inline(always)]
     fn norm(s: f64, e: f64) -> Dd {
         let hi = s + e;
         Dd {
@@ -495,10 +504,12 @@ impl Dd {
             lo: e - (hi - s),
         }
     }
+    #[inline(always)]
     fn add(self, o: Dd) -> Dd {
         let (s, e) = two_sum(self.hi, o.hi);
         Dd::norm(s, e + self.lo + o.lo)
     }
+    #[inline(always)]
     fn neg(self) -> Dd {
         Dd {
             hi: -self.hi,
@@ -506,8 +517,9 @@ impl Dd {
         }
     }
     /// `self · b` for a double b split as `bs`.
-    fn mul_f64(self, b: f64, bs: (f64, f64)) -> Dd {
-        let (p, e) = two_prod(self.hi, b, bs);
+    #[inline(always)]
+    fn mul_f64<const FMA: bool>(self, b: f64, bs: (f64, f64)) -> Dd {
+        let (p, e) = two_prod::<FMA>(self.hi, b, bs);
         Dd::norm(p, e + self.lo * b)
     }
 }
@@ -524,6 +536,7 @@ impl CDd {
         re: Dd::ZERO,
         im: Dd::ZERO,
     };
+    #[inline(always)]
     fn add(self, o: CDd) -> CDd {
         CDd {
             re: self.re.add(o.re),
@@ -531,13 +544,17 @@ impl CDd {
         }
     }
     /// `self · x` for the complex double x with its parts split as `xs`.
-    fn mul_c64(self, x: C64, xs: ((f64, f64), (f64, f64))) -> CDd {
+    #[inline(always)]
+    fn mul_c64<const FMA: bool>(self, x: C64, xs: ((f64, f64), (f64, f64))) -> CDd {
         CDd {
             re: self
                 .re
-                .mul_f64(x.re, xs.0)
-                .add(self.im.mul_f64(x.im, xs.1).neg()),
-            im: self.re.mul_f64(x.im, xs.1).add(self.im.mul_f64(x.re, xs.0)),
+                .mul_f64::<FMA>(x.re, xs.0)
+                .add(self.im.mul_f64::<FMA>(x.im, xs.1).neg()),
+            im: self
+                .re
+                .mul_f64::<FMA>(x.im, xs.1)
+                .add(self.im.mul_f64::<FMA>(x.re, xs.0)),
         }
     }
     fn hi(self) -> C64 {
@@ -598,13 +615,34 @@ impl Scaled {
         if p.abs() > err * 1_048_576.0 {
             return (p, d);
         }
+        #[cfg(target_arch = "x86_64")]
+        if std::is_x86_feature_detected!("fma") {
+            // SAFETY: the processor has FMA (checked above); the function
+            // only enables code generation for it.
+            return unsafe { self.eval_dd_fma(deg, x, rev) };
+        }
+        self.eval_dd::<false>(deg, x, rev)
+    }
+
+    /// [`Self::eval`]'s double-double pass, compiled with fused
+    /// multiply-adds.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "fma")]
+    unsafe fn eval_dd_fma(&self, deg: usize, x: C64, rev: bool) -> (C64, C64) {
+        self.eval_dd::<true>(deg, x, rev)
+    }
+
+    /// `(p(x), p′(x))` (or the reversed polynomial's, when `rev`) in
+    /// double-doubles.
+    #[inline(always)]
+    fn eval_dd<const FMA: bool>(&self, deg: usize, x: C64, rev: bool) -> (C64, C64) {
         let xs = (split(x.re), split(x.im));
         let (mut p, mut d) = (CDd::ZERO, CDd::ZERO);
         for i in 0..=deg {
-            let k = coef(i);
+            let k = if rev { i } else { deg - i };
             let c = self.dd.get(k).copied().unwrap_or(Dd::ZERO);
-            d = d.mul_c64(x, xs).add(p);
-            p = p.mul_c64(x, xs).add(CDd {
+            d = d.mul_c64::<FMA>(x, xs).add(p);
+            p = p.mul_c64::<FMA>(x, xs).add(CDd {
                 re: c,
                 im: Dd::ZERO,
             });
@@ -750,6 +788,57 @@ mod tests {
 
     fn zp(v: &[i64]) -> ZPoly {
         ZPoly::new(v.iter().map(|&c| BigInt::from(c)).collect())
+    }
+
+    /// The fused and Dekker's products give the same bits (both exact), so
+    /// the census does not depend on the processor: the products alone, and
+    /// whole double-double evaluations (also through the FMA-compiled copy
+    /// when the processor has it).
+    #[test]
+    fn fused_and_dekker_products_agree() {
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            // in (-1, 1), of varied sizes
+            let m = (x >> 11) as f64 / (1u64 << 53) as f64;
+            let e = (x % 40) as i32;
+            if x & 1 == 0 {
+                m * 2f64.powi(-e)
+            } else {
+                -m * 2f64.powi(-e)
+            }
+        };
+        for _ in 0..10_000 {
+            let (a, b) = (next(), next());
+            let (p, e) = two_prod::<true>(a, b, split(b));
+            assert_eq!((p, e), two_prod::<false>(a, b, split(b)), "{a} · {b}");
+            assert!(e.abs() <= p.abs() * f64::EPSILON);
+        }
+        // (u − 3)(u² + 4)(u + 1)(7u − 1) and a degree-40 polynomial of
+        // 200-bit coefficients
+        let big: Vec<BigInt> = (0..41)
+            .map(|i| (BigInt::from(3 + i) << (200 - i)) - BigInt::from(i * i))
+            .collect();
+        for w in [
+            &(&zp(&[-12, 4, -3, 1]) * &zp(&[1, 1])) * &zp(&[-1, 7]),
+            ZPoly::new(big),
+        ] {
+            let sp = Scaled::new(&w);
+            let n = w.degree().expect("not zero");
+            for _ in 0..50 {
+                let z = C64::new(next(), next());
+                let rev = z.abs() > 1.0;
+                let want = sp.eval_dd::<false>(n, z, rev);
+                assert_eq!(sp.eval_dd::<true>(n, z, rev), want);
+                #[cfg(target_arch = "x86_64")]
+                if std::is_x86_feature_detected!("fma") {
+                    // SAFETY: the processor has FMA
+                    assert_eq!(unsafe { sp.eval_dd_fma(n, z, rev) }, want);
+                }
+            }
+        }
     }
 
     #[test]

@@ -251,7 +251,8 @@ impl BallArith for BallR {
 pub(crate) fn powers<T: BallArith>(x: &[T; 3], deg: usize) -> Vec<Vec<T>> {
     x.iter()
         .map(|b| {
-            let mut v = vec![T::of_real(BallR::input(1.0, 0))];
+            let mut v = Vec::with_capacity(deg + 1);
+            v.push(T::of_real(BallR::input(1.0, 0)));
             for e in 1..=deg {
                 let next = v[e - 1].times(b);
                 v.push(next);

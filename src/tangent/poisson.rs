@@ -293,8 +293,9 @@ fn approx_value(p: &QMPoly, pt: &[Q; 3]) -> Q {
         }
         acc += t << (kk * (d - deg));
     }
-    // over a power of two: no gcd
-    dyadic(acc, kk * d) * k
+    // over a power of two: no gcd (nor a product when S is S′)
+    let v = dyadic(acc, kk * d);
+    if k.is_one() { v } else { v * k }
 }
 
 /// A basis `a, b` of the plane orthogonal to `n ≠ 0` (integer vectors).

@@ -289,16 +289,27 @@ impl AlgWriter {
         }
     }
 
-    fn json(&mut self, a: &RealAlg) -> Value {
-        let p = a.poly();
-        let k = match self.cache.iter().position(|(q, _)| *q == p) {
+    /// The index of `p`'s string in the cache (written on first use).
+    fn index(&mut self, p: std::borrow::Cow<'_, ZPoly>) -> usize {
+        match self.cache.iter().position(|(q, _)| *q == *p) {
             Some(k) => k,
             None => {
                 let s = MPoly::from_univariate(&p, self.var).to_string_canonical();
-                self.cache.push((p, s));
+                self.cache.push((p.into_owned(), s));
                 self.cache.len() - 1
             }
-        };
+        }
+    }
+
+    /// `p` printed (D(u) is usually printed already, for the critical
+    /// values).
+    fn poly(&mut self, p: &ZPoly) -> String {
+        let k = self.index(std::borrow::Cow::Borrowed(p));
+        self.cache[k].1.clone()
+    }
+
+    fn json(&mut self, a: &RealAlg) -> Value {
+        let k = self.index(std::borrow::Cow::Owned(a.poly()));
         let iv = a.interval();
         let approx = match self.approx.iter().find(|(j, b, _)| *j == k && *b == iv) {
             Some((_, _, s)) => s.clone(),
@@ -350,7 +361,7 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         "judging_poly": if r.values_skipped() {
             Value::Null
         } else {
-            json!(upoly_string(&r.judging_poly, U))
+            json!(algs.poly(&r.judging_poly))
         },
         "certificate": cert,
         "verdict": r.verdict.as_str(),

@@ -7,7 +7,7 @@ use crate::tangent::{Analysis, TangentReport, WitnessPoint};
 
 /// A univariate integer polynomial printed in the variable with index `v`.
 pub fn upoly_string(p: &ZPoly, v: usize) -> String {
-    MPoly::from_univariate(&p.to_q(), v).to_string_canonical()
+    MPoly::from_univariate(p, v).to_string_canonical()
 }
 
 fn alg_human(a: &RealAlg) -> String {
