@@ -294,7 +294,7 @@ impl AlgWriter {
         match self.cache.iter().position(|(q, _)| *q == *p) {
             Some(k) => k,
             None => {
-                let s = MPoly::from_univariate(&p, self.var).to_string_canonical();
+                let s = upoly_string(&p, self.var);
                 self.cache.push((p.into_owned(), s));
                 self.cache.len() - 1
             }
