@@ -382,8 +382,6 @@ mod tests {
         }
     }
 
-    /// `solve_columns` solves: `K·x = r` holds for every right-hand side,
-    /// and a singular matrix gives `None`.
     /// Shoup's product reduces exactly, also at the extremes `p − 1`.
     #[test]
     fn axpy_shoup_agrees_with_the_definition() {
@@ -491,6 +489,8 @@ mod tests {
         }
     }
 
+    /// `solve_columns` solves: `K·x = r` holds for every right-hand side,
+    /// and a singular matrix gives `None`.
     #[test]
     fn solve_columns_solves() {
         let fp = Fp::new(prime31(1));

@@ -136,6 +136,11 @@ const BLOCK: usize = 8;
 /// of [`BlockResidues`].
 const LONG: usize = 8;
 
+/// Whether `x` takes the dot-product path of [`BlockResidues`].
+fn is_long(x: &BigInt) -> bool {
+    x.magnitude().iter_u64_digits().len() > LONG
+}
+
 /// Residues of a fixed list of integers modulo the primes [`prime31`]`(k)`,
 /// `k = 0, 1, …`.  Integers of at most [`LONG`] 64-bit digits are reduced a
 /// block of [`BlockResidues::BLOCK`] consecutive primes at a time: each
@@ -171,7 +176,7 @@ impl<'a> BlockResidues<'a> {
         let mut digits = Vec::new();
         let mut long = Vec::new();
         for (i, x) in ints.iter().enumerate() {
-            if x.magnitude().iter_u64_digits().len() > LONG {
+            if is_long(x) {
                 let start = digits.len();
                 digits.extend(x.magnitude().iter_u32_digits().map(u64::from));
                 long.push((i, start, digits.len() - start));
@@ -199,7 +204,7 @@ impl<'a> BlockResidues<'a> {
                 .iter()
                 .map(|x| {
                     let mut acc = [0u64; BLOCK];
-                    if x.magnitude().iter_u64_digits().len() > LONG {
+                    if is_long(x) {
                         return acc;
                     }
                     for d in x.magnitude().iter_u64_digits().rev() {
@@ -676,11 +681,9 @@ mod tests {
         for i in [0usize, 1, 7] {
             let p = prime31(i);
             let fp = Fp::new(p);
-            let mut x = 0x9e37_79b9_7f4a_7c15u64;
+            let mut state = 0x9e37_79b9_7f4a_7c15u64;
             for _ in 0..1000 {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
+                let x = crate::tests::xorshift(&mut state);
                 assert_eq!(fp.reduce(x), x % p);
                 let (a, b) = (x % p, (x >> 20) % p);
                 assert_eq!(fp.mul(a, b), ((a as u128 * b as u128) % p as u128) as u64);
@@ -814,10 +817,7 @@ mod tests {
         let mut big = |bits: u32| {
             let mut x = BigInt::one();
             for _ in 0..bits / 32 {
-                seed ^= seed << 13;
-                seed ^= seed >> 7;
-                seed ^= seed << 17;
-                x = (x << 32usize) + BigInt::from(seed >> 32);
+                x = (x << 32usize) + BigInt::from(crate::tests::xorshift(&mut seed) >> 32);
             }
             x
         };

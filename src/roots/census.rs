@@ -601,7 +601,7 @@ impl Scaled {
     fn eval(&self, deg: usize, z: C64) -> (C64, C64) {
         let rev = z.abs() > 1.0;
         let x = if rev { C64::ONE.div(z) } else { z };
-        let coef = |i: usize| -> usize { if rev { i } else { deg - i } };
+        let coef = |i: usize| coef_index(deg, rev, i);
         let get = |k: usize| self.f.get(k).copied().unwrap_or(0.0);
         let (mut p, mut d, mut bound) = (C64::ZERO, C64::ZERO, 0.0f64);
         let ax = x.abs();
@@ -639,7 +639,7 @@ impl Scaled {
         let xs = (split(x.re), split(x.im));
         let (mut p, mut d) = (CDd::ZERO, CDd::ZERO);
         for i in 0..=deg {
-            let k = if rev { i } else { deg - i };
+            let k = coef_index(deg, rev, i);
             let c = self.dd.get(k).copied().unwrap_or(Dd::ZERO);
             d = d.mul_c64::<FMA>(x, xs).add(p);
             p = p.mul_c64::<FMA>(x, xs).add(CDd {
@@ -649,6 +649,12 @@ impl Scaled {
         }
         (p.hi(), d.hi())
     }
+}
+
+/// The coefficient read at Horner step `i` (from the top) of a polynomial
+/// of formal degree `deg`, or of its reverse when `rev`.
+fn coef_index(deg: usize, rev: bool, i: usize) -> usize {
+    if rev { i } else { deg - i }
 }
 
 /// `p(τ)/q(τ)` for two polynomials of formal degree `deg` (the powers of
@@ -796,11 +802,9 @@ mod tests {
     /// when the processor has it).
     #[test]
     fn fused_and_dekker_products_agree() {
-        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut state = 0x2545_f491_4f6c_dd1du64;
         let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = crate::tests::xorshift(&mut state);
             // in (-1, 1), of varied sizes
             let m = (x >> 11) as f64 / (1u64 << 53) as f64;
             let e = (x % 40) as i32;

@@ -245,12 +245,7 @@ mod brute {
     #[test]
     fn simplest_matches_brute_force() {
         let mut seed = 12345u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = || crate::tests::xorshift(&mut seed);
         for _ in 0..3000 {
             let a = (next() % 2000) as i64 - 1000;
             let b = (next() % 60) as i64 + 1;

@@ -11,6 +11,15 @@
 //!   properties and against committed sympy reference data;
 //! * `fuzz_props`: proptest versions of the fuzz targets.
 
+/// One step of Marsaglia's xorshift (shifts 13, 7, 17): the fixed
+/// pseudo-random sequences of the unit tests.
+pub(crate) fn xorshift(state: &mut u64) -> u64 {
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    *state
+}
+
 mod fast_route;
 mod fuzz_props;
 mod kernel_props;
