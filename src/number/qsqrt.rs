@@ -258,9 +258,33 @@ impl QSqrt {
         &self.a + &self.b * root
     }
 
-    /// Decimal approximation with `digits` significant digits.
+    /// Decimal approximation with `digits` significant digits, correctly
+    /// rounded, however close to 0 the value is (a + b√d may cancel to far
+    /// below 2^-1000): approximations within `2^-bits` are taken with
+    /// doubling `bits` until both ends of `[m − 2^-bits, m + 2^-bits]` have
+    /// one sign and round to the same digits.  An irrational value is never
+    /// a rounding boundary, so this ends; a rational one (`d` a square) is
+    /// rounded exactly.
     pub fn approx(&self, digits: usize) -> String {
-        approx_decimal(&self.to_rational_approx(4 * digits as u32 + 64), digits)
+        if self.b.is_zero() {
+            return approx_decimal(&self.a, digits);
+        }
+        if let Some(r) = super::exact_sqrt_q(&self.d) {
+            return approx_decimal(&(&self.a + &self.b * r), digits);
+        }
+        let mut bits = 4 * digits as u32 + 64;
+        loop {
+            let m = self.to_rational_approx(bits);
+            let eps = Q::new(BigInt::one(), BigInt::one() << bits as usize);
+            let (lo, hi) = (&m - &eps, &m + &eps);
+            if lo.is_positive() || hi.is_negative() {
+                let (a, b) = (approx_decimal(&lo, digits), approx_decimal(&hi, digits));
+                if a == b {
+                    return a;
+                }
+            }
+            bits *= 2;
+        }
     }
 
     /// Square root of a non-negative rational in the field Q(√d), if it lies

@@ -3,7 +3,7 @@
 //! polynomial at the number (zero detected by a gcd, never by a tolerance).
 
 use super::isolate::{RootInterval, bisect_once, isolate_squarefree, refine, sign_variations};
-use crate::number::{Q, approx_decimal, fmt_q};
+use crate::number::{Q, approx_decimal, floor_log2_q, fmt_q};
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{MPoly, U};
 use num_bigint::BigInt;
@@ -225,26 +225,50 @@ impl RealAlg {
         (lo + hi) / Q::from_integer(BigInt::from(2))
     }
 
-    /// Decimal approximation with `digits` significant digits.
+    /// Decimal approximation with `digits` significant digits, correctly
+    /// rounded (to nearest) whenever the isolating interval can be refined
+    /// until both its ends round to the same digits — always, except for a
+    /// value within 2^-40 of the last digit's unit of a rounding boundary,
+    /// where the midpoint of an interval of relative width
+    /// 2^-(3.33·digits + 56) is rounded (then the printed digits are within
+    /// one unit of the last place).  The precision is relative however close
+    /// to 0 the value is: the interval is first moved off 0
+    /// ([`RealAlg::separate_from_zero`]).
     pub fn approx(&self, digits: usize) -> String {
         match &self.repr {
             Repr::Rational(q) => approx_decimal(q, digits),
             Repr::Root { .. } => {
                 let mut c = self.clone();
-                c.refine_for_approx(digits);
-                let (lo, hi) = c.interval();
+                c.approx_in_place(digits)
+            }
+        }
+    }
+
+    /// [`RealAlg::approx`], keeping the refined interval.
+    pub(crate) fn approx_in_place(&mut self, digits: usize) -> String {
+        self.refine_for_approx(digits);
+        for extra in [0u32, 24] {
+            if extra > 0 {
+                self.refine_relative_to(digits, extra);
+            }
+            let Repr::Root { lo, hi, .. } = &self.repr else {
+                break;
+            };
+            let (a, b) = (approx_decimal(lo, digits), approx_decimal(hi, digits));
+            if a == b {
+                return a;
+            }
+        }
+        match &self.repr {
+            Repr::Rational(q) => approx_decimal(q, digits),
+            Repr::Root { lo, hi, .. } => {
                 approx_decimal(&((lo + hi) / Q::from_integer(BigInt::from(2))), digits)
             }
         }
     }
 
-    /// A width of the isolating interval `[lo, hi]` small enough for
-    /// `digits` significant digits (16 guard bits): relative to the
-    /// magnitude `2^mag` of the ends, `2^(mag − 3.33·digits − 16)`.
-    fn approx_width(lo: &Q, hi: &Q, digits: usize) -> Q {
-        let mag = lo.numer().bits().max(hi.numer().bits()) as i64
-            - lo.denom().bits().min(hi.denom().bits()) as i64;
-        let e = mag - (digits as f64 * 3.33) as i64 - 16;
+    /// `2^e` as a rational (any sign of `e`).
+    fn pow2(e: i64) -> Q {
         if e >= 0 {
             Q::from_integer(BigInt::one() << e as usize)
         } else {
@@ -252,39 +276,126 @@ impl RealAlg {
         }
     }
 
-    /// Refines the isolating interval in place to a width of about
-    /// `2^-bits` relative to the magnitude of its ends.
-    pub(crate) fn refine_relative(&mut self, bits: u32) {
-        if let Repr::Root { lo, hi, .. } = &self.repr {
-            let mag = lo.numer().bits().max(hi.numer().bits()) as i64
-                - lo.denom().bits().min(hi.denom().bits()) as i64;
-            let e = mag - bits as i64;
-            let w = if e >= 0 {
-                Q::from_integer(BigInt::one() << e as usize)
+    /// Moves the isolating interval off 0: afterwards a non-zero value has
+    /// an interval of one sign (`lo > 0` or `hi < 0`), so that its sign and
+    /// magnitude show, and a zero value is the rational 0.
+    ///
+    /// Key idea: every non-zero root of `p = Σ aᵢuⁱ` with `a₀ = p(0) ≠ 0`
+    /// satisfies `|u| > |a₀| / (|a₀| + maxᵢ|aᵢ|)` (Cauchy's bound for the
+    /// reversed polynomial), so the end at 0 moves to a power of two below
+    /// that bound at once; then the exponent is bisected (signs at powers
+    /// of two) until the ends are within a factor 4.  Cost: O(log of the
+    /// bound's exponent) exact signs.
+    pub(crate) fn separate_from_zero(&mut self) {
+        let Repr::Root { poly, lo, hi } = &mut self.repr else {
+            return;
+        };
+        if lo.is_positive() || hi.is_negative() {
+            return;
+        }
+        let a0 = poly.coeffs()[0].clone();
+        if a0.is_zero() {
+            // 0 is a root; an end is never a root, so it is this one
+            self.repr = Repr::Rational(Q::zero());
+            return;
+        }
+        // which side of 0 the root lies on
+        let positive = if lo.is_zero() {
+            true
+        } else if hi.is_zero() {
+            false
+        } else {
+            // the root lies between lo and 0 iff the signs at lo and 0 differ
+            poly.sign_at(lo) == crate::number::sign_z(&a0)
+        };
+        let m = poly
+            .coeffs()
+            .iter()
+            .skip(1)
+            .map(|c| c.abs())
+            .max()
+            .unwrap_or_else(BigInt::zero);
+        let a0 = a0.abs();
+        // |root| > |a0|/(|a0| + m) > 2^-k
+        let k = (&a0 + &m).bits() as i64 - a0.bits() as i64 + 1;
+        let bound = Self::pow2(-k);
+        if positive {
+            *lo = bound;
+        } else {
+            *hi = -bound;
+        }
+        // bisect the exponent: |root| in (2^e_lo, 2^e_hi)
+        let sign = if positive { 1 } else { -1 };
+        let s_near = poly.sign_at(if positive { &*lo } else { &*hi });
+        loop {
+            let (near, far) = if positive {
+                (lo.clone(), hi.clone())
             } else {
-                Q::new(BigInt::one(), BigInt::one() << (-e) as usize)
+                (-hi.clone(), -lo.clone())
             };
-            self.refine_to(&w);
+            let (e_near, e_far) = (floor_log2_q(&near), floor_log2_q(&far) + 1);
+            if e_far - e_near <= 2 {
+                return;
+            }
+            let c = Self::pow2((e_near + e_far).div_euclid(2));
+            if c <= near || c >= far {
+                return;
+            }
+            let at = if positive { c.clone() } else { -c.clone() };
+            let s = poly.sign_at(&at);
+            if s == 0 {
+                self.repr = Repr::Rational(at);
+                return;
+            }
+            // the root lies between the near end and c iff the signs differ
+            let root_near = s != s_near;
+            match (root_near, sign) {
+                (true, 1) => *hi = at,
+                (false, 1) => *lo = at,
+                (true, _) => *lo = at,
+                (false, _) => *hi = at,
+            }
+        }
+    }
+
+    /// The floor of log₂ of the smaller end's magnitude (the interval must
+    /// not contain 0).
+    fn low_magnitude(lo: &Q, hi: &Q) -> i64 {
+        floor_log2_q(&lo.abs()).min(floor_log2_q(&hi.abs()))
+    }
+
+    /// Refines (off 0 first) to a width of `2^-(3.33·digits + 16 + extra)`
+    /// relative to the value.
+    fn refine_relative_to(&mut self, digits: usize, extra: u32) {
+        self.separate_from_zero();
+        if let Repr::Root { lo, hi, .. } = &self.repr {
+            let e = Self::low_magnitude(lo, hi) - (digits as f64 * 3.33) as i64 - 16 - extra as i64;
+            let w = Self::pow2(e);
+            if hi.clone() - lo.clone() > w {
+                self.refine_to(&w);
+            }
+        }
+    }
+
+    /// Refines the isolating interval in place to a width of about
+    /// `2^-bits` relative to the value (off 0 first).
+    pub(crate) fn refine_relative(&mut self, bits: u32) {
+        self.separate_from_zero();
+        if let Repr::Root { lo, hi, .. } = &self.repr {
+            let w = Self::pow2(Self::low_magnitude(lo, hi) - bits as i64);
+            if hi.clone() - lo.clone() > w {
+                self.refine_to(&w);
+            }
         }
     }
 
     /// Refines the isolating interval in place so that later
     /// [`RealAlg::approx`] calls with `digits` digits (on this number or its
-    /// clones) need no further refinement.
+    /// clones) need no further refinement, usually: the interval excludes 0
+    /// (a non-zero value) and its width is at most `2^-(3.33·digits + 16)`
+    /// of the value's magnitude.
     pub(crate) fn refine_for_approx(&mut self, digits: usize) {
-        // the width is computed from the current interval, then again from
-        // the refined one, until the interval is narrow enough for the
-        // magnitude it shows (which settles once it excludes 0)
-        for _ in 0..64 {
-            let Repr::Root { lo, hi, .. } = &self.repr else {
-                return;
-            };
-            let w = Self::approx_width(lo, hi, digits);
-            if (hi - lo) <= w {
-                return;
-            }
-            self.refine_to(&w);
-        }
+        self.refine_relative_to(digits, 0);
     }
 
     /// Exact sign of the number: -1, 0 or 1.
@@ -405,14 +516,14 @@ impl RealAlg {
         crate::number::sign_q(&k) * self.sign_of(&z)
     }
 
-    /// Interval `[lo, hi]` strings and the defining polynomial, for output.
+    /// The defining polynomial, the interval `[lo, hi]` and 20 digits, as
+    /// strings for output: the interval is the one the digits were read
+    /// from (it excludes 0 for a non-zero value).
     pub fn describe(&self) -> (String, [String; 2], String) {
-        let (lo, hi) = self.interval();
-        (
-            self.poly_string(),
-            [fmt_q(&lo), fmt_q(&hi)],
-            self.approx(20),
-        )
+        let mut c = self.clone();
+        let approx = c.approx_in_place(20);
+        let (lo, hi) = c.interval();
+        (self.poly_string(), [fmt_q(&lo), fmt_q(&hi)], approx)
     }
 }
 

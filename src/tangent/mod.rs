@@ -783,6 +783,13 @@ fn finish(
     {
         notes.push("curves of critical points on a branch with two free coordinates; every critical value is exact".into());
     }
+    // every value's interval off 0 and narrow enough for its 20 digits (a
+    // value of 1e-40 must not sit in [0, 256])
+    let mut values = values;
+    let mut nonreal = nonreal;
+    for v in values.iter_mut().chain(nonreal.iter_mut()) {
+        v.refine_for_approx(20);
+    }
     let (min, max) = match (values.first(), values.last()) {
         (Some(a), Some(b)) => (a.simplify(), b.simplify()),
         _ => {

@@ -26,4 +26,5 @@ mod kernel_props;
 mod kernel_reference;
 mod natural;
 mod poisson;
+mod printing;
 mod tangent;

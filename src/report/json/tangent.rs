@@ -11,12 +11,17 @@ use serde_json::{Value, json};
 
 /// A real algebraic number as the contract's ALG object, its polynomial printed in
 /// the variable `v`.
+///
+/// The interval printed is the one the 20 digits were read from: it
+/// excludes 0 for a non-zero value (the sign shows).
 pub fn alg_json_in(a: &RealAlg, v: usize) -> Value {
+    let mut a = a.clone();
+    let approx = a.approx_in_place(20);
     let (lo, hi) = a.interval();
     json!({
         "poly": upoly_string(&a.poly(), v),
         "interval": [crate::number::fmt_q(&lo), crate::number::fmt_q(&hi)],
-        "approx": a.approx(20),
+        "approx": approx,
     })
 }
 
@@ -268,6 +273,10 @@ fn method_json(m: &Analysis) -> Value {
     }
 }
 
+/// A value printed: (polynomial index, interval asked, interval printed,
+/// digits).
+type Printed = (usize, (Q, Q), (Q, Q), String);
+
 /// [`crate::report::alg_json`] with the strings of the defining polynomials
 /// cached: the critical values, min and max usually share D(u), whose
 /// decimal digits are written once.
@@ -276,8 +285,9 @@ struct AlgWriter {
     var: usize,
     cache: Vec<(ZPoly, String)>,
     /// The 20-digit approximations by (polynomial index, interval): min
-    /// and max repeat critical values, each root is refined once.
-    approx: Vec<(usize, (Q, Q), String)>,
+    /// and max repeat critical values, each root is refined once; with the
+    /// refined interval printed.
+    approx: Vec<Printed>,
 }
 
 impl AlgWriter {
@@ -310,13 +320,17 @@ impl AlgWriter {
 
     fn json(&mut self, a: &RealAlg) -> Value {
         let k = self.index(std::borrow::Cow::Owned(a.poly()));
-        let iv = a.interval();
-        let approx = match self.approx.iter().find(|(j, b, _)| *j == k && *b == iv) {
-            Some((_, _, s)) => s.clone(),
+        let key = a.interval();
+        let (iv, approx) = match self.approx.iter().find(|(j, b, _, _)| *j == k && *b == key) {
+            Some((_, _, iv, s)) => (iv.clone(), s.clone()),
             None => {
-                let s = a.approx(20);
-                self.approx.push((k, iv.clone(), s.clone()));
-                s
+                // the interval printed is the one the digits were read from
+                // (off 0 for a non-zero value)
+                let mut c = a.clone();
+                let s = c.approx_in_place(20);
+                let iv = c.interval();
+                self.approx.push((k, key, iv.clone(), s.clone()));
+                (iv, s)
             }
         };
         json!({

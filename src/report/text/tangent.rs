@@ -14,10 +14,12 @@ fn alg_human(a: &RealAlg) -> String {
     match a.as_rational() {
         Some(q) => format!("{}  (≈ {})", crate::number::fmt_q(q), a.approx(20)),
         None => {
+            let mut a = a.clone();
+            let approx = a.approx_in_place(20);
             let (lo, hi) = a.interval();
             format!(
                 "≈ {}  (root of {} in ({}, {}))",
-                a.approx(20),
+                approx,
                 upoly_string(&a.poly(), U),
                 crate::number::fmt_q(&lo),
                 crate::number::fmt_q(&hi)
