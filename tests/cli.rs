@@ -153,7 +153,9 @@ fn pair_rows_of_the_benchmark() {
     quadsect::cli::bench::pairs_suite(Some(path.to_str().unwrap()), &mut rows).unwrap();
     let j = quadsect::cli::bench::to_json(&rows);
     let rows = j.as_array().unwrap();
-    assert_eq!(rows.len(), 3);
+    // two pairs, the group (class and counts), the group (whole answer),
+    // the input kind (whole answer)
+    assert_eq!(rows.len(), 5);
     assert_eq!(rows[0]["suite"], "natural-pair");
     assert_eq!(rows[0]["group"], "g");
     assert_eq!(rows[0]["agrees"], true);
@@ -162,6 +164,9 @@ fn pair_rows_of_the_benchmark() {
     assert_eq!(rows[2]["suite"], "natural-group");
     assert_eq!(rows[2]["agree"], 1);
     assert!(rows[2]["max_s"].as_f64().unwrap() >= rows[2]["median_s"].as_f64().unwrap());
+    assert_eq!(rows[3]["suite"], "natural-whole-group");
+    assert_eq!(rows[4]["suite"], "natural-whole-kind");
+    assert!(rows[0]["whole_s"].as_f64().unwrap() > 0.0);
     std::fs::remove_dir_all(&dir).ok();
 }
 

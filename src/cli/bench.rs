@@ -694,8 +694,24 @@ pub fn read_pairs(path: Option<&str>) -> Result<Vec<BenchPair>, Error> {
 struct GroupTally {
     name: String,
     times: Vec<(f64, String)>,
+    /// The whole answer's times (class, counts and components).
+    whole: Vec<(f64, String)>,
     agree: usize,
     fast: usize,
+}
+
+/// The input kind of a benchmark group (the table rows): small
+/// integers, 53-bit doubles, near-degenerate, Open CASCADE regression pairs,
+/// 500-digit decimals.
+pub fn input_kind(group: &str) -> &'static str {
+    match group {
+        g if g.starts_with("class-") || g == "random-int" => "small-integers",
+        "double" => "doubles",
+        "near-degenerate" => "near-degenerate",
+        "occ-regression" => "occ-regression",
+        "decimal500" => "decimal500",
+        _ => "other",
+    }
 }
 
 /// The pair suite: the fast classification (no components) timed per
@@ -707,6 +723,8 @@ pub fn pairs_suite(path: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Error>
     let opts = ClassifyOptions::default().without_components();
     let pairs = read_pairs(path)?;
     let mut groups: Vec<GroupTally> = Vec::new();
+    let mut kinds: std::collections::BTreeMap<&'static str, Vec<(f64, f64, String)>> =
+        std::collections::BTreeMap::new();
     for BenchPair {
         name,
         group,
@@ -728,11 +746,21 @@ pub fn pairs_suite(path: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Error>
             0.005,
             7,
         );
+        let whole_opts = ClassifyOptions::default();
+        let (mw, _) = measure_with(
+            || {
+                black_box(classify_with(a, b, &whole_opts).ok());
+            },
+            0.005,
+            7,
+        );
         let mut extra = serde_json::Map::new();
         extra.insert("group".into(), json!(group));
         extra.insert("agrees".into(), json!(agrees));
         extra.insert("fast".into(), json!(r.answered_fast()));
         extra.insert("method".into(), json!(r.method));
+        extra.insert("whole_s".into(), json!(mw));
+        extra.insert("kind".into(), json!(input_kind(group)));
         extra.insert(
             "answer".into(),
             json!({"class": c.class.as_str(), "conics": c.conics, "lines": c.lines, "points": c.points}),
@@ -759,6 +787,7 @@ pub fn pairs_suite(path: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Error>
                 groups.push(GroupTally {
                     name: group.clone(),
                     times: Vec::new(),
+                    whole: Vec::new(),
                     agree: 0,
                     fast: 0,
                 });
@@ -766,12 +795,18 @@ pub fn pairs_suite(path: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Error>
             }
         };
         g.times.push((m, name.clone()));
+        g.whole.push((mw, name.clone()));
+        kinds
+            .entry(input_kind(group))
+            .or_default()
+            .push((mw, m, name.clone()));
         g.agree += usize::from(agrees);
         g.fast += usize::from(r.answered_fast());
     }
     for GroupTally {
         name: group,
         mut times,
+        mut whole,
         agree,
         fast,
     } in groups
@@ -786,7 +821,7 @@ pub fn pairs_suite(path: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Error>
         extra.insert("fast_route".into(), json!(fast));
         rows.push(Row {
             suite: "natural-group",
-            id: group,
+            id: group.clone(),
             desc: format!(
                 "fast classification: median over {} pairs (slowest {slowest} {}); {agree} agree with expect, {fast} by the fast route",
                 times.len(),
@@ -794,6 +829,48 @@ pub fn pairs_suite(path: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Error>
             ),
             median: times[times.len() / 2].0,
             samples: times.len(),
+            extra,
+        });
+        whole.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let (wmax, wslowest) = whole[whole.len() - 1].clone();
+        let mut extra = serde_json::Map::new();
+        extra.insert("max_s".into(), json!(wmax));
+        extra.insert("slowest".into(), json!(wslowest));
+        extra.insert("pairs".into(), json!(whole.len()));
+        rows.push(Row {
+            suite: "natural-whole-group",
+            id: group,
+            desc: format!(
+                "whole answer (class, counts, components): median over {} pairs (slowest {wslowest} {})",
+                whole.len(),
+                fmt_time(wmax)
+            ),
+            median: whole[whole.len() / 2].0,
+            samples: whole.len(),
+            extra,
+        });
+    }
+    for (kind, mut v) in kinds {
+        v.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let (wmax, _, wslowest) = v[v.len() - 1].clone();
+        let mut counts: Vec<f64> = v.iter().map(|x| x.1).collect();
+        counts.sort_by(f64::total_cmp);
+        let mut extra = serde_json::Map::new();
+        extra.insert("max_s".into(), json!(wmax));
+        extra.insert("slowest".into(), json!(wslowest));
+        extra.insert("pairs".into(), json!(v.len()));
+        extra.insert("counts_median_s".into(), json!(counts[counts.len() / 2]));
+        rows.push(Row {
+            suite: "natural-whole-kind",
+            id: kind.to_string(),
+            desc: format!(
+                "whole answer by input kind: median over {} pairs (slowest {wslowest} {}); class and counts only {}",
+                v.len(),
+                fmt_time(wmax),
+                fmt_time(counts[counts.len() / 2])
+            ),
+            median: v[v.len() / 2].0,
+            samples: v.len(),
             extra,
         });
     }

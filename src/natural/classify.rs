@@ -226,3 +226,37 @@ pub fn classify_str(a: &str, b: &str) -> Result<NaturalReport, Error> {
     let qb = parse_natural(b).map_err(|e| e.context("in the second quadric"))?;
     classify(&qa, &qb)
 }
+
+/// Runs the reference route ([`classify_complete`]) beside an answer: its
+/// part-1 deciders and §7 verdict are attached to the report, and its class,
+/// counts and components are compared with the answer's (a disagreement is
+/// a note asking for a report).  The cross-check of
+/// [`super::ClassifyOptions::deciders`].
+pub(crate) fn add_reference_deciders(r: &mut NaturalReport) -> Result<(), Error> {
+    if r.class == Class::Undecided {
+        return Ok(());
+    }
+    let reference = classify_complete(&r.a, &r.b)?;
+    r.deciders = reference.deciders.clone();
+    r.section7 = reference.section7.clone();
+    if reference.counts != r.counts {
+        r.notes.push(format!(
+            "the reference route found {} ({}, {}, {}) — please report",
+            reference.class.as_str(),
+            reference.conics(),
+            reference.lines(),
+            reference.points()
+        ));
+    } else if r.components_computed
+        && !super::result::same_components(&reference.components, &r.components)
+    {
+        r.notes
+            .push("the reference route built other components — please report".into());
+    }
+    for n in &reference.notes {
+        if n.contains("please report") {
+            r.notes.push(format!("reference route: {n}"));
+        }
+    }
+    Ok(())
+}

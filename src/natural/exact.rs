@@ -8,10 +8,9 @@
 //! high-precision approximation and then *verified exactly* (the relation
 //! must vanish at the number, decided by a gcd), so nothing is guessed.
 
-use crate::elim::resultant_mpoly;
+use crate::number::xball::XBall;
 use crate::number::{Q, QSqrt};
-use crate::poly::mpoly::{MPoly, T, U};
-use crate::poly::{QMPoly, QPoly, ZPoly};
+use crate::poly::{QPoly, ZPoly};
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -216,17 +215,54 @@ pub fn nested(a: &Q, b: &Q, d: &Q, m: &Q, alpha: &Q, beta: &Q, s: i32) -> Exact 
         let t = r.scale(&(if s < 0 { -m } else { m.clone() }));
         return Exact::Quad(QSqrt::new(a.clone(), b.clone(), d.clone()).add(&t));
     }
-    // eliminate: c = a + b y + m μ, y² = d, μ² = α + β y
-    //   (c − a − b y)² − m²(α + β y) = 0, then Res_y with y² − d
-    let c = MPoly::<Q>::var(U);
-    let y = MPoly::<Q>::var(T);
-    let k = |q: &Q| MPoly::constant(q.clone());
-    let lin = &(&c - &k(a)) - &(&y * &k(b));
-    let g: QMPoly = &(&lin * &lin) - &(&(&k(alpha) + &(&y * &k(beta))) * &k(&(m * m)));
-    let ydef: QMPoly = &(&y * &y) - &k(d);
-    let r = resultant_mpoly(&g, &ydef, T);
-    let ru = r.to_univariate(U).unwrap_or_else(QPoly::zero);
-    let (rz, _) = ZPoly::from_q(&ru);
+    // c = a + b·y + m·s·μ with y² = d, μ² = α + β·y: (c − a − b y)² =
+    // m²(α + β y) is P(c) + y·Q(c) = 0 with P = c² − 2ac + a² + b²d − m²α,
+    // Q = −2bc + 2ab − m²β, so c is a root of the quartic P² − d·Q²
+    // (computed over Z with the products of the denominators: no gcd until
+    // the primitive part)
+    let (na, da) = (a.numer(), a.denom());
+    let (nb, db) = (b.numer(), b.denom());
+    let (nm, dm) = (m.numer(), m.denom());
+    let (nd, dd) = (d.numer(), d.denom());
+    let (nal, dal) = (alpha.numer(), alpha.denom());
+    let (nbe, dbe) = (beta.numer(), beta.denom());
+    let (da2, db2, dm2) = (da * da, db * db, dm * dm);
+    // P·D0 with D0 = da²·db²·dd·dm²·dal
+    let d0 = &da2 * &db2 * dd * &dm2 * dal;
+    let p0 = na * na * (&db2 * dd * &dm2 * dal) + nb * nb * nd * (&da2 * &dm2 * dal)
+        - nm * nm * nal * (&da2 * &db2 * dd);
+    let p1 = -(na * (&d0 / da)) * 2;
+    let zp = ZPoly::new(vec![p0, p1, d0.clone()]);
+    // Q·D1 with D1 = da·db·dm²·dbe
+    let d1 = da * db * &dm2 * dbe;
+    let q0 = na * nb * (&dm2 * dbe) * 2 - nm * nm * nbe * (da * db);
+    let q1 = -(nb * (&d1 / db)) * 2;
+    let zq = ZPoly::new(vec![q0, q1]);
+    // (P² − d·Q²)·D0²·D1²·dd = dd·D1²·(P·D0)² − nd·D0²·(Q·D1)²
+    let rz = &(&zp * &zp).scale(&(dd * &d1 * &d1)) - &(&zq * &zq).scale(&(nd * &d0 * &d0));
+    let sq = rz.squarefree_part();
+    // an enclosure of c holding exactly one root of the square-free quartic
+    // (Descartes' rule on the interval: one sign variation): from double
+    // balls first, then from rational bounds as they narrow; an isolation of
+    // all roots only as the fallback
+    let holds_one = |lo: &Q, hi: &Q| {
+        lo < hi
+            && sq.sign_at(lo) != 0
+            && sq.sign_at(hi) != 0
+            && crate::roots::descartes_in(&sq, lo, hi) == 1
+    };
+    // (a rational root is looked for only when a cheap sieve allows one)
+    let irrational = crate::roots::no_rational_root_sieve(&sq);
+    let done = |lo: Q, hi: Q| {
+        let x = RealAlg::from_interval(&sq, &crate::roots::RootInterval { lo, hi });
+        Exact::Alg(if irrational { x } else { x.simplify() })
+    };
+    let nb = nested_ball(a, b, d, m, alpha, beta, s);
+    if let Some((lo, hi)) = nb
+        && holds_one(&lo, &hi)
+    {
+        return done(lo, hi);
+    }
     let enclose = |bits: u32| -> (Q, Q) {
         let (yl, yh) = sqrt_bounds(d, bits + 8);
         let (il, ih) = {
@@ -246,7 +282,32 @@ pub fn nested(a: &Q, b: &Q, d: &Q, m: &Q, alpha: &Q, beta: &Q, s: i32) -> Exact 
         let hi = cands.iter().max().cloned().unwrap_or_default();
         (lo, hi)
     };
+    for bits in [64u32, 128, 256, 512] {
+        let (lo, hi) = enclose(bits);
+        if holds_one(&lo, &hi) {
+            return done(lo, hi);
+        }
+    }
     Exact::Alg(identify_root(&rz, &enclose))
+}
+
+/// An enclosure `[lo, hi]` (dyadic ends) of `a + b√d + m·s·√(α + β√d)`
+/// from extended-exponent double balls, or `None` when a square root
+/// cannot be certified.
+fn nested_ball(a: &Q, b: &Q, d: &Q, m: &Q, alpha: &Q, beta: &Q, s: i32) -> Option<(Q, Q)> {
+    let y = XBall::from_q(d).sqrt()?;
+    let mu = XBall::from_q(alpha)
+        .add(&XBall::from_q(beta).mul(&y))
+        .sqrt()?;
+    let ms = if s < 0 {
+        XBall::from_q(m).neg()
+    } else {
+        XBall::from_q(m)
+    };
+    XBall::from_q(a)
+        .add(&XBall::from_q(b).mul(&y))
+        .add(&ms.mul(&mu))
+        .bounds()
 }
 
 // ------------------------------------------------------ quadratic recognition

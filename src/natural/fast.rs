@@ -67,23 +67,78 @@ impl Counts {
 /// What the integer program concluded.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Outcome {
-    /// Decided.
-    Counts(Counts, &'static str),
+    /// Decided: the class and counts, how (in words), and the case the
+    /// constructions build from.
+    Counts(Counts, &'static str, Case),
     /// The intersection may contain a line: look for common rulings.
     Rulings,
     /// Not a case of the fast route.
     Fallback(&'static str),
 }
 
+/// Which multiple root of `F(λ) = det(A − λB)` a decision used, so that a
+/// construction recomputes it exactly (the formulas of [`pencil_route`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum RootKind {
+    /// λ = 0 (the member A).
+    Zero,
+    /// λ = ∞ (the member B).
+    Infinity,
+    /// The double root `−c₁/(2c₂)` of the quadratic core.
+    Quadratic,
+    /// The triple root `−b/(3a)` of the cubic core.
+    CubicTriple,
+    /// The double root `(9ad − bc)/(2(b² − 3ac))` of the cubic core.
+    CubicDouble,
+}
+
+/// The case a decision falls in: what the constructions need to know so
+/// that they build the components without classifying again (CGAL's
+/// predicates then constructions).  The matrices `A`, `B` of the pencil
+/// cases are those of [`program`]'s call of [`pencil_route`] (a sphere
+/// first when there is one).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Case {
+    /// Proportional equations: no components.
+    SameSurface,
+    /// Two spheres: a circle, a point or nothing in the radical plane.
+    TwoSpheres,
+    /// A sphere centred on the axis of the other quadric: circles.
+    SphereOnAxis,
+    /// Two axial quadrics on one axis: circles or the common vertex.
+    SameAxis,
+    /// Coplanar distinct axes whose projection conic factors.
+    Planar {
+        /// The axes are parallel.
+        parallel: bool,
+    },
+    /// No real point (a definite member of a nonsingular pencil, or an
+    /// isolated point at infinity).
+    Empty,
+    /// A nonsingular quartic with real points.
+    Smooth,
+    /// One singular point: the vertex of the rank-3 member at the multiple
+    /// root, found in cofactor column `k`; a real curve through it.
+    Nodal { root: RootKind, k: usize },
+    /// The same vertex as an isolated point (the cone member's generators
+    /// are imaginary): the only real point.
+    ConePoint { root: RootKind, k: usize },
+    /// A complex-conjugate plane pair at the multiple root: the real points
+    /// lie on the real line where the planes meet.
+    PlanePair { root: RootKind },
+    /// A common ruling: lines and a twisted cubic.
+    Rulings,
+}
+
 /// A 4×4 symmetric integer matrix.
-type M4<R> = [[R; 4]; 4];
+pub(crate) type M4<R> = [[R; 4]; 4];
 
 /// The matrix of a quadric (a positive multiple of that of its SPEC §2
 /// equation): `[[q²K, −qKc], [−q(Kc)ᵀ, cᵀKc − q²ρ]]` with the quadratic
 /// block K and the constant ρ of the scaled equation
 /// (sphere `pd·I`, `pn`; cylinder `pd(|a|²I − aaᵀ)`, `pn|a|²`; cone
 /// `pd|a|²I − (pn + pd)aaᵀ`, 0).
-fn matrix<R: SignRing>(x: &QIn<R>) -> M4<R> {
+pub(crate) fn matrix<R: SignRing>(x: &QIn<R>) -> M4<R> {
     let a2 = dot(&x.a, &x.a);
     let (diag, outer, rho) = match x.kind {
         Kind::Sphere => (x.pd.clone(), R::int(0), x.pn.clone()),
@@ -110,11 +165,11 @@ fn matrix<R: SignRing>(x: &QIn<R>) -> M4<R> {
     m
 }
 
-fn det2<R: SignRing>(a: &R, b: &R, c: &R, d: &R) -> R {
+pub(crate) fn det2<R: SignRing>(a: &R, b: &R, c: &R, d: &R) -> R {
     a.mul(d).sub(&b.mul(c))
 }
 
-fn det3<R: SignRing>(m: &[[R; 3]; 3]) -> R {
+pub(crate) fn det3<R: SignRing>(m: &[[R; 3]; 3]) -> R {
     m[0][0]
         .mul(&det2(&m[1][1], &m[1][2], &m[2][1], &m[2][2]))
         .sub(&m[0][1].mul(&det2(&m[1][0], &m[1][2], &m[2][0], &m[2][2])))
@@ -122,7 +177,7 @@ fn det3<R: SignRing>(m: &[[R; 3]; 3]) -> R {
 }
 
 /// The 3×3 minor of a 4×4 matrix without row `r` and column `c`.
-fn minor3<R: SignRing>(m: &M4<R>, r: usize, c: usize) -> R {
+pub(crate) fn minor3<R: SignRing>(m: &M4<R>, r: usize, c: usize) -> R {
     let rows: Vec<usize> = (0..4).filter(|&i| i != r).collect();
     let cols: Vec<usize> = (0..4).filter(|&j| j != c).collect();
     let s: [[R; 3]; 3] =
@@ -131,13 +186,13 @@ fn minor3<R: SignRing>(m: &M4<R>, r: usize, c: usize) -> R {
 }
 
 /// `uᵀ M v`.
-fn form<R: SignRing>(m: &M4<R>, u: &[R; 4], v: &[R; 4]) -> R {
+pub(crate) fn form<R: SignRing>(m: &M4<R>, u: &[R; 4], v: &[R; 4]) -> R {
     let mv: [R; 4] = std::array::from_fn(|i| dot(&m[i], v));
     dot(u, &mv)
 }
 
 /// `d·A − n·B`.
-fn member<R: SignRing>(a: &M4<R>, b: &M4<R>, n: &R, d: &R) -> M4<R> {
+pub(crate) fn member<R: SignRing>(a: &M4<R>, b: &M4<R>, n: &R, d: &R) -> M4<R> {
     std::array::from_fn(|i| std::array::from_fn(|j| d.mul(&a[i][j]).sub(&n.mul(&b[i][j]))))
 }
 
@@ -153,7 +208,7 @@ const LAPLACE: [([usize; 2], [usize; 2], bool); 6] = [
 ];
 
 /// The coefficients `f₀..f₄` of `F(λ) = det(A − λB)`.
-fn pencil_coefficients<R: SignRing>(a: &M4<R>, b: &M4<R>) -> [R; 5] {
+pub(crate) fn pencil_coefficients<R: SignRing>(a: &M4<R>, b: &M4<R>) -> [R; 5] {
     // entries as linear polynomials (a, −b)
     let e = |i: usize, j: usize| (&a[i][j], b[i][j].neg());
     let minor = |r: [usize; 2], c: [usize; 2]| -> [R; 3] {
@@ -189,7 +244,7 @@ fn pencil_coefficients<R: SignRing>(a: &M4<R>, b: &M4<R>) -> [R; 5] {
 }
 
 /// `det M` of a numeric 4×4 matrix (Laplace along rows {0, 1}).
-fn det4<R: SignRing>(m: &M4<R>) -> R {
+pub(crate) fn det4<R: SignRing>(m: &M4<R>) -> R {
     let mut acc = R::int(0);
     for (top, bottom, plus) in LAPLACE {
         let u = det2(&m[0][top[0]], &m[0][top[1]], &m[1][top[0]], &m[1][top[1]]);
@@ -237,13 +292,38 @@ fn definite3<R: SignRing>(m: &[[R; 3]; 3]) -> Option<bool> {
 enum Root<R> {
     Zero,
     Infinity,
-    /// `n/d`.
-    Ratio(R, R),
+    /// `n/d`, by the formula of the kind.
+    Ratio(R, R, RootKind),
 }
 
-/// The non-planar cases, from the pencil of `A` and `B`: B is axial, A is
-/// axial too (`both_axial`) or a sphere.
-fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<Outcome> {
+/// The multiple root `n/d` of the core `F/λ^lo` of the pencil's
+/// determinant (coefficients ascending) by the formula of `kind` (not for
+/// 0 and ∞).
+pub(crate) fn root_ratio<R: SignRing>(core: &[R], kind: RootKind) -> (R, R) {
+    match kind {
+        RootKind::Quadratic => (core[1].neg(), R::int(2).mul(&core[2])),
+        RootKind::CubicTriple => (core[2].neg(), R::int(3).mul(&core[3])),
+        RootKind::CubicDouble => {
+            let (d, c, bb, aa) = (&core[0], &core[1], &core[2], &core[3]);
+            let e = bb.mul(bb).sub(&R::int(3).mul(&aa.mul(c)));
+            (R::int(9).mul(&aa.mul(d)).sub(&bb.mul(c)), R::int(2).mul(&e))
+        }
+        RootKind::Zero | RootKind::Infinity => (R::int(0), R::int(1)),
+    }
+}
+
+/// `F`'s coefficients and the range `lo..=hi` of its non-zero ones.
+pub(crate) type PencilCore<R> = ([R; 5], Option<(usize, usize)>);
+
+/// The pencil's determinant `F(λ) = det(A − λB)` with its known zero
+/// coefficients set (B axial: `f₄ = 0`; both axial: `f₀ = 0` too), and the
+/// core `f[lo..=hi]` between the first and last non-zero coefficients
+/// (`None` inside when `F ≡ 0`; `None` outside when this tier cannot tell).
+pub(crate) fn pencil_core<R: SignRing>(
+    a: &M4<R>,
+    b: &M4<R>,
+    both_axial: bool,
+) -> Option<PencilCore<R>> {
     let mut f = pencil_coefficients(a, b);
     // det B = 0 (B axial: its vertex, or the point at infinity of its
     // axis, is in the kernel), and det A = 0 when A is axial too: exact
@@ -257,9 +337,19 @@ fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<O
         nz[k] = f[k].sign()? != 0;
     }
     let Some(lo) = (0..5).find(|&k| nz[k]) else {
-        return Some(Outcome::Fallback("singular pencil (F ≡ 0)"));
+        return Some((f, None));
     };
     let hi = (0..5).rev().find(|&k| nz[k]).unwrap_or(lo);
+    Some((f, Some((lo, hi))))
+}
+
+/// The non-planar cases, from the pencil of `A` and `B`: B is axial, A is
+/// axial too (`both_axial`) or a sphere.
+fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<Outcome> {
+    let (f, range) = pencil_core(a, b, both_axial)?;
+    let Some((lo, hi)) = range else {
+        return Some(Outcome::Fallback("singular pencil (F ≡ 0)"));
+    };
     let core: Vec<R> = f[lo..=hi].to_vec();
     let mut multiple: Vec<Root<R>> = Vec::new();
     if lo >= 2 {
@@ -276,7 +366,8 @@ fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<O
             let disc = c1.mul(c1).sub(&R::int(4).mul(&c0.mul(c2)));
             let s = disc.sign()?;
             if s == 0 {
-                multiple.push(Root::Ratio(c1.neg(), R::int(2).mul(c2)));
+                let (n, d) = root_ratio(&core, RootKind::Quadratic);
+                multiple.push(Root::Ratio(n, d, RootKind::Quadratic));
             }
             disc2 = Some(s);
         }
@@ -301,14 +392,13 @@ fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<O
             let s = disc.sign()?;
             if s == 0 {
                 let e = bb.mul(bb).sub(&R::int(3).mul(&aa.mul(c)));
-                if e.sign()? == 0 {
-                    multiple.push(Root::Ratio(bb.neg(), R::int(3).mul(aa)));
+                let kind = if e.sign()? == 0 {
+                    RootKind::CubicTriple
                 } else {
-                    multiple.push(Root::Ratio(
-                        R::int(9).mul(&aa.mul(d)).sub(&bb.mul(c)),
-                        R::int(2).mul(&e),
-                    ));
-                }
+                    RootKind::CubicDouble
+                };
+                let (n, d) = root_ratio(&core, kind);
+                multiple.push(Root::Ratio(n, d, kind));
             }
             disc2 = Some(s);
         }
@@ -317,12 +407,12 @@ fn pencil_route<R: SignRing>(a: &M4<R>, b: &M4<R>, both_axial: bool) -> Option<O
     match multiple.len() {
         0 => nonsingular(a, b, &f, lo, hi, disc2, both_axial),
         1 => {
-            let (m0, n) = match &multiple[0] {
-                Root::Zero => (a.clone(), b),
-                Root::Infinity => (b.clone(), a),
-                Root::Ratio(num, den) => (member(a, b, num, den), b),
+            let (m0, n, kind) = match &multiple[0] {
+                Root::Zero => (a.clone(), b, RootKind::Zero),
+                Root::Infinity => (b.clone(), a, RootKind::Infinity),
+                Root::Ratio(num, den, kind) => (member(a, b, num, den), b, *kind),
             };
-            one_multiple_root(&m0, n)
+            one_multiple_root(&m0, n, kind)
         }
         _ => Some(Outcome::Rulings),
     }
@@ -337,6 +427,7 @@ const NONSINGULAR: Outcome = Outcome::Counts(
         points: 0,
     },
     "pencil: nonsingular quartic",
+    Case::Smooth,
 );
 
 /// A nonsingular intersection without real points.
@@ -348,6 +439,7 @@ const DEFINITE: Outcome = Outcome::Counts(
         points: 0,
     },
     "pencil: definite member (nonsingular, no real point)",
+    Case::Empty,
 );
 
 /// A nonsingular intersection (F has four distinct roots on the projective
@@ -475,7 +567,7 @@ fn dyadic_of(x: f64) -> Option<(BigInt, BigInt)> {
 
 /// Exactly one multiple root λ₀; `m0 = A − λ₀B` (scaled), `n` another
 /// member of the pencil.
-fn one_multiple_root<R: SignRing>(m0: &M4<R>, n: &M4<R>) -> Option<Outcome> {
+fn one_multiple_root<R: SignRing>(m0: &M4<R>, n: &M4<R>, root: RootKind) -> Option<Outcome> {
     // rank 3 iff a diagonal cofactor is non-zero (adj = c·ppᵀ)
     let mut vertex = None;
     for k in 0..4 {
@@ -490,27 +582,29 @@ fn one_multiple_root<R: SignRing>(m0: &M4<R>, n: &M4<R>) -> Option<Outcome> {
                 let c = minor3(m0, i, k);
                 if (i + k) % 2 == 0 { c } else { c.neg() }
             });
-            nodal(m0, n, &p)
+            nodal(m0, n, &p, root, k)
         }
-        None => plane_pair(m0, n),
+        None => plane_pair(m0, n, root),
     }
 }
 
-/// A cone member `m0` (rank 3, vertex p) at the only multiple root: p is
-/// the only singular point of the intersection; real points other than p
-/// correspond to the real generators of the cone off the tangent plane of
-/// `n` at p (each meets `n` once more), so there is a real curve iff the
-/// cone is real (the form of `m0` on `R⁴/p` is indefinite); p is an acnode
-/// iff the tangent cone (the cone's lines in `T_p n`) is a complex pair.  A
-/// line of the intersection must pass through p and lie in the tangent
-/// cone and on `n`: a common root of two binary forms.
-fn nodal<R: SignRing>(m0: &M4<R>, n: &M4<R>, p: &[R; 4]) -> Option<Outcome> {
+/// The tangent cone of the intersection at the vertex `p` of the cone
+/// member `m0` (on the other member `n`): the sign of the discriminant of
+/// `m0`'s form on two vectors spanning `n`'s tangent plane at `p` modulo
+/// `p` (negative: an acnode, zero: a cusp, positive: two real branches),
+/// the sign of the resultant of that form and `n`'s (zero: a common line
+/// through `p`), and the index `k` of a non-zero coordinate of `p`.
+pub(crate) fn vertex_cone<R: SignRing>(
+    m0: &M4<R>,
+    n: &M4<R>,
+    p: &[R; 4],
+) -> Option<Result<(i32, i32, usize), &'static str>> {
     let g: [R; 4] = std::array::from_fn(|i| dot(&n[i], p));
     if dot(&g, p).sign()? != 0 {
-        return Some(Outcome::Fallback("vertex not on the intersection"));
+        return Some(Err("vertex not on the intersection"));
     }
     let Some(j) = (0..4).find(|&i| g[i].sign() != Some(0)) else {
-        return Some(Outcome::Fallback("common singular point"));
+        return Some(Err("common singular point"));
     };
     g[j].sign()?;
     let mut k = None;
@@ -521,7 +615,7 @@ fn nodal<R: SignRing>(m0: &M4<R>, n: &M4<R>, p: &[R; 4]) -> Option<Outcome> {
         }
     }
     let Some(k) = k else {
-        return Some(Outcome::Fallback("degenerate vertex"));
+        return Some(Err("degenerate vertex"));
     };
     // u, v: t_i = g_j e_i − g_i e_j for the two i ∉ {j, k}
     let t = |i: usize| -> [R; 4] {
@@ -545,7 +639,29 @@ fn nodal<R: SignRing>(m0: &M4<R>, n: &M4<R>, p: &[R; 4]) -> Option<Outcome> {
         &R::int(4)
             .mul(&det2(&m[0], &m[1], &bq[0], &bq[1]).mul(&det2(&m[1], &m[2], &bq[1], &bq[2]))),
     );
-    if res.sign()? == 0 {
+    Some(Ok((disc_m, res.sign()?, k)))
+}
+
+/// A cone member `m0` (rank 3, vertex p) at the only multiple root: p is
+/// the only singular point of the intersection; real points other than p
+/// correspond to the real generators of the cone off the tangent plane of
+/// `n` at p (each meets `n` once more), so there is a real curve iff the
+/// cone is real (the form of `m0` on `R⁴/p` is indefinite); p is an acnode
+/// iff the tangent cone (the cone's lines in `T_p n`) is a complex pair.  A
+/// line of the intersection must pass through p and lie in the tangent
+/// cone and on `n`: a common root of two binary forms.
+fn nodal<R: SignRing>(
+    m0: &M4<R>,
+    n: &M4<R>,
+    p: &[R; 4],
+    root: RootKind,
+    k0: usize,
+) -> Option<Outcome> {
+    let (disc_m, res, k) = match vertex_cone(m0, n, p)? {
+        Ok(x) => x,
+        Err(why) => return Some(Outcome::Fallback(why)),
+    };
+    if res == 0 {
         return Some(Outcome::Rulings);
     }
     let idx: Vec<usize> = (0..4).filter(|&i| i != k).collect();
@@ -564,19 +680,25 @@ fn nodal<R: SignRing>(m0: &M4<R>, n: &M4<R>, p: &[R; 4]) -> Option<Outcome> {
                 Counts::empty()
             },
             "pencil: a cone member with imaginary generators (isolated tangency point)",
+            if affine {
+                Case::ConePoint { root, k: k0 }
+            } else {
+                Case::Empty
+            },
         ));
     }
     let acnode = disc_m < 0 && affine;
     Some(Outcome::Counts(
         Counts::curve(usize::from(acnode)),
         "pencil: one singular point (nodal or cuspidal quartic)",
+        Case::Nodal { root, k: k0 },
     ))
 }
 
 /// A member of rank 2 at the only multiple root: two planes.  Complex
 /// conjugate planes meet in a real line L, and every real point of the
 /// intersection lies on L: the affine real points of `L ∩ n`.
-fn plane_pair<R: SignRing>(m0: &M4<R>, n: &M4<R>) -> Option<Outcome> {
+fn plane_pair<R: SignRing>(m0: &M4<R>, n: &M4<R>, root: RootKind) -> Option<Outcome> {
     let mut pivot = None;
     'outer: for i in 0..4 {
         for j in i + 1..4 {
@@ -632,6 +754,11 @@ fn plane_pair<R: SignRing>(m0: &M4<R>, n: &M4<R>) -> Option<Outcome> {
     Some(Outcome::Counts(
         Counts::of(0, 0, count),
         "pencil: complex-conjugate plane pair (isolated tangency points)",
+        if count > 0 {
+            Case::PlanePair { root }
+        } else {
+            Case::Empty
+        },
     ))
 }
 
@@ -675,7 +802,11 @@ fn common_roots<R: SignRing>(p: &[R; 3], q: &[R; 3]) -> Option<usize> {
 }
 
 /// `(f(u,u), 2f(u,v), f(v,v))`: the binary form of `f` on `span(u, v)`.
-fn binary<R: SignRing, const N: usize>(f: &[[R; N]; N], u: &[R; N], v: &[R; N]) -> [R; 3] {
+pub(crate) fn binary<R: SignRing, const N: usize>(
+    f: &[[R; N]; N],
+    u: &[R; N],
+    v: &[R; N],
+) -> [R; 3] {
     let fu: [R; N] = std::array::from_fn(|i| dot(&f[i], u));
     let fv: [R; N] = std::array::from_fn(|i| dot(&f[i], v));
     [dot(u, &fu), R::int(2).mul(&dot(u, &fv)), dot(v, &fv)]
@@ -790,6 +921,7 @@ fn rulings<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
     Some(Outcome::Counts(
         Counts::new(Class::Curve, 0, n, 0),
         "common ruling: a line and a twisted cubic",
+        Case::Rulings,
     ))
 }
 
@@ -797,35 +929,35 @@ fn rulings<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
 
 /// `u + v√d`.
 #[derive(Clone, Debug)]
-struct Sq<R> {
-    u: R,
-    v: R,
+pub(crate) struct Sq<R> {
+    pub(crate) u: R,
+    pub(crate) v: R,
 }
 
 impl<R: SignRing> Sq<R> {
-    fn rat(u: R) -> Sq<R> {
+    pub(crate) fn rat(u: R) -> Sq<R> {
         Sq { u, v: R::int(0) }
     }
-    fn add(&self, o: &Sq<R>) -> Sq<R> {
+    pub(crate) fn add(&self, o: &Sq<R>) -> Sq<R> {
         Sq {
             u: self.u.add(&o.u),
             v: self.v.add(&o.v),
         }
     }
-    fn mul(&self, o: &Sq<R>, d: &R) -> Sq<R> {
+    pub(crate) fn mul(&self, o: &Sq<R>, d: &R) -> Sq<R> {
         Sq {
             u: self.u.mul(&o.u).add(&self.v.mul(&o.v).mul(d)),
             v: self.u.mul(&o.v).add(&self.v.mul(&o.u)),
         }
     }
-    fn scale(&self, k: &R) -> Sq<R> {
+    pub(crate) fn scale(&self, k: &R) -> Sq<R> {
         Sq {
             u: self.u.mul(k),
             v: self.v.mul(k),
         }
     }
     /// The exact sign (`d > 0`).
-    fn sign(&self, d: &R) -> Option<i32> {
+    pub(crate) fn sign(&self, d: &R) -> Option<i32> {
         let (su, sv) = (self.u.sign()?, self.v.sign()?);
         if sv == 0 || su == sv {
             return Some(su);
@@ -912,7 +1044,7 @@ fn section<R: SignRing>(h: &[[R; 3]; 3], p: &[Sq<R>; 3], w: &[Sq<R>; 2], d: &R) 
 /// homogeneous frame coordinates `(s, t, w)` of `U = P1 + (s e1 + t e2)/w`:
 /// `κ(Qw)²h²(U)` with `κ = |a|²pd` (docs/maths.md), from the vectors
 /// `E1 = Q e1`, `E2 = Q e2`, `E0 = Q(P1 − P)`.
-fn height_conic<R: SignRing>(x: &QIn<R>, e: &[[R; 3]; 3], qq: &R) -> [[R; 3]; 3] {
+pub(crate) fn height_conic<R: SignRing>(x: &QIn<R>, e: &[[R; 3]; 3], qq: &R) -> [[R; 3]; 3] {
     let a2 = dot(&x.a, &x.a);
     let ea: [R; 3] = std::array::from_fn(|i| dot(&e[i], &x.a));
     let mut h: [[R; 3]; 3] = std::array::from_fn(|i| {
@@ -951,10 +1083,10 @@ fn planar<R: SignRing>(x: &QIn<R>, y: &QIn<R>, parallel: bool) -> Option<Option<
     if det3(&f).sign()? != 0 {
         return Some(None);
     }
-    Some(Some(planar_counts(&f, &h1)?))
+    Some(Some(planar_counts(&f, &h1, Case::Planar { parallel })?))
 }
 
-fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3]) -> Option<Outcome> {
+fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3], case: Case) -> Option<Outcome> {
     const WHY: &str = "axial plane: projection conic factors (Lemma 8.1)";
     let r = |x: &R| Sq::rat(x.clone());
     let zero = R::int(0);
@@ -992,18 +1124,18 @@ fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3]) -> Option<Outcom
             }
             points += 1;
         }
-        Outcome::Counts(Counts::of(conics, lines, points), WHY)
+        Outcome::Counts(Counts::of(conics, lines, points), WHY, case)
     };
     if !rank2 {
         let Some(row) = (0..3).find(|&i| f[i].iter().any(|x| x.sign() != Some(0))) else {
-            return Some(Outcome::Counts(Counts::empty(), WHY)); // F ≡ 0
+            return Some(Outcome::Counts(Counts::empty(), WHY, case)); // F ≡ 0
         };
         for x in &f[row] {
             x.sign()?;
         }
         let v = &f[row];
         if v[0].sign()? == 0 && v[1].sign()? == 0 {
-            return Some(Outcome::Counts(Counts::empty(), WHY));
+            return Some(Outcome::Counts(Counts::empty(), WHY, case));
         }
         let p = if v[0].sign()? != 0 {
             [r(&v[2].neg()), r(&zero), r(&v[0])]
@@ -1043,7 +1175,7 @@ fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3]) -> Option<Outcom
                     0 => 1,
                     _ => 0,
                 };
-                return Some(Outcome::Counts(Counts::of(0, 0, n), WHY));
+                return Some(Outcome::Counts(Counts::of(0, 0, n), WHY, case));
             }
             0 => return Some(Outcome::Fallback("degenerate factorisation")),
             _ => {}
@@ -1093,7 +1225,7 @@ fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3]) -> Option<Outcom
     let w = [r(&k[0]), r(&k[1])];
     if a.sign()? == 0 {
         if b.sign()? == 0 {
-            return Some(Outcome::Counts(Counts::empty(), WHY));
+            return Some(Outcome::Counts(Counts::empty(), WHY, case));
         }
         let p = [
             r(&c.neg().mul(&pv[0])),
@@ -1104,7 +1236,7 @@ fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3]) -> Option<Outcom
     }
     let disc = b.mul(&b).sub(&a.mul(&c));
     match disc.sign()? {
-        -1 => Some(Outcome::Counts(Counts::empty(), WHY)),
+        -1 => Some(Outcome::Counts(Counts::empty(), WHY, case)),
         0 => {
             let p = [r(&b.neg().mul(&pv[0])), r(&b.neg().mul(&pv[1])), r(&a)];
             Some(count(&[section(h, &p, &w, &zero)?], false))
@@ -1132,7 +1264,7 @@ fn two_spheres<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
     let d = point_difference(x, y);
     let dd = dot(&d, &d);
     if dd.sign()? == 0 {
-        return Some(Outcome::Counts(Counts::empty(), WHY));
+        return Some(Outcome::Counts(Counts::empty(), WHY, Case::TwoSpheres));
     }
     // d² = Δ/s with s = (q1q2)²; ρ² has the sign of 4Δ·r1·s·pd1·pd2² − T²
     let s = x.q.mul(&y.q);
@@ -1153,7 +1285,7 @@ fn two_spheres<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
         0 => Counts::of(0, 0, 1),
         _ => Counts::empty(),
     };
-    Some(Outcome::Counts(c, WHY))
+    Some(Outcome::Counts(c, WHY, Case::TwoSpheres))
 }
 
 /// A sphere whose centre lies on the axis of `w` ([`super::coaxial::sphere_on_axis`]).
@@ -1191,7 +1323,7 @@ fn sphere_on_axis<R: SignRing>(s: &QIn<R>, w: &QIn<R>) -> Option<Outcome> {
             }
         }
     };
-    Some(Outcome::Counts(c, WHY))
+    Some(Outcome::Counts(c, WHY, Case::SphereOnAxis))
 }
 
 /// Two axial quadrics on one axis ([`super::coaxial::same_axis`]).
@@ -1210,7 +1342,7 @@ fn same_axis<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<Outcome> {
         }
         _ => Counts::of(2, 0, 0),
     };
-    Some(Outcome::Counts(c, WHY))
+    Some(Outcome::Counts(c, WHY, Case::SameAxis))
 }
 
 /// Are the two quadrics the same surface (equal parameters)?
@@ -1237,6 +1369,7 @@ pub(crate) fn program<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<(Outcome, A
             Outcome::Counts(
                 Counts::new(Class::SameSurface, 0, 0, 0),
                 "proportional equations",
+                Case::SameSurface,
             ),
             axes,
         ));
@@ -1323,6 +1456,13 @@ pub struct ClassifyOptions {
     /// the class is [`Class::Undecided`] and [`NaturalReport::exhausted`]
     /// says which limit.
     pub budget: Budget,
+    /// Also run the papers' deciders by the reference route (Theorem
+    /// 8.1/8.2, Lemma 8.1, the pencil, and §7 for skew axes), report them
+    /// ([`NaturalReport::deciders`], [`NaturalReport::section7`]) and check
+    /// them and the reference route's components against the answer (a
+    /// disagreement is a note).  Off by default: it costs the reference
+    /// route (milliseconds); `quadsect examples` and `--deciders` use it.
+    pub deciders: bool,
 }
 
 impl Default for ClassifyOptions {
@@ -1330,6 +1470,7 @@ impl Default for ClassifyOptions {
         ClassifyOptions {
             components: true,
             budget: Budget::default(),
+            deciders: false,
         }
     }
 }
@@ -1348,6 +1489,13 @@ impl ClassifyOptions {
         self.components = false;
         self
     }
+
+    /// The same options with the papers' deciders by the reference route
+    /// ([`ClassifyOptions::deciders`]).
+    pub fn with_deciders(mut self) -> ClassifyOptions {
+        self.deciders = true;
+        self
+    }
 }
 
 /// The fast route on prepared quadrics (see [`Prepared`]): class and
@@ -1363,7 +1511,7 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
         Ok(r)
     };
     let (counts, method) = match out {
-        Outcome::Counts(c, m) => (c, m),
+        Outcome::Counts(c, m, _) => (c, m),
         Outcome::Fallback(why) => return fallback(why),
         Outcome::Rulings => return fallback("possible common ruling"),
     };
@@ -1385,10 +1533,59 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
     })
 }
 
-/// Classifies two natural quadrics under a budget: with `components` the
-/// complete route (exact components), without them the fast route
-/// ([`classify_counts`]: pencil signatures and filtered integer sign tests,
-/// a few µs).  The class and counts are the same either way.
+/// The whole answer on prepared quadrics: the fast route's predicates
+/// decide the class and counts and the case, then the case's construction
+/// builds the exact components ([`super::construct`]) — one pipeline, no
+/// second classification.  No budget of its own (see [`classify_with`]).
+pub fn classify_prepared(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Error> {
+    let (x, y) = (&a.prep, &b.prep);
+    let (out, axes) = run_tiers(x, y);
+    let (counts, method, case) = match out {
+        Outcome::Counts(c, m, case) => (c, m, case),
+        Outcome::Fallback(why) => {
+            let mut r = classify_complete(a.natural(), b.natural())?;
+            r.notes.push(format!(
+                "decided by the reference route (the predicates: {why})"
+            ));
+            return Ok(r);
+        }
+        Outcome::Rulings => {
+            let mut r = classify_complete(a.natural(), b.natural())?;
+            r.notes
+                .push("decided by the reference route (a possible common ruling)".into());
+            return Ok(r);
+        }
+    };
+    let (components, notes) = super::construct::components(a, b, case)?;
+    let built = Counts::of_components(&components);
+    if case != Case::SameSurface && built != counts {
+        return Err(Error::internal(format!(
+            "the construction for {case:?} built {built:?}, the predicates decided {counts:?}"
+        )));
+    }
+    Ok(NaturalReport {
+        a: a.natural().clone(),
+        b: b.natural().clone(),
+        class: counts.class,
+        axes: axes_relation_of(x, y, axes),
+        thm8: a.conic_intersection_thm8(b),
+        components,
+        deciders: None,
+        section7: None,
+        method,
+        notes,
+        counts,
+        components_computed: true,
+        route: None,
+        exhausted: None,
+    })
+}
+
+/// Classifies two natural quadrics under a budget: the class and counts
+/// from the fast route's predicates (pencil signatures and filtered integer
+/// sign tests, a few µs), and with `components` the exact components built
+/// from the decision ([`classify_prepared`]).  The class and counts are the
+/// same either way.
 pub fn classify_with(
     a: &Natural,
     b: &Natural,
@@ -1396,11 +1593,16 @@ pub fn classify_with(
 ) -> Result<NaturalReport, Error> {
     crate::budget::run(&options.budget, || {
         crate::budget::check_now();
-        if options.components {
-            classify_complete(a, b)
+        let (pa, pb) = (Prepared::new(a), Prepared::new(b));
+        let mut r = if options.components {
+            classify_prepared(&pa, &pb)?
         } else {
-            classify_counts(&Prepared::new(a), &Prepared::new(b))
+            classify_counts(&pa, &pb)?
+        };
+        if options.deciders {
+            super::classify::add_reference_deciders(&mut r)?;
         }
+        Ok(r)
     })
     .unwrap_or_else(|e| Ok(NaturalReport::budget_exhausted(a, b, e)))
 }

@@ -11,8 +11,12 @@
 //! projection-conic discriminant and the pencil rank — are reported and
 //! checked against each other; [`thm8`] is the closed form alone.
 
+pub(crate) mod build_pencil;
+pub(crate) mod build_planar;
 pub(crate) mod classify;
 pub(crate) mod coaxial;
+pub(crate) mod construct;
+pub(crate) mod curve;
 pub(crate) mod deciders;
 pub(crate) mod exact;
 pub(crate) mod fast;
@@ -22,14 +26,19 @@ pub(crate) mod result;
 pub(crate) mod tangency;
 pub(crate) mod topology;
 pub(crate) mod types;
+pub(crate) mod zsqrt;
 
 pub use crate::geom::cayley_rotation;
 pub use classify::{classify, classify_str};
+pub use curve::CurvePoint;
 pub use deciders::{AxesRelation, conic_intersection_thm8 as thm8};
 pub use exact::{EPoint, Exact};
-pub use fast::{ClassifyOptions, classify_counts, classify_with};
+pub use fast::{ClassifyOptions, classify_counts, classify_prepared, classify_with};
 pub use prepared::Prepared;
-pub use result::{Class, Component, ConicKind, NaturalReport, PlanarDeciders, Plane, PointKind};
+pub use result::{
+    Class, Component, ConicKind, CurveBranch, NaturalReport, PlanarDeciders, Plane, PointKind,
+    SingularKind, SingularPoint,
+};
 pub use tangency::Section7;
 pub(crate) use types::parse_natural;
 pub use types::{Cone, Cylinder, Natural, Sphere};

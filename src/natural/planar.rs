@@ -207,7 +207,7 @@ fn rat_vec(v: &V3) -> EPoint {
 }
 
 /// `base + s·μ·n` coordinate-wise, with `μ² = mu2 ∈ Q(√d)`.
-fn offset_point(base: &[QSqrt; 3], n: &V3, mu2: &QSqrt, s: i32) -> EPoint {
+pub(crate) fn offset_point(base: &[QSqrt; 3], n: &V3, mu2: &QSqrt, s: i32) -> EPoint {
     std::array::from_fn(|i| {
         nested(
             &base[i].a,

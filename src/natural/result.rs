@@ -5,6 +5,7 @@ use super::deciders::AxesRelation;
 use super::exact::{EPoint, Exact};
 use super::types::Natural;
 use crate::number::Q;
+use num_traits::One;
 
 /// The type of a conic.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -109,9 +110,69 @@ pub enum Component {
     Curve {
         /// Its degree.
         degree: u32,
-        /// Its real singular points, with `true` for an isolated one (acnode).
-        singular: Vec<(EPoint, bool)>,
+        /// Its real affine singular points with their type.
+        singular: Vec<SingularPoint>,
+        /// Its real affine connected components (branches), each with
+        /// whether it is bounded and a point on it (where a marcher
+        /// starts).  Empty only in the reference route's answers
+        /// ([`super::ClassifyOptions::deciders`]), which do not trace branches.
+        branches: Vec<CurveBranch>,
     },
+}
+
+/// The type of a real singular point of an intersection curve.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum SingularKind {
+    /// An isolated real point (the tangent cone is imaginary).
+    Acnode,
+    /// Two real branches cross (a node with real tangents).
+    Crossing,
+    /// A cusp (the tangent cone is a double line).
+    Cusp,
+    /// Two real branches touch (a common line meeting the rest of the
+    /// curve tangentially).
+    Tacnode,
+}
+
+impl SingularKind {
+    /// Output spelling.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            SingularKind::Acnode => "acnode",
+            SingularKind::Crossing => "crossing",
+            SingularKind::Cusp => "cusp",
+            SingularKind::Tacnode => "tacnode",
+        }
+    }
+}
+
+/// A real singular point of an intersection curve.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct SingularPoint {
+    /// Its exact coordinates.
+    pub point: EPoint,
+    /// Its type.
+    pub kind: SingularKind,
+}
+
+impl SingularPoint {
+    /// True for an isolated point (an acnode).
+    pub fn is_isolated(&self) -> bool {
+        self.kind == SingularKind::Acnode
+    }
+}
+
+/// One real affine connected component of an intersection curve.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct CurveBranch {
+    /// The component is bounded (a closed loop); otherwise both its ends go
+    /// to infinity.
+    pub bounded: bool,
+    /// A point on it.
+    pub start: super::curve::CurvePoint,
 }
 
 /// The class of the intersection, decided in this order: `same-surface`
@@ -263,7 +324,7 @@ impl Counts {
             .iter()
             .map(|c| match c {
                 Component::Curve { singular, .. } => {
-                    singular.iter().filter(|(_, iso)| *iso).count()
+                    singular.iter().filter(|p| p.is_isolated()).count()
                 }
                 _ => 0,
             })
@@ -407,4 +468,233 @@ pub(crate) fn class_of(components: &[Component]) -> Class {
     } else {
         Class::Empty
     }
+}
+
+/// Two exact numbers equal: exactly when both lie in one quadratic field
+/// (or one is rational), else through their real algebraic forms.
+fn same_number(a: &Exact, b: &Exact) -> bool {
+    a.equals(b)
+}
+
+/// The exact values of a vector when all lie in one field Q(√d).
+fn one_field(v: &[&Exact]) -> Option<Vec<crate::number::QSqrt>> {
+    let mut d: Option<Q> = None;
+    let mut out = Vec::new();
+    for x in v {
+        match x {
+            Exact::Quad(q) => {
+                let q = q.normalized();
+                if !q.is_rational() {
+                    match &d {
+                        Some(e) if *e != q.d => return None,
+                        _ => d = Some(q.d.clone()),
+                    }
+                }
+                out.push(q);
+            }
+            Exact::Alg(_) => return None,
+        }
+    }
+    Some(out)
+}
+
+/// Are two vectors (of any length) parallel?  Exact in one field;
+/// otherwise the 2×2 minors are compared at 2^-200 of the product of the
+/// largest entries (a test-and-report helper, never a decision of the
+/// engine's answers).
+fn parallel(u: &[Exact], v: &[Exact]) -> bool {
+    let all: Vec<&Exact> = u.iter().chain(v.iter()).collect();
+    let n = u.len();
+    if let Some(q) = one_field(&all) {
+        for i in 0..n {
+            for j in i + 1..n {
+                if !q[i].mul(&q[n + j]).sub(&q[j].mul(&q[n + i])).is_zero() {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+    let ap: Vec<Q> = all.iter().map(|x| x.to_rational_approx(256)).collect();
+    let big = ap
+        .iter()
+        .map(num_traits::Signed::abs)
+        .max()
+        .unwrap_or_else(Q::one);
+    let tol = &big * &big / Q::from_integer(num_bigint::BigInt::from(1) << 200usize);
+    for i in 0..n {
+        for j in i + 1..n {
+            let m = &ap[i] * &ap[n + j] - &ap[j] * &ap[n + i];
+            if num_traits::Signed::abs(&m) > tol {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+fn same_point(p: &EPoint, q: &EPoint) -> bool {
+    (0..3).all(|i| same_number(&p[i], &q[i]))
+}
+
+fn diff(p: &EPoint, q: &EPoint) -> Option<EPoint> {
+    let v = one_field(&[&p[0], &p[1], &p[2], &q[0], &q[1], &q[2]])?;
+    Some(std::array::from_fn(|i| Exact::Quad(v[i].sub(&v[i + 3]))))
+}
+
+fn same_line(p: &EPoint, d: &EPoint, q: &EPoint, e: &EPoint) -> bool {
+    if !parallel(d, e) {
+        return false;
+    }
+    if same_point(p, q) {
+        return true;
+    }
+    match diff(q, p) {
+        Some(r) => parallel(&r, d),
+        None => {
+            // approximately: (q − p) × d small
+            let r: Vec<Exact> = (0..3)
+                .map(|i| {
+                    Exact::rational(q[i].to_rational_approx(256) - p[i].to_rational_approx(256))
+                })
+                .collect();
+            parallel(&r, d)
+        }
+    }
+}
+
+fn same_plane(a: &Plane, b: &Plane) -> bool {
+    let u = [
+        a.normal[0].clone(),
+        a.normal[1].clone(),
+        a.normal[2].clone(),
+        a.offset.clone(),
+    ];
+    let v = [
+        b.normal[0].clone(),
+        b.normal[1].clone(),
+        b.normal[2].clone(),
+        b.offset.clone(),
+    ];
+    parallel(&u, &v)
+}
+
+/// Two components describe the same geometric object (planes, directions
+/// and lines compared up to scale and choice of point).
+pub(crate) fn same_component(a: &Component, b: &Component) -> bool {
+    let opt_point = |p: &Option<EPoint>, q: &Option<EPoint>| match (p, q) {
+        (None, None) => true,
+        (Some(p), Some(q)) => same_point(p, q),
+        _ => false,
+    };
+    match (a, b) {
+        (
+            Component::Conic {
+                plane: p1,
+                kind: k1,
+                center: c1,
+                vertex: v1,
+                axes2: x1,
+                axis_dirs: d1,
+                focal2: f1,
+                double: o1,
+            },
+            Component::Conic {
+                plane: p2,
+                kind: k2,
+                center: c2,
+                vertex: v2,
+                axes2: x2,
+                axis_dirs: d2,
+                focal2: f2,
+                double: o2,
+            },
+        ) => {
+            k1 == k2
+                && o1 == o2
+                && same_plane(p1, p2)
+                && opt_point(c1, c2)
+                && opt_point(v1, v2)
+                && x1.len() == x2.len()
+                && x1.iter().zip(x2).all(|(x, y)| same_number(x, y))
+                && d1.len() == d2.len()
+                && (*k1 == ConicKind::Circle || d1.iter().zip(d2).all(|(x, y)| parallel(x, y)))
+                && match (f1, f2) {
+                    (None, None) => true,
+                    (Some(x), Some(y)) => same_number(x, y),
+                    _ => false,
+                }
+        }
+        (
+            Component::Line {
+                point: p1,
+                direction: d1,
+                double: o1,
+            },
+            Component::Line {
+                point: p2,
+                direction: d2,
+                double: o2,
+            },
+        ) => o1 == o2 && same_line(p1, d1, p2, d2),
+        (
+            Component::Point {
+                point: p1,
+                kind: k1,
+            },
+            Component::Point {
+                point: p2,
+                kind: k2,
+            },
+        ) => k1 == k2 && same_point(p1, p2),
+        (
+            Component::Curve {
+                degree: g1,
+                singular: s1,
+                branches: b1,
+            },
+            Component::Curve {
+                degree: g2,
+                singular: s2,
+                branches: b2,
+            },
+        ) => {
+            // the reference route does not trace branches nor tell cusps
+            // from crossings: compare what both computed
+            let kinds_agree = |a: &SingularPoint, b: &SingularPoint| {
+                if b1.is_empty() || b2.is_empty() {
+                    a.is_isolated() == b.is_isolated()
+                } else {
+                    a.kind == b.kind
+                }
+            };
+            g1 == g2
+                && s1.len() == s2.len()
+                && s1.iter().all(|p| {
+                    s2.iter()
+                        .any(|q| kinds_agree(p, q) && same_point(&p.point, &q.point))
+                })
+                && (b1.is_empty()
+                    || b2.is_empty()
+                    || (b1.len() == b2.len()
+                        && b1.iter().filter(|b| b.bounded).count()
+                            == b2.iter().filter(|b| b.bounded).count()))
+        }
+        _ => false,
+    }
+}
+
+/// Two lists of components hold the same objects (in any order).
+pub(crate) fn same_components(a: &[Component], b: &[Component]) -> bool {
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut used = vec![false; b.len()];
+    for x in a {
+        match (0..b.len()).find(|&j| !used[j] && same_component(x, &b[j])) {
+            Some(j) => used[j] = true,
+            None => return false,
+        }
+    }
+    true
 }

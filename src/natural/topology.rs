@@ -19,7 +19,7 @@
 //!   cone's form on the other surface's tangent plane at V decides the same.
 
 use super::exact::{EPoint, Exact, epoint, exact_of};
-use super::result::{Component, PointKind};
+use super::result::{Component, PointKind, SingularKind, SingularPoint};
 use super::types::Natural;
 use crate::error::Error;
 use crate::geom::QuadricForm;
@@ -431,10 +431,17 @@ pub fn classify_nonplanar(
                 double: false,
             });
         }
-        let singular = zeros.iter().map(|z| (zero_point(z), false)).collect();
+        let singular = zeros
+            .iter()
+            .map(|z| SingularPoint {
+                point: zero_point(z),
+                kind: SingularKind::Crossing,
+            })
+            .collect();
         comps.push(Component::Curve {
             degree: 4 - lines.len() as u32,
             singular,
+            branches: vec![],
         });
         notes.push("the surfaces share a ruling: the rest of the intersection is a twisted cubic (missing from the paper's Table 1)".into());
         return Ok((comps, notes));
@@ -452,11 +459,19 @@ pub fn classify_nonplanar(
                     false
                 }
             };
-            singular.push((zero_point(z), iso));
+            singular.push(SingularPoint {
+                point: zero_point(z),
+                kind: if iso {
+                    SingularKind::Acnode
+                } else {
+                    SingularKind::Crossing
+                },
+            });
         }
         comps.push(Component::Curve {
             degree: 4,
             singular,
+            branches: vec![],
         });
     } else {
         for z in &zeros {

@@ -18,6 +18,7 @@ mod parse;
 pub mod qsqrt;
 pub(crate) mod reconstruct;
 mod sign;
+pub(crate) mod xball;
 
 pub use float::double_value;
 pub use parse::{NumberError, NumberMode, parse_rational, parse_rational_with, scan_number_with};

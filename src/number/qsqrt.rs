@@ -139,6 +139,12 @@ impl QSqrt {
         }
     }
 
+    /// `a + b√d` for a `d` known not to be a square (no square test).
+    pub(crate) fn from_parts_nonsquare(a: Q, b: Q, d: Q) -> Self {
+        debug_assert!(exact_sqrt_q(&d).is_none() || b.is_zero());
+        QSqrt::from_parts(a, b, d)
+    }
+
     /// `√d` itself.
     pub(crate) fn sqrt(d: Q) -> Self {
         QSqrt::new(Q::zero(), Q::one(), d)

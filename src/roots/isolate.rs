@@ -73,6 +73,35 @@ pub fn sign_variations(c: &[BigInt]) -> usize {
     v.count
 }
 
+/// Descartes' rule on an open interval `(lo, hi)`: the sign variations of
+/// `(be(1+t))ⁿ·p((ae + bc·t)/(be(1+t)))` for `lo = a/b`, `hi = c/e` — an
+/// upper bound on the number of roots of `p` in `(lo, hi)` with the same
+/// parity, so 0 and 1 are exact counts.
+pub(crate) fn descartes_in(p: &ZPoly, lo: &Q, hi: &Q) -> usize {
+    let Some(n) = p.degree() else {
+        return usize::MAX;
+    };
+    let (a, b) = (lo.numer(), lo.denom());
+    let (c, e) = (hi.numer(), hi.denom());
+    // x = (u0 + u1 t)/(w0 + w1 t)
+    let num = ZPoly::new(vec![a * e, b * c]);
+    let den = ZPoly::new(vec![b * e, b * e]);
+    let mut pows_num = vec![ZPoly::constant(BigInt::one())];
+    let mut pows_den = vec![ZPoly::constant(BigInt::one())];
+    for i in 1..=n {
+        pows_num.push(&pows_num[i - 1] * &num);
+        pows_den.push(&pows_den[i - 1] * &den);
+    }
+    let mut acc = ZPoly::zero();
+    for (i, ci) in p.coeffs().iter().enumerate() {
+        if ci.is_zero() {
+            continue;
+        }
+        acc = &acc + &(&pows_num[i] * &pows_den[n - i]).scale(ci);
+    }
+    sign_variations(acc.coeffs())
+}
+
 /// Descartes' bounds: `(var p(x), var p(-x))` after removing the root 0;
 /// upper bounds on the numbers of positive and negative roots (counted with
 /// multiplicity) with the same parity.

@@ -26,7 +26,9 @@ mod zerodim;
 pub use algebraic::{RealAlg, separate};
 pub use enclose::{eval_q, value_at, value_polynomial, values_at, values_with};
 pub(crate) use enclose::{meets, ratio_enclosure};
+pub(crate) use isolate::descartes_in;
 pub use isolate::{RootInterval, bisect_once, isolate_real_roots, isolate_squarefree};
+pub(crate) use rational::no_rational_root_sieve;
 pub use rational::{simplest_rational_in, split_cubic};
 pub use report::{RealRoot, RootReport, analyze_roots};
 pub use sturm::SturmSequence;
@@ -40,6 +42,6 @@ pub use enclose::enclose_mean_value;
 #[cfg(test)]
 pub use isolate::refine;
 #[cfg(test)]
-pub use rational::{no_rational_root_sieve, rational_roots};
+pub use rational::rational_roots;
 #[cfg(test)]
 pub use sturm::count_real_roots_in;

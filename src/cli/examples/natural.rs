@@ -3,7 +3,7 @@
 //! class of contract §4.
 
 use super::ExampleResult;
-use crate::natural::classify_str;
+use crate::natural::{ClassifyOptions, classify_with, parse_natural};
 use crate::report::{natural_human, natural_json};
 
 /// An example pair with the answer the paper (or elementary geometry)
@@ -253,7 +253,13 @@ pub fn natural_examples() -> Vec<ExampleResult> {
         .iter()
         .map(|ex| {
             let command = format!("quadsect natural '{}' '{}'", ex.a, ex.b);
-            match classify_str(ex.a, ex.b) {
+            // with the papers' deciders by the reference route (checked
+            // against the answer)
+            let run = || -> Result<crate::natural::NaturalReport, crate::Error> {
+                let (a, b) = (parse_natural(ex.a)?, parse_natural(ex.b)?);
+                classify_with(&a, &b, &ClassifyOptions::default().with_deciders())
+            };
+            match run() {
                 Ok(r) => {
                     let mut disc: Vec<String> =
                         ex.paper_error.iter().map(|e| e.to_string()).collect();

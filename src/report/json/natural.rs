@@ -41,12 +41,36 @@ fn component_json(c: &Component) -> Value {
         Component::Point { point, kind } => json!({
             "type": "point", "point": epoint_json(point), "kind": kind.as_str(),
         }),
-        Component::Curve { degree, singular } => json!({
+        Component::Curve {
+            degree,
+            singular,
+            branches,
+        } => json!({
             "type": "curve",
             "degree": degree,
-            "singular_points": singular.iter().map(|(p, iso)| json!({"point": epoint_json(p), "isolated": iso})).collect::<Vec<_>>(),
+            "singular_points": singular.iter().map(|p| json!({"point": epoint_json(&p.point), "kind": p.kind.as_str(), "isolated": p.is_isolated()})).collect::<Vec<_>>(),
+            "real_components": branches.len(),
+            "branches": branches.iter().map(branch_json).collect::<Vec<_>>(),
         }),
     }
+}
+
+/// A real component of a curve: bounded or not, and a point on it — as
+/// doubles with proven error bounds (`[value, bound]` per coordinate) and
+/// exactly, as a root of the other quadric along a ruling of the cylinder
+/// or cone (`point = ruling.point + t·ruling.direction`, `t` a root of
+/// `a·t² + 2b·t + c`: `t = (−b + root·√(b² − ac))/a`, or `t` itself).
+fn branch_json(b: &crate::natural::CurveBranch) -> Value {
+    let p = &b.start;
+    let (rp, rd) = p.ruling();
+    let q = p.quadratic();
+    let e = |x: &crate::number::QSqrt| exact_json(&Exact::Quad(x.clone()));
+    json!({
+        "bounded": b.bounded,
+        "point": p.approx().iter().map(|(v, err)| json!([v, err])).collect::<Vec<_>>(),
+        "ruling": {"point": rp.iter().map(e).collect::<Vec<_>>(), "direction": rd.iter().map(e).collect::<Vec<_>>()},
+        "along_ruling": {"a": e(&q[0]), "b": e(&q[1]), "c": e(&q[2]), "root": p.root(), "t": p.parameter().map(e)},
+    })
 }
 
 /// A plane with rational coefficients is scaled to primitive integers.

@@ -63,14 +63,37 @@ fn component_human(c: &Component) -> String {
         Component::Point { point, kind } => {
             format!("isolated point ({}) {}", kind.as_str(), pt(point))
         }
-        Component::Curve { degree, singular } => {
+        Component::Curve {
+            degree,
+            singular,
+            branches,
+        } => {
             let mut s = format!("space curve of degree {}", degree);
-            for (p, iso) in singular {
+            for p in singular {
                 s.push_str(&format!(
                     "; singular point {} ({})",
-                    pt(p),
-                    if *iso { "isolated" } else { "branches cross" }
+                    pt(&p.point),
+                    p.kind.as_str()
                 ));
+            }
+            if !branches.is_empty() {
+                let bounded = branches.iter().filter(|b| b.bounded).count();
+                s.push_str(&format!(
+                    "; {} ({} bounded, {} unbounded)",
+                    plural(branches.len(), "real component", "real components"),
+                    bounded,
+                    branches.len() - bounded
+                ));
+                for b in branches {
+                    let a = b.start.approx();
+                    s.push_str(&format!(
+                        "\n      {} branch through ≈ ({:.9}, {:.9}, {:.9})",
+                        if b.bounded { "closed" } else { "open" },
+                        a[0].0,
+                        a[1].0,
+                        a[2].0
+                    ));
+                }
             }
             s
         }

@@ -1,0 +1,51 @@
+//! Constructions: the components of an intersection built from the fast
+//! route's decision ([`super::fast::Case`]) — CGAL's split of predicates
+//! and constructions.  The predicates have decided the class and counts
+//! (from signs, mostly in floating-point balls); a construction computes in
+//! exact integers only what that case needs, and never classifies again.
+
+use super::fast::Case;
+use super::prepared::{Kind, Prepared};
+use super::result::Component;
+use super::types::Natural;
+use crate::error::Error;
+use num_bigint::BigInt;
+
+/// The components of the intersection of `a` and `b` in the decided
+/// `case`, and remarks.
+pub(crate) fn components(
+    a: &Prepared,
+    b: &Prepared,
+    case: Case,
+) -> Result<(Vec<Component>, Vec<String>), Error> {
+    let (na, nb) = (a.natural(), b.natural());
+    let comps = match case {
+        Case::SameSurface | Case::Empty => vec![],
+        Case::TwoSpheres => match (na, nb) {
+            (Natural::Sphere(s1), Natural::Sphere(s2)) => super::coaxial::sphere_sphere(s1, s2),
+            _ => return Err(Error::internal("two spheres expected")),
+        },
+        Case::SphereOnAxis => match (na, nb) {
+            (Natural::Sphere(s), q) | (q, Natural::Sphere(s)) => {
+                super::coaxial::sphere_on_axis(s, q)
+            }
+            _ => return Err(Error::internal("a sphere expected")),
+        },
+        Case::SameAxis => super::coaxial::same_axis(na, nb),
+        Case::Planar { parallel } => {
+            let (x, y) = (a.prep.tier::<BigInt>(), b.prep.tier::<BigInt>());
+            if x.kind == Kind::Sphere || y.kind == Kind::Sphere {
+                return Err(Error::internal("a planar case with a sphere"));
+            }
+            super::build_planar::planar_components(&x, &y, parallel)
+        }
+        Case::Smooth | Case::Nodal { .. } | Case::ConePoint { .. } | Case::PlanePair { .. } => {
+            let (x, y) = (a.prep.tier::<BigInt>(), b.prep.tier::<BigInt>());
+            super::build_pencil::pencil_components(&x, &y, case)?
+        }
+        Case::Rulings => {
+            return super::topology::classify_nonplanar(na, nb);
+        }
+    };
+    Ok((comps, Vec::new()))
+}

@@ -1,0 +1,833 @@
+//! The real topology of a non-planar intersection curve `X = P ∩ Q` of two
+//! natural quadrics, one of them (`P`) a cylinder or a cone: the number of
+//! real affine connected components, whether each is bounded, and a point
+//! on each — by the rulings of `P` (docs/maths.md, "Curve topology by
+//! rulings").
+//!
+//! **Rulings.**  `P`'s rulings are the lines `s·S + r·R(z)` (homogeneous
+//! points) through `P`'s vertex `S` — the point at infinity of the axis for
+//! a cylinder, the apex for a cone — with `z = (x, y)` on the conic
+//! `Γ: g1·x² + g2·y² = g0` (a cylinder: `R(z) = C + x·u + y·v`, the
+//! cross-section circle; a cone: `R(z) = a + x·u + y·v` at infinity, the
+//! generators' directions; `u ⊥ a`, `v = a × u`).  `Q` restricted to the
+//! ruling over `z` is the binary form `σs² + 2β(z)sr + ρ(z)r²` with `σ`
+//! constant, `β` affine and `ρ` quadratic in `z`; `Δ = β² − σρ`.
+//!
+//! * `σ ≠ 0` (`S ∉ Q`): over `z`, two real points when `Δ(z) > 0`, one when
+//!   `Δ(z) = 0`, none when `Δ(z) < 0`: `X` is a double cover of the arcs of
+//!   `Γ` where `Δ > 0`, the two sheets `ε = ±` (`s/r = (−β + ε√Δ)/σ`)
+//!   joining where `Δ` vanishes.  For a cone, the point of sheet
+//!   `ε = sign β(z)` is at infinity where `ρ(z) = 0` (`s = 0`): the sheet is
+//!   cut there.
+//! * `σ = 0` (`S ∈ Q`, then `S` is the singular point of `X`): one point
+//!   `[s : r] = [−ρ(z) : 2β(z)]` per ruling besides `S`; at infinity where
+//!   `β = 0` (cylinder) or `ρ = 0` (cone); through the apex where `β = 0`
+//!   (cone: every such arc end meets at the apex).
+//!
+//! The special points of `Γ` (zeros of `Δ`, `ρ`, `β` as needed) are exact
+//! real algebraic points, given by their `x` (a root of an integer
+//! polynomial of degree ≤ 4) and the sign of `y`, sorted around `Γ`; the
+//! sign of `Δ` on each arc between them is evaluated exactly at a rational
+//! sample `x`.  The pieces (arc, sheet) are joined where the curve passes
+//! through an affine point, and the connected components counted by
+//! union–find; a component touching a cut is unbounded.
+
+use super::exact::{EPoint, Exact};
+use super::fast::{M4, form, matrix};
+use super::prepared::{Kind, QIn};
+use super::zsqrt::{Zf, radicand};
+use crate::error::Error;
+use crate::number::xball::XBall;
+use crate::number::{Q, QSqrt};
+use crate::poly::ZPoly;
+use crate::roots::{RealAlg, simplest_rational_in};
+use num_bigint::BigInt as Z;
+use num_traits::{One, Zero};
+use std::cmp::Ordering;
+
+/// A quadratic function on the plane of `Γ`:
+/// `c[0] + c[1]x + c[2]y + c[3]x² + c[4]xy + c[5]y²`.
+#[derive(Clone, Debug)]
+pub(crate) struct Quad2 {
+    pub c: [Z; 6],
+}
+
+impl Quad2 {
+    fn is_zero(&self) -> bool {
+        self.c.iter().all(Zero::is_zero)
+    }
+}
+
+/// The conic `Γ: g1·x² + g2·y² = g0` (`g0, g1, g2 > 0`).
+#[derive(Clone, Debug)]
+pub(crate) struct Gamma {
+    pub g0: Z,
+    pub g1: Z,
+    pub g2: Z,
+}
+
+/// `Ã(x)`, `B(x)` with `g2·F ≡ Ã(x) + g2·y·B(x)` on `Γ`, and
+/// `W = Ã² − g2(g0 − g1x²)B²`, whose real roots are the `x` of the zeros of
+/// `F` on `Γ` (over C; the real points are those with `|x| ≤ xm`).
+#[derive(Clone, Debug)]
+struct Reduced {
+    a: ZPoly,
+    b: ZPoly,
+    w: ZPoly,
+}
+
+impl Gamma {
+    fn reduce(&self, f: &Quad2) -> Reduced {
+        let c = &f.c;
+        let (g0, g1, g2) = (&self.g0, &self.g1, &self.g2);
+        let a = ZPoly::new(vec![
+            g2 * &c[0] + g0 * &c[5],
+            g2 * &c[1],
+            g2 * &c[3] - g1 * &c[5],
+        ]);
+        let b = ZPoly::new(vec![c[2].clone(), c[4].clone()]);
+        // g2(g0 − g1x²)
+        let e = ZPoly::new(vec![g2 * g0, Z::zero(), -(g2 * g1)]);
+        let w = &(&a * &a) - &(&e * &(&b * &b));
+        Reduced { a, b, w }
+    }
+
+    /// `g1·x² − g0` (negative inside `Γ`'s range of `x`).
+    fn edge(&self) -> ZPoly {
+        ZPoly::new(vec![-self.g0.clone(), Z::zero(), self.g1.clone()])
+    }
+
+    /// `(g0 − g1x²)/g2 = y²` at a rational `x`.
+    fn y2(&self, x: &Q) -> Q {
+        (Q::from_integer(self.g0.clone()) - Q::from_integer(self.g1.clone()) * x * x)
+            / Q::from_integer(self.g2.clone())
+    }
+
+    /// `xm = √(g0/g1)` and `−xm` as real algebraic numbers.
+    fn ends(&self) -> [RealAlg; 2] {
+        let r = RealAlg::roots_of(&self.edge());
+        [r[0].clone(), r[r.len() - 1].clone()]
+    }
+}
+
+/// A point of `Γ`: its `x` and the sign of its `y` (0 at `x = ±xm`).
+#[derive(Clone, Debug)]
+pub(crate) struct GPoint {
+    pub x: RealAlg,
+    pub ys: i32,
+}
+
+/// The half of `Γ` a point starts: 0 for the upper half from `(xm, 0)`
+/// (where `x` decreases), 1 for the lower half from `(−xm, 0)`.
+fn half(p: &GPoint) -> u8 {
+    match p.ys {
+        1 => 0,
+        -1 => 1,
+        _ => {
+            if p.x.signum() > 0 {
+                0
+            } else {
+                1
+            }
+        }
+    }
+}
+
+/// The counter-clockwise order of points of `Γ` from `(xm, 0)`.
+fn cyclic_cmp(p: &GPoint, q: &GPoint) -> Ordering {
+    let (hp, hq) = (half(p), half(q));
+    if hp != hq {
+        return hp.cmp(&hq);
+    }
+    let c = p.x.cmp_exact(&q.x);
+    if hp == 0 { c.reverse() } else { c }
+}
+
+/// The sign of `F` at a point of `Γ` (exact): `g2F = Ã + g2·y·B` with
+/// `y = ys·√((g0 − g1x²)/g2)`; when `Ã` and `yB` have opposite signs the
+/// sign is `sign(Ã)·sign(W)`.
+fn sign_at_point(r: &Reduced, p: &GPoint) -> i32 {
+    let sa = p.x.sign_of(&r.a);
+    let sb = if p.ys == 0 {
+        0
+    } else {
+        p.ys * p.x.sign_of(&r.b)
+    };
+    if sb == 0 || sa == sb {
+        return if sa == 0 { sb } else { sa };
+    }
+    if sa == 0 {
+        return sb;
+    }
+    sa * p.x.sign_of(&r.w)
+}
+
+/// The sign of `F` at `(x, ys·√y²)` for a rational `x` inside `Γ`'s range.
+fn sign_at_rational(g: &Gamma, r: &Reduced, x: &Q, ys: i32) -> i32 {
+    let a = r.a.eval_q(x);
+    let b = r.b.eval_q(x) * Q::from_integer(g.g2.clone()) * Q::from_integer(ys.into());
+    let (sa, sb) = (crate::number::sign_q(&a), crate::number::sign_q(&b));
+    if sb == 0 || sa == sb {
+        return if sa == 0 { sb } else { sa };
+    }
+    if sa == 0 {
+        return sb;
+    }
+    // a + b√E with opposite signs: compare a² with b²E
+    sa * crate::number::sign_q(&(&a * &a - &b * &b * g.y2(x)))
+}
+
+/// The zeros of `F` on `Γ` (distinct points; `Err` when `F` vanishes on
+/// all of `Γ`).
+fn zeros(g: &Gamma, r: &Reduced) -> Result<Vec<GPoint>, Error> {
+    if r.w.is_zero() {
+        return Err(Error::internal(
+            "a quadratic function vanishing on the whole ruling conic",
+        ));
+    }
+    let edge = g.edge();
+    let mut out = Vec::new();
+    for x in RealAlg::roots_of(&r.w) {
+        crate::budget::check();
+        match x.sign_of(&edge) {
+            1 => continue, // no real point of Γ there
+            0 => out.push(GPoint { x, ys: 0 }),
+            _ => {
+                let sb = x.sign_of(&r.b);
+                if sb != 0 {
+                    let sa = x.sign_of(&r.a);
+                    out.push(GPoint { x, ys: -sa * sb });
+                } else {
+                    // Ã = B = 0 there: both points of Γ over x
+                    out.push(GPoint {
+                        x: x.clone(),
+                        ys: 1,
+                    });
+                    out.push(GPoint { x, ys: -1 });
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// A rational strictly between two real algebraic numbers `lo < hi`.
+fn between(lo: &RealAlg, hi: &RealAlg) -> Q {
+    let mut v = [lo.clone(), hi.clone()];
+    crate::roots::separate(&mut v);
+    simplest_rational_in(&v[0].interval().1, &v[1].interval().0)
+}
+
+/// A rational `x` and a sign of `y` strictly inside the arc of `Γ` from
+/// `p` counter-clockwise to `q` (`q = None`: the whole of `Γ` but `p`;
+/// both `None`: anywhere).
+fn arc_sample(ends: &[RealAlg; 2], p: Option<&GPoint>, q: Option<&GPoint>) -> (Q, i32) {
+    let [xm_neg, xm] = ends;
+    let Some(p) = p else {
+        return (Q::zero(), 1);
+    };
+    // q when the arc reaches it without leaving p's half: in the upper half
+    // x decreases counter-clockwise, in the lower half it increases
+    let ahead = |want: i32, dir: Ordering| q.filter(|q| q.ys == want && q.x.cmp_exact(&p.x) == dir);
+    let same_half_next = |want: i32| q.filter(|q| q.ys == want);
+    match (p.ys, half(p)) {
+        (1, _) => match ahead(1, Ordering::Less) {
+            Some(q) => (between(&q.x, &p.x), 1),
+            None => (between(xm_neg, &p.x), 1),
+        },
+        (-1, _) => match ahead(-1, Ordering::Greater) {
+            Some(q) => (between(&p.x, &q.x), -1),
+            None => (between(&p.x, xm), -1),
+        },
+        (_, 0) => match same_half_next(1) {
+            // from (xm, 0) into the upper half
+            Some(q) => (between(&q.x, xm), 1),
+            None => (Q::zero(), 1),
+        },
+        _ => match same_half_next(-1) {
+            // from (−xm, 0) into the lower half
+            Some(q) => (between(xm_neg, &q.x), -1),
+            None => (Q::zero(), -1),
+        },
+    }
+}
+
+/// Union–find.
+struct Dsu(Vec<usize>);
+
+impl Dsu {
+    fn find(&mut self, i: usize) -> usize {
+        let mut r = i;
+        while self.0[r] != r {
+            r = self.0[r];
+        }
+        let mut j = i;
+        while self.0[j] != r {
+            let n = self.0[j];
+            self.0[j] = r;
+            j = n;
+        }
+        r
+    }
+    fn join(&mut self, i: usize, j: usize) {
+        let (a, b) = (self.find(i), self.find(j));
+        if a != b {
+            self.0[a] = b;
+        }
+    }
+}
+
+/// The parameterisation of `X` by the rulings of `P` (module docs).
+#[derive(Clone, Debug)]
+pub(crate) struct Rulings {
+    /// `P` is a cone (else a cylinder).
+    pub cone: bool,
+    pub gamma: Gamma,
+    pub sigma: Z,
+    pub beta: Quad2,
+    pub rho: Quad2,
+    pub delta: Quad2,
+}
+
+/// A point of `X` over a rational point of `Γ`: `z = (x, ys·√y²)`, on
+/// sheet `sheet` (`s/r = (−β + sheet·√Δ)/σ`; 0 when `σ = 0`, the one point
+/// `[−ρ : 2β]`).
+#[derive(Clone, Debug)]
+pub(crate) struct RulingPoint {
+    pub x: Q,
+    pub ys: i32,
+    pub sheet: i32,
+}
+
+/// One real connected component of the affine curve.
+#[derive(Clone, Debug)]
+pub(crate) struct Branch {
+    pub bounded: bool,
+    pub at: RulingPoint,
+}
+
+/// The topology found: the branches and the isolated points of `Γ`'s
+/// special points (acnodes), as points of `Γ` with their affine 3D point
+/// left to the caller (it is the pencil's singular point).
+#[derive(Clone, Debug)]
+pub(crate) struct Topology {
+    pub branches: Vec<Branch>,
+    pub isolated: usize,
+}
+
+impl Rulings {
+    /// The rulings of `p` (a cylinder or a cone) and `q`'s restriction.
+    pub fn new(p: &QIn<Z>, q: &QIn<Z>) -> Rulings {
+        let a = &p.a;
+        // u ⊥ a (integer), v = a × u
+        let e: [Z; 3] = if a[0].is_zero() && a[1].is_zero() {
+            [Z::one(), Z::zero(), Z::zero()]
+        } else {
+            [Z::zero(), Z::zero(), Z::one()]
+        };
+        let u = cross(a, &e);
+        let v = cross(a, &u);
+        let nu: Z = dot(&u, &u);
+        let na: Z = dot(a, a);
+        let cone = p.kind == Kind::Cone;
+        // Γ: pd·nu·x² + pd·nu·na·y² = pn (cylinder) or pn·na (cone)
+        let gamma = Gamma {
+            g1: &p.pd * &nu,
+            g2: &p.pd * &nu * &na,
+            g0: if cone { &p.pn * &na } else { p.pn.clone() },
+        };
+        let z = Z::zero;
+        let (s, r) = if cone {
+            (
+                [p.c[0].clone(), p.c[1].clone(), p.c[2].clone(), p.q.clone()],
+                [
+                    [a[0].clone(), a[1].clone(), a[2].clone(), z()],
+                    [u[0].clone(), u[1].clone(), u[2].clone(), z()],
+                    [v[0].clone(), v[1].clone(), v[2].clone(), z()],
+                ],
+            )
+        } else {
+            let qu = |w: &[Z; 3]| [&p.q * &w[0], &p.q * &w[1], &p.q * &w[2], z()];
+            (
+                [a[0].clone(), a[1].clone(), a[2].clone(), z()],
+                [
+                    [p.c[0].clone(), p.c[1].clone(), p.c[2].clone(), p.q.clone()],
+                    qu(&u),
+                    qu(&v),
+                ],
+            )
+        };
+        let m: M4<Z> = matrix(q);
+        let sigma = form(&m, &s, &s);
+        let bs: [Z; 3] = std::array::from_fn(|i| form(&m, &s, &r[i]));
+        let rr: [[Z; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|j| form(&m, &r[i], &r[j])));
+        let beta = Quad2 {
+            c: [bs[0].clone(), bs[1].clone(), bs[2].clone(), z(), z(), z()],
+        };
+        let two = Z::from(2);
+        let rho = Quad2 {
+            c: [
+                rr[0][0].clone(),
+                &two * &rr[0][1],
+                &two * &rr[0][2],
+                rr[1][1].clone(),
+                &two * &rr[1][2],
+                rr[2][2].clone(),
+            ],
+        };
+        // Δ = β² − σρ
+        let b = &bs;
+        let delta = Quad2 {
+            c: [
+                &b[0] * &b[0] - &sigma * &rho.c[0],
+                &two * &b[0] * &b[1] - &sigma * &rho.c[1],
+                &two * &b[0] * &b[2] - &sigma * &rho.c[2],
+                &b[1] * &b[1] - &sigma * &rho.c[3],
+                &two * &b[1] * &b[2] - &sigma * &rho.c[4],
+                &b[2] * &b[2] - &sigma * &rho.c[5],
+            ],
+        };
+        Rulings {
+            cone,
+            gamma,
+            sigma,
+            beta,
+            rho,
+            delta,
+        }
+    }
+
+    /// The real affine topology of `X` (module docs).
+    pub fn topology(&self) -> Result<Topology, Error> {
+        let g = &self.gamma;
+        let ends = g.ends();
+        let rd = g.reduce(&self.delta);
+        let rr = g.reduce(&self.rho);
+        let rb = g.reduce(&self.beta);
+        let sigma0 = self.sigma.is_zero();
+        // the special points, with what vanishes there: (Δ, ρ, β)
+        let mut pts: Vec<(GPoint, [bool; 3])> = Vec::new();
+        let mut add = |p: GPoint, k: usize| {
+            for (q, f) in pts.iter_mut() {
+                if q.ys == p.ys && q.x.cmp_exact(&p.x) == Ordering::Equal {
+                    f[k] = true;
+                    return;
+                }
+            }
+            let mut f = [false; 3];
+            f[k] = true;
+            pts.push((p, f));
+        };
+        if !sigma0 {
+            if self.delta.is_zero() {
+                return Err(Error::internal("Δ ≡ 0 on a non-planar curve"));
+            }
+            for p in zeros(g, &rd)? {
+                add(p, 0);
+            }
+            if self.cone {
+                for p in zeros(g, &rr)? {
+                    add(p, 1);
+                }
+            }
+        } else {
+            if !self.beta.is_zero() {
+                for p in zeros(g, &rb)? {
+                    add(p, 2);
+                }
+            }
+            if self.cone {
+                for p in zeros(g, &rr)? {
+                    add(p, 1);
+                }
+            }
+        }
+        pts.sort_by(|a, b| cyclic_cmp(&a.0, &b.0));
+        let n = pts.len();
+        // the arcs: arc i from point i to point i + 1 (cyclically)
+        let arcs: Vec<(Q, i32)> = if n == 0 {
+            vec![arc_sample(&ends, None, None)]
+        } else {
+            (0..n)
+                .map(|i| {
+                    let q = if n == 1 {
+                        None
+                    } else {
+                        Some(&pts[(i + 1) % n].0)
+                    };
+                    arc_sample(&ends, Some(&pts[i].0), q)
+                })
+                .collect()
+        };
+        let na = arcs.len();
+        let sheets: Vec<i32> = if sigma0 { vec![0] } else { vec![1, -1] };
+        let ns = sheets.len();
+        // piece (arc i, sheet k) ↦ i·ns + k; present when Δ > 0 on the arc
+        let present: Vec<bool> = (0..na)
+            .flat_map(|i| {
+                let (x, ys) = &arcs[i];
+                let on = sigma0 || sign_at_rational(g, &rd, x, *ys) > 0;
+                std::iter::repeat_n(on, ns)
+            })
+            .collect();
+        let mut dsu = Dsu((0..na * ns).collect());
+        let mut unbounded = vec![false; na * ns];
+        let mut isolated = 0;
+        let mut apex: Option<usize> = None;
+        for i in 0..n {
+            let (p, f) = &pts[i];
+            let left = (i + na - 1) % na;
+            let right = i;
+            let piece = |arc: usize, k: usize| arc * ns + k;
+            if !sigma0 {
+                let dz = if f[0] { 0 } else { sign_at_point(&rd, p) };
+                match dz {
+                    1 => {
+                        // a zero of ρ (cone): the sheet sign β is cut
+                        let cut = if self.cone && f[1] {
+                            sign_at_point(&rb, p)
+                        } else {
+                            0
+                        };
+                        for (k, &e) in sheets.iter().enumerate() {
+                            if e == cut {
+                                unbounded[piece(left, k)] = true;
+                                unbounded[piece(right, k)] = true;
+                            } else {
+                                dsu.join(piece(left, k), piece(right, k));
+                            }
+                        }
+                    }
+                    0 => {
+                        let at_infinity = self.cone && f[1];
+                        let incident: Vec<usize> = [left, right]
+                            .iter()
+                            .flat_map(|&a| (0..ns).map(move |k| piece(a, k)))
+                            .filter(|&j| present[j])
+                            .collect();
+                        if at_infinity {
+                            for &j in &incident {
+                                unbounded[j] = true;
+                            }
+                        } else if incident.is_empty() {
+                            isolated += 1;
+                        } else {
+                            for w in incident.windows(2) {
+                                dsu.join(w[0], w[1]);
+                            }
+                        }
+                    }
+                    _ => {}
+                }
+            } else {
+                // σ = 0: one sheet; cylinder cuts at β = 0, cone cuts at
+                // ρ = 0 and passes through the apex at β = 0
+                let cut = if self.cone { f[1] } else { f[2] };
+                if cut {
+                    if self.cone && f[2] {
+                        return Err(Error::internal("a common ruling in a nodal case"));
+                    }
+                    unbounded[piece(left, 0)] = true;
+                    unbounded[piece(right, 0)] = true;
+                } else {
+                    dsu.join(piece(left, 0), piece(right, 0));
+                    if self.cone && f[2] {
+                        match apex {
+                            Some(j) => dsu.join(j, piece(right, 0)),
+                            None => apex = Some(piece(right, 0)),
+                        }
+                    }
+                }
+            }
+        }
+        if sigma0 && self.cone && apex.is_none() {
+            // no real ruling of the apex's tangent cone: an isolated apex
+            isolated += 1;
+        }
+        // the components
+        let mut roots: Vec<(usize, bool, usize)> = Vec::new(); // (root, unbounded, piece)
+        for j in 0..na * ns {
+            if !present[j] {
+                continue;
+            }
+            let r = dsu.find(j);
+            match roots.iter_mut().find(|c| c.0 == r) {
+                Some(c) => c.1 |= unbounded[j],
+                None => roots.push((r, unbounded[j], j)),
+            }
+        }
+        let branches = roots
+            .into_iter()
+            .map(|(_, unb, j)| {
+                let (x, ys) = arcs[j / ns].clone();
+                Branch {
+                    bounded: !unb,
+                    at: RulingPoint {
+                        x,
+                        ys,
+                        sheet: sheets[j % ns],
+                    },
+                }
+            })
+            .collect();
+        Ok(Topology { branches, isolated })
+    }
+}
+
+fn cross(a: &[Z; 3], b: &[Z; 3]) -> [Z; 3] {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+fn dot(a: &[Z; 3], b: &[Z; 3]) -> Z {
+    &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
+}
+
+/// A point of an intersection curve on a ruling of the cylinder or cone
+/// `P`: `X = P0 + t·d`, with the ruling (`P0`, `d`, exact in Q(√E)) and
+/// `t` a root of `A·t² + 2B·t + C`, `Q`'s equation along the ruling (a
+/// positive multiple of it): `t = (−B + root·√(B² − AC))/A`, or given
+/// exactly (`t`, in Q(√E)) when `P`'s vertex lies on `Q`.  The coordinates
+/// also as doubles, each with a proven bound on its error.
+#[derive(Clone, Debug)]
+pub struct CurvePoint {
+    pub(crate) ruling_point: [QSqrt; 3],
+    pub(crate) ruling_direction: [QSqrt; 3],
+    pub(crate) quadratic: [QSqrt; 3],
+    pub(crate) root: i32,
+    pub(crate) t: Option<QSqrt>,
+    pub(crate) approx: [(f64, f64); 3],
+}
+
+impl CurvePoint {
+    /// The ruling it lies on: a point and a direction (exact).
+    pub fn ruling(&self) -> (&[QSqrt; 3], &[QSqrt; 3]) {
+        (&self.ruling_point, &self.ruling_direction)
+    }
+
+    /// `[A, B, C]`: the other quadric's equation along the ruling is a
+    /// positive multiple of `A·t² + 2B·t + C`.
+    pub fn quadratic(&self) -> &[QSqrt; 3] {
+        &self.quadratic
+    }
+
+    /// Which root `t` of the quadratic the point is: `t = (−B + r·√(B² −
+    /// AC))/A` for `r = ±1`; 0 when `t` is given exactly ([`Self::parameter`]).
+    pub fn root(&self) -> i32 {
+        self.root
+    }
+
+    /// `t` when it lies in the field of the ruling (the cone's apex or the
+    /// cylinder's point at infinity lies on the other quadric).
+    pub fn parameter(&self) -> Option<&QSqrt> {
+        self.t.as_ref()
+    }
+
+    /// The coordinates as doubles, each with a proven bound on its error:
+    /// `|xᵢ − approx[i].0| ≤ approx[i].1`.
+    pub fn approx(&self) -> [(f64, f64); 3] {
+        self.approx
+    }
+
+    /// The exact coordinates (in Q(√E), or real algebraic numbers of
+    /// degree ≤ 4 when the root nests a square root: computed on demand,
+    /// tens of microseconds to milliseconds).
+    pub fn exact(&self) -> EPoint {
+        if let Some(t) = &self.t {
+            return std::array::from_fn(|i| {
+                Exact::Quad(self.ruling_point[i].add(&t.mul(&self.ruling_direction[i])))
+            });
+        }
+        let [a, b, c] = &self.quadratic;
+        let disc = b.mul(b).sub(&a.mul(c));
+        let inv_a = a.inv().expect("a quadratic along a ruling");
+        let e = self
+            .ruling_point
+            .iter()
+            .chain(self.ruling_direction.iter())
+            .chain(self.quadratic.iter())
+            .find(|x| !x.is_rational())
+            .map(|x| x.d.clone())
+            .unwrap_or_else(Q::one);
+        std::array::from_fn(|i| {
+            // X = (P0 − B·k) + root·k·√disc with k = dᵢ/A
+            let k = self.ruling_direction[i].mul(&inv_a);
+            let base = self.ruling_point[i].sub(&b.mul(&k));
+            let inner = disc.mul(&k).mul(&k);
+            let s = self.root * k.signum();
+            super::exact::nested(&base.a, &base.b, &e, &Q::one(), &inner.a, &inner.b, s)
+        })
+    }
+}
+
+/// `(u + v√D)/den` as an extended-exponent ball, with a relative radius
+/// below 2^-40 (so its sign shows) unless it is 0: from the double ball of
+/// `√D` first, then, under cancellation, from rational bounds on `√D` of
+/// growing precision.
+fn zf_ball(x: &Zf, sqrt_d: &XBall, d: &Z) -> XBall {
+    let q = |n: &Z| XBall::from_q(&Q::new_raw(n.clone(), x.den.clone()));
+    let fast = q(&x.u).add(&q(&x.v).mul(sqrt_d));
+    if x.v.is_zero() || x.is_zero() || tight(&fast) {
+        return fast;
+    }
+    let dq = Q::from_integer(d.clone());
+    let mut bits = 128u32;
+    loop {
+        let (sl, sh) = crate::number::sqrt_bounds(&dq, bits);
+        let den = Q::from_integer(x.den.clone());
+        let (a, b) = (
+            (Q::from_integer(x.u.clone()) + Q::from_integer(x.v.clone()) * &sl) / &den,
+            (Q::from_integer(x.u.clone()) + Q::from_integer(x.v.clone()) * &sh) / &den,
+        );
+        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+        let two = Q::from_integer(2.into());
+        let mid = XBall::from_q(&((&lo + &hi) / &two));
+        let rad = XBall::from_q(&((&hi - &lo) / &two));
+        let ball = mid.add(&XBall {
+            m: 0.0,
+            r: rad.m.abs() + rad.r,
+            e: rad.e,
+        });
+        if tight(&ball) || bits > 1 << 16 {
+            return ball;
+        }
+        bits *= 2;
+    }
+}
+
+/// A ball away from 0 with a relative radius below 2^-40.
+fn tight(b: &XBall) -> bool {
+    b.r * 1_099_511_627_776.0 < b.m.abs()
+}
+
+/// `xᵀ M y` for homogeneous vectors over `Z[√D]`.
+fn zform(m: &M4<Z>, x: &[Zf; 4], y: &[Zf; 4], d: &Z) -> Zf {
+    let mut acc = Zf::zero();
+    for i in 0..4 {
+        for j in 0..4 {
+            if m[i][j].is_zero() {
+                continue;
+            }
+            acc = acc.add(&x[i].mul(&y[j], d).scale(&m[i][j]));
+        }
+    }
+    acc
+}
+
+impl Rulings {
+    /// The point of `X` at a ruling point of a branch (module docs; the
+    /// rational `x`, the sign of `y`, the sheet), with `q` the other
+    /// quadric and `p` the cylinder or cone.
+    pub fn realize(&self, p: &QIn<Z>, q: &QIn<Z>, at: &RulingPoint) -> Result<CurvePoint, Error> {
+        let g = &self.gamma;
+        // y = ys·√E, E = En/Ed: y = ys·√D/Ed with D = En·Ed
+        let e = g.y2(&at.x);
+        let (d, root_d) = radicand(e.numer() * e.denom());
+        let ed = e.denom().clone();
+        let (xn, xd) = (at.x.numer().clone(), at.x.denom().clone());
+        let ys = Z::from(at.ys);
+        // y as a Zf: ys·√D/Ed (or ys·r/Ed when D = r²)
+        let y = match &root_d {
+            Some(r) => Zf::int(&ys * r).div_z(&ed),
+            None => Zf::uv(Z::zero(), ys.clone()).div_z(&ed),
+        };
+        let xq = Zf::int(xn).div_z(&xd);
+        let a3 = |w: &[Z; 3]| -> [Zf; 3] { std::array::from_fn(|i| Zf::int(w[i].clone())) };
+        let u = cross(
+            &p.a,
+            &if p.a[0].is_zero() && p.a[1].is_zero() {
+                [Z::one(), Z::zero(), Z::zero()]
+            } else {
+                [Z::zero(), Z::zero(), Z::one()]
+            },
+        );
+        let v = cross(&p.a, &u);
+        let (uz, vz, az) = (a3(&u), a3(&v), a3(&p.a));
+        let c3: [Zf; 3] = std::array::from_fn(|i| Zf::int(p.c[i].clone()).div_z(&p.q));
+        // x·u + y·v
+        let xy: [Zf; 3] = std::array::from_fn(|i| xq.mul(&uz[i], &d).add(&y.mul(&vz[i], &d)));
+        let (p0, dir): ([Zf; 3], [Zf; 3]) = if self.cone {
+            (c3, std::array::from_fn(|i| az[i].add(&xy[i])))
+        } else {
+            (std::array::from_fn(|i| c3[i].add(&xy[i])), az)
+        };
+        let m: M4<Z> = matrix(q);
+        let h = |v: &[Zf; 3], w: i64| -> [Zf; 4] {
+            [
+                v[0].clone(),
+                v[1].clone(),
+                v[2].clone(),
+                Zf::int(Z::from(w)),
+            ]
+        };
+        let (ph, dh) = (h(&p0, 1), h(&dir, 0));
+        let qa = zform(&m, &dh, &dh, &d);
+        let qb = zform(&m, &dh, &ph, &d);
+        let qc = zform(&m, &ph, &ph, &d);
+        let sd = if d.is_one() {
+            XBall::from_q(&Q::one())
+        } else {
+            XBall::from_q(&Q::from_integer(d.clone()))
+                .sqrt()
+                .ok_or_else(|| Error::internal("√D of a ruling point"))?
+        };
+        let ball = |x: &Zf| zf_ball(x, &sd, &d);
+        let (t_exact, root, t_ball) = if self.sigma.is_zero() {
+            // P's vertex on Q: the one other point of the ruling, rational in Q(√E)
+            let t = if self.cone {
+                // C = 0: t = −2B/A
+                qb.scale(&Z::from(-2)).div(&qa, &d)
+            } else {
+                // A = 0: t = −C/(2B)
+                qc.neg().div(&qb.scale(&Z::from(2)), &d)
+            };
+            let tb = ball(&t);
+            (Some(t.to_qsqrt(&d)), 0, tb)
+        } else {
+            let root = if self.cone { -at.sheet } else { at.sheet };
+            // B² − AC exactly (positive inside the arc), then its root
+            let disc = ball(&qb.mul(&qb, &d).sub(&qa.mul(&qc, &d)));
+            let sq = disc
+                .sqrt()
+                .ok_or_else(|| Error::internal("a branch point off its arc"))?;
+            let sq = if root > 0 { sq } else { sq.neg() };
+            // t = (−B + root·√disc)/A, or C/(−B − root·√disc) when −B and
+            // root·√disc have opposite signs (no cancellation either way)
+            let sb = qb.sign(&d);
+            let t = if sb == 0 || -sb == root {
+                let inv = ball(&qa)
+                    .recip()
+                    .ok_or_else(|| Error::internal("A = 0 at a branch point"))?;
+                ball(&qb).neg().add(&sq).mul(&inv)
+            } else {
+                let den = ball(&qb).neg().sub(&sq);
+                let inv = den
+                    .recip()
+                    .ok_or_else(|| Error::internal("a branch point at infinity"))?;
+                ball(&qc).mul(&inv)
+            };
+            (None, root, t)
+        };
+        let approx: Vec<(f64, f64)> = (0..3)
+            .map(|i| {
+                ball(&p0[i])
+                    .add(&t_ball.mul(&ball(&dir[i])))
+                    .to_f64()
+                    .ok_or_else(|| Error::internal("a curve point out of the range of doubles"))
+            })
+            .collect::<Result<_, _>>()?;
+        let out = |v: &[Zf; 3]| -> [QSqrt; 3] { std::array::from_fn(|i| v[i].to_qsqrt(&d)) };
+        Ok(CurvePoint {
+            ruling_point: out(&p0),
+            ruling_direction: out(&dir),
+            quadratic: [qa.to_qsqrt(&d), qb.to_qsqrt(&d), qc.to_qsqrt(&d)],
+            root,
+            t: t_exact,
+            approx: [approx[0], approx[1], approx[2]],
+        })
+    }
+}

@@ -1,0 +1,275 @@
+//! Balls of doubles with an extended exponent: `[(m − r)·2^e, (m + r)·2^e]`
+//! with `f64` midpoint and radius and an `i64` exponent, so that numbers of
+//! thousands of bits (the integers of cleared 53-bit doubles) keep a
+//! relative precision near 2^-50 where an `f64` would overflow.  The
+//! arithmetic is rigorous in the sense of [`super::filter`]'s balls: every
+//! rounding is covered by the radius (inflated by `1 + 2^-48`, plus the
+//! smallest normal for underflow), and scaling by a power of two is exact.
+//! Used for certified enclosures (square roots of quadratic irrationals,
+//! certified doubles of exact values); never for a sign decision by itself.
+
+use super::{Q, Z};
+use num_bigint::BigInt;
+use num_traits::{ToPrimitive, Zero};
+
+const U: f64 = 1.0 / 9_007_199_254_740_992.0; // 2^-53
+const INFL: f64 = 1.0 + 1.0 / 281_474_976_710_656.0; // 1 + 2^-48
+const TINY: f64 = f64::MIN_POSITIVE;
+
+/// A ball `(m ± r)·2^e` (`r ≥ 0`).
+#[derive(Clone, Copy, Debug)]
+pub struct XBall {
+    /// Midpoint (scaled).
+    pub m: f64,
+    /// Radius (scaled).
+    pub r: f64,
+    /// The exponent.
+    pub e: i64,
+}
+
+/// `2^k` for `|k| ≤ 1000` (exact).
+fn pow2(k: i64) -> f64 {
+    debug_assert!(k.abs() <= 1000);
+    f64::from_bits(((1023 + k) as u64) << 52)
+}
+
+/// The leading 64 bits of `|z|` as a double (truncated, then rounded:
+/// relative error below `2^-52`) and the exponent of the scaling.
+fn top(z: &Z) -> (f64, i64) {
+    let bits = z.bits() as i64;
+    let shift = (bits - 64).max(0);
+    let t = (z.magnitude() >> shift as usize)
+        .to_u64()
+        .unwrap_or(u64::MAX) as f64;
+    (t, shift)
+}
+
+impl XBall {
+    /// The exact integer or rational zero.
+    pub fn zero() -> XBall {
+        XBall {
+            m: 0.0,
+            r: 0.0,
+            e: 0,
+        }
+    }
+
+    /// A ball holding the rational `x`.
+    pub fn from_q(x: &Q) -> XBall {
+        if x.is_zero() {
+            return XBall::zero();
+        }
+        let (n, en) = top(x.numer());
+        let (d, ed) = top(x.denom());
+        let m = n / d;
+        let m = if x.numer().sign() == num_bigint::Sign::Minus {
+            -m
+        } else {
+            m
+        };
+        // two truncations (< 2^-63 each), two roundings to 53 bits, a division
+        XBall {
+            m,
+            r: 6.0 * U * m.abs() * INFL,
+            e: en - ed,
+        }
+        .normalized()
+    }
+
+    /// The same ball with the midpoint's magnitude brought near 1 (an exact
+    /// rescaling by a power of two).
+    fn normalized(self) -> XBall {
+        if self.m == 0.0 {
+            // keep a zero midpoint; scale the radius instead
+            if self.r == 0.0 {
+                return XBall::zero();
+            }
+            let k = self.r.log2().floor() as i64;
+            let k = k.clamp(-1000, 1000);
+            return XBall {
+                m: 0.0,
+                r: self.r * pow2(-k) * INFL,
+                e: self.e + k,
+            };
+        }
+        let k = (self.m.abs().log2().floor() as i64).clamp(-1000, 1000);
+        if k == 0 {
+            return self;
+        }
+        XBall {
+            m: self.m * pow2(-k),
+            r: self.r * pow2(-k) + if self.r > 0.0 { TINY } else { 0.0 },
+            e: self.e + k,
+        }
+    }
+
+    /// `self · 2^(self.e − e)`: the ball rescaled to exponent `e ≥ self.e`
+    /// (an underflowed part goes into the radius).
+    fn at_exponent(&self, e: i64) -> (f64, f64) {
+        let k = self.e - e;
+        if k < -1000 {
+            // negligible: the whole value into the radius
+            return (0.0, TINY);
+        }
+        let s = pow2(k.max(-1000));
+        (self.m * s, self.r * s + TINY)
+    }
+
+    pub fn add(&self, o: &XBall) -> XBall {
+        if self.m == 0.0 && self.r == 0.0 {
+            return *o;
+        }
+        if o.m == 0.0 && o.r == 0.0 {
+            return *self;
+        }
+        let e = self.e.max(o.e);
+        let (m1, r1) = self.at_exponent(e);
+        let (m2, r2) = o.at_exponent(e);
+        let m = m1 + m2;
+        XBall {
+            m,
+            r: (r1 + r2 + U * m.abs()) * INFL,
+            e,
+        }
+        .normalized()
+    }
+
+    pub fn neg(&self) -> XBall {
+        XBall {
+            m: -self.m,
+            r: self.r,
+            e: self.e,
+        }
+    }
+
+    pub fn sub(&self, o: &XBall) -> XBall {
+        self.add(&o.neg())
+    }
+
+    pub fn mul(&self, o: &XBall) -> XBall {
+        if (self.m == 0.0 && self.r == 0.0) || (o.m == 0.0 && o.r == 0.0) {
+            return XBall::zero();
+        }
+        let m = self.m * o.m;
+        XBall {
+            m,
+            r: (self.m.abs() * o.r + self.r * o.m.abs() + self.r * o.r + U * m.abs() + TINY) * INFL,
+            e: self.e + o.e,
+        }
+        .normalized()
+    }
+
+    /// `1/self`, `None` when the ball reaches 0:
+    /// `|1/x − 1/m| ≤ r/(|m|(|m| − r))`.
+    pub fn recip(&self) -> Option<XBall> {
+        let am = self.m.abs();
+        let lo = (am - self.r) * (1.0 - 4.0 * U);
+        if !(lo > 0.0 && am.is_finite()) {
+            return None;
+        }
+        let m = 1.0 / self.m;
+        Some(
+            XBall {
+                m,
+                r: (self.r / (am * lo) + U * m.abs()) * INFL * INFL + TINY,
+                e: -self.e,
+            }
+            .normalized(),
+        )
+    }
+
+    /// `√self`, `None` when the ball reaches below 0 (or is not finite).
+    pub fn sqrt(&self) -> Option<XBall> {
+        const W: f64 = 1.0 / 1_125_899_906_842_624.0; // 2^-50
+        let (mut m, mut r, mut e) = (self.m, self.r, self.e);
+        if e % 2 != 0 {
+            m *= 2.0;
+            r *= 2.0;
+            e -= 1;
+        }
+        let lo2 = (m - r) * (1.0 - W);
+        let hi2 = (m + r) * (1.0 + W);
+        if !(lo2 >= 0.0 && hi2.is_finite()) {
+            return None;
+        }
+        let (lo, hi) = (lo2.sqrt() * (1.0 - W), hi2.sqrt() * (1.0 + W));
+        let mid = 0.5 * (lo + hi);
+        Some(
+            XBall {
+                m: mid,
+                r: (mid - lo).max(hi - mid) * (1.0 + W) + TINY,
+                e: e / 2,
+            }
+            .normalized(),
+        )
+    }
+
+    /// The ends as exact rationals, `None` when not finite.
+    pub fn bounds(&self) -> Option<(Q, Q)> {
+        let (lo, hi) = (self.m - self.r, self.m + self.r);
+        if !(lo.is_finite() && hi.is_finite()) {
+            return None;
+        }
+        let scale = |x: f64| -> Option<Q> {
+            let q = super::double_value(x)?;
+            Some(if self.e >= 0 {
+                q * Q::from_integer(BigInt::from(1) << self.e as usize)
+            } else {
+                q / Q::from_integer(BigInt::from(1) << (-self.e) as usize)
+            })
+        };
+        Some((scale(lo)?, scale(hi)?))
+    }
+
+    /// A double approximation of the midpoint and a bound on the distance
+    /// from it to any point of the ball (`None` outside the range of
+    /// doubles).
+    pub fn to_f64(self) -> Option<(f64, f64)> {
+        if self.e > 1000 || self.e < -1000 {
+            if self.e < -1000 {
+                // tiny: 0 with the whole ball as the bound
+                return Some((0.0, TINY));
+            }
+            return None;
+        }
+        let s = pow2(self.e);
+        let v = self.m * s;
+        // rounding of the product (subnormal results: absolute 2^-1074)
+        let b = (self.r * s + U * v.abs() + 5e-324) * INFL;
+        (v.is_finite() && b.is_finite()).then_some((v, b))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::{q, qi};
+
+    fn holds(b: &XBall, x: &Q) -> bool {
+        let (lo, hi) = b.bounds().unwrap();
+        lo <= *x && *x <= hi
+    }
+
+    #[test]
+    fn huge_and_tiny_rationals_stay_enclosed() {
+        let big = Q::from_integer(BigInt::from(3) << 3000usize);
+        let small = Q::new(BigInt::from(7), BigInt::from(1) << 2500usize);
+        for x in [big.clone(), small.clone(), q(-22, 7), qi(0), &big * &small] {
+            assert!(holds(&XBall::from_q(&x), &x), "{x}");
+        }
+        let p = XBall::from_q(&big).mul(&XBall::from_q(&small));
+        assert!(holds(&p, &(&big * &small)));
+        let s = XBall::from_q(&big).add(&XBall::from_q(&small));
+        assert!(holds(&s, &(&big + &small)));
+    }
+
+    #[test]
+    fn square_roots_are_enclosed() {
+        // √(2^2001) = 2^1000·√2
+        let x = Q::from_integer(BigInt::from(1) << 2001usize);
+        let r = XBall::from_q(&x).sqrt().unwrap();
+        let (lo, hi) = r.bounds().unwrap();
+        assert!(&lo * &lo <= x && x <= &hi * &hi);
+        assert!((&hi - &lo) / &lo < q(1, 1 << 40));
+    }
+}
