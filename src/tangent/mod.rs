@@ -599,83 +599,136 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly, values: bool) -> Result<Tan
             Analysis::Lambda(an),
             WitnessFinder::Lambda,
         )
-    } else if let Ok(an) = poisson::analyze(&e, surface, values) {
+    } else {
+        match critical_routes(
+            &e,
+            surface,
+            &critical::CriticalSystem::of(surface, &e),
+            values,
+        )? {
+            Routed::Values(f) => (f.values, f.nonreal, f.judging, f.method, f.finder),
+            Routed::Signs(an) => return Ok(finish_signs(&e, surface, *an)),
+            Routed::Undecided(why) => return Ok(undecided(&e, surface, why)),
+        }
+    };
+    Ok(finish(
+        &e, surface, values, nonreal, judging, method, witness_fn,
+    ))
+}
+
+/// What the routes of degree ≥ 3 found: the attained values, the roots of
+/// D(u) that are not attained (see [`classify`]), D(u), the analysis.
+pub(crate) struct Found {
+    pub(crate) values: Vec<RealAlg>,
+    pub(crate) nonreal: Vec<RealAlg>,
+    pub(crate) judging: ZPoly,
+    pub(crate) method: Analysis,
+    pub(crate) finder: WitnessFinder,
+}
+
+/// The outcome of [`critical_routes`].
+pub(crate) enum Routed {
+    /// The critical values.
+    Values(Found),
+    /// The signs of S at the real critical points only (verdict only).
+    Signs(Box<poisson::PoissonAnalysis>),
+    /// No certificate (the reason).
+    Undecided(String),
+}
+
+/// The critical values of S on E from the zeros of E and the minors of
+/// `sys` (degree ≥ 3, no special structure): the Poisson route, the
+/// multi-modular RUR, then the exact Gröbner route (finite critical set or
+/// level sets).
+pub(crate) fn critical_routes(
+    e: &Ellipsoid,
+    surface: &QMPoly,
+    sys: &critical::CriticalSystem,
+    values: bool,
+) -> Result<Routed, Error> {
+    if let Ok(an) = poisson::analyze_minors(e, surface, &sys.minors, values) {
         let Some(j) = an.judging.clone() else {
-            return Ok(finish_signs(&e, surface, an));
+            return Ok(Routed::Signs(Box::new(an)));
         };
         let (vals, nonreal) = if an.separates() {
             (an.real_values(), vec![])
         } else {
             split_values(&an.real_values(), &j)
         };
-        (
-            vals,
+        return Ok(Routed::Values(Found {
+            values: vals,
             nonreal,
-            j,
-            Analysis::Poisson(Box::new(an)),
-            WitnessFinder::Poisson,
-        )
-    } else if let Ok(an) = modular::analyze(&e, surface) {
+            judging: j,
+            method: Analysis::Poisson(Box::new(an)),
+            finder: WitnessFinder::Poisson,
+        }));
+    }
+    if let Ok(an) = modular::analyze(e, surface, &sys.minors) {
         let (vals, nonreal) = split_values(&an.real_values(), &an.judging);
         let j = an.judging.clone();
-        (
-            vals,
+        return Ok(Routed::Values(Found {
+            values: vals,
             nonreal,
-            j,
-            Analysis::ModularRur(an),
-            WitnessFinder::Modular,
-        )
-    } else {
-        let outcome = match critical::analyze(&e, surface) {
-            Ok(o) => o,
-            Err(err) if err.kind() == ErrorKind::Internal => {
-                return Ok(undecided(&e, surface, err.message().to_string()));
-            }
-            Err(other) => return Err(other),
-        };
-        match outcome {
-            critical::Outcome::Finite(an) => {
-                let real: Vec<RealAlg> = an.real_values();
-                let (vals, nonreal) = split_values(&real, &an.judging);
-                let j = an.judging.clone();
-                (
-                    vals,
-                    nonreal,
-                    j,
-                    Analysis::CriticalIdeal(an),
-                    WitnessFinder::Critical,
-                )
-            }
-            critical::Outcome::Curves(ls) => {
-                let j = ls.judging.clone();
-                let vals = ls.attained.clone();
-                // only the roots of D(u) outside [ν, μ] are known not to be
-                // attained at real points; those between are unclassified
-                // (named in a note by `finish`)
-                let (vals, roots) = split_values(&vals, &j);
-                let nonreal = match (vals.first(), vals.last()) {
-                    (Some(lo), Some(hi)) => roots
-                        .into_iter()
-                        .filter(|r| {
-                            r.cmp_exact(lo) == Ordering::Less
-                                || r.cmp_exact(hi) == Ordering::Greater
-                        })
-                        .collect(),
-                    _ => roots,
-                };
-                (
-                    vals,
-                    nonreal,
-                    j,
-                    Analysis::LevelSets(ls),
-                    WitnessFinder::Level,
-                )
+            judging: j,
+            method: Analysis::ModularRur(an),
+            finder: WitnessFinder::Modular,
+        }));
+    }
+    let outcome = match critical::analyze_system(e, surface, sys) {
+        Ok(o) => o,
+        Err(err) if err.kind() == ErrorKind::Internal => {
+            return Ok(Routed::Undecided(err.message().to_string()));
+        }
+        Err(other) => return Err(other),
+    };
+    Ok(Routed::Values(match outcome {
+        critical::Outcome::Finite(an) => {
+            let real: Vec<RealAlg> = an.real_values();
+            let (vals, nonreal) = split_values(&real, &an.judging);
+            let j = an.judging.clone();
+            Found {
+                values: vals,
+                nonreal,
+                judging: j,
+                method: Analysis::CriticalIdeal(an),
+                finder: WitnessFinder::Critical,
             }
         }
+        critical::Outcome::Curves(ls) => {
+            let j = ls.judging.clone();
+            let (vals, nonreal) = classify(&ls.attained, &j, true);
+            Found {
+                values: vals,
+                nonreal,
+                judging: j,
+                method: Analysis::LevelSets(ls),
+                finder: WitnessFinder::Level,
+            }
+        }
+    }))
+}
+
+/// [`split_values`], and with `curves` (only ν and μ are known among the
+/// attained values) only the roots of D(u) outside [ν, μ] count as known
+/// not to be attained at real points; those between are unclassified
+/// (named in a note by `finish`).
+pub(crate) fn classify(
+    attained: &[RealAlg],
+    judging: &ZPoly,
+    curves: bool,
+) -> (Vec<RealAlg>, Vec<RealAlg>) {
+    let (vals, roots) = split_values(attained, judging);
+    if !curves {
+        return (vals, roots);
+    }
+    let nonreal = match (vals.first(), vals.last()) {
+        (Some(lo), Some(hi)) => roots
+            .into_iter()
+            .filter(|r| r.cmp_exact(lo) == Ordering::Less || r.cmp_exact(hi) == Ordering::Greater)
+            .collect(),
+        _ => roots,
     };
-    Ok(finish(
-        &e, surface, values, nonreal, judging, method, witness_fn,
-    ))
+    (vals, nonreal)
 }
 
 /// The answer when no certificate could be produced (never a guess).
@@ -720,7 +773,7 @@ impl TangentReport {
 }
 
 #[derive(Clone, Copy, Debug)]
-enum WitnessFinder {
+pub(crate) enum WitnessFinder {
     None,
     Pencil,
     Lambda,
