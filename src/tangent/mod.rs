@@ -14,7 +14,11 @@
 //! * deg S ≥ 3 otherwise: the critical points as the zero set of
 //!   `E = 0, ∇S × ∇E = 0` (no λ), solved by a Gröbner basis and a rational
 //!   univariate representation (`critical.rs`); real critical points are
-//!   exactly the real roots of the RUR's univariate polynomial.
+//!   exactly the real roots of the RUR's univariate polynomial;
+//! * deg S ≥ 3 with a repeated factor (`S = c·∏ Tᵢ^kᵢ`, some kᵢ ≥ 2, which
+//!   makes that system positive-dimensional): decided from the square-free
+//!   part (`nonreduced.rs`) — a square-free S is recognised first by one
+//!   modular image per variable and goes on unchanged.
 //!
 //! The judging polynomial D(u) is reported too (the paper's object), and the
 //! paper's trap is avoided by construction: a real root of D(u) counts only
@@ -25,6 +29,7 @@ pub(crate) mod critical;
 pub(crate) mod ellipsoid;
 pub(crate) mod judging;
 pub(crate) mod modular;
+pub(crate) mod nonreduced;
 pub(crate) mod pencil;
 pub(crate) mod poisson;
 pub(crate) mod quadric;
@@ -164,6 +169,10 @@ pub enum Method {
     PoissonRur,
     /// deg S ≥ 3 with curves of critical points: exact level-set tests.
     LevelSets,
+    /// S with a repeated factor: decided from its square-free
+    /// decomposition `S = c·∏ Tᵢ^kᵢ` (the factors' own analyses and the
+    /// critical points of S off S = 0).
+    SquareFreePart,
     /// S is a constant.
     Constant,
     /// No computation finished (undecided).
@@ -181,6 +190,7 @@ impl Method {
             Method::ModularRur => "critical-ideal-modular-rur",
             Method::PoissonRur => "critical-ideal-poisson-rur",
             Method::LevelSets => "level-sets",
+            Method::SquareFreePart => "square-free-part",
             Method::Constant => "constant",
             Method::None => "none",
         }
@@ -283,6 +293,8 @@ pub(crate) enum Analysis {
     Poisson(Box<poisson::PoissonAnalysis>),
     /// deg S ≥ 3 with curves of critical points (symmetric inputs).
     LevelSets(critical::LevelSetAnalysis),
+    /// S with a repeated factor, from its square-free decomposition.
+    NonReduced(Box<nonreduced::NonReducedAnalysis>),
     /// S is a non-zero constant.
     Constant,
     /// No computation finished.
@@ -335,6 +347,7 @@ impl Certificate {
             Analysis::ModularRur(_) => Method::ModularRur,
             Analysis::Poisson(_) => Method::PoissonRur,
             Analysis::LevelSets(_) => Method::LevelSets,
+            Analysis::NonReduced(_) => Method::SquareFreePart,
             Analysis::Constant => Method::Constant,
             Analysis::Undecided => Method::None,
         }
@@ -533,6 +546,15 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly, values: bool) -> Result<Tan
     }
     let e = e.clone();
     let deg = surface.total_degree().unwrap_or(0);
+    // a repeated factor makes the critical set of S positive-dimensional:
+    // S is decided from its square-free decomposition (a square-free S,
+    // the usual case, is recognised by one modular specialisation per
+    // variable and goes on unchanged)
+    if deg >= 3
+        && let Some(sf) = crate::poly::sqfree::repeated_factors(surface)
+    {
+        return nonreduced::decide(&e, surface, &sf);
+    }
     // deg S ≤ 2: the pencil discriminant decides generic pairs; the others
     // go to the separable route when it applies, else the λ-parametrisation
     let quadric_form = if deg == 1 || deg == 2 {
@@ -782,6 +804,7 @@ pub(crate) enum WitnessFinder {
     Modular,
     Poisson,
     Level,
+    NonReduced,
 }
 
 /// Sorts and deduplicates the attained values, and lists the real roots of
@@ -813,12 +836,20 @@ fn finish(
     wf: WitnessFinder,
 ) -> TangentReport {
     let mut notes = Vec::new();
-    if matches!(method, Analysis::LevelSets(_)) {
+    // the analysis that found the critical points (a non-reduced S: its
+    // factor's or its G-system's)
+    let inner = match &method {
+        Analysis::NonReduced(an) => an.inner().unwrap_or(&method),
+        m => m,
+    };
+    if matches!(inner, Analysis::LevelSets(_)) {
         let between: Vec<String> = match (values.first(), values.last()) {
             (Some(lo), Some(hi)) => RealAlg::roots_of(&judging)
                 .iter()
                 .filter(|r| {
-                    r.cmp_exact(lo) == Ordering::Greater && r.cmp_exact(hi) == Ordering::Less
+                    r.cmp_exact(lo) == Ordering::Greater
+                        && r.cmp_exact(hi) == Ordering::Less
+                        && !values.iter().any(|v| v.cmp_exact(r) == Ordering::Equal)
                 })
                 .map(|r| r.approx(12))
                 .collect(),
@@ -831,7 +862,7 @@ fn finish(
         };
         notes.push(format!("curves of critical points: ν and μ are exact; critical values strictly between them are not classified{listed}"));
     }
-    if let Analysis::Separable(sa) = &method
+    if let Analysis::Separable(sa) = inner
         && sa.has_curves()
     {
         notes.push("curves of critical points on a branch with two free coordinates; every critical value is exact".into());
@@ -1004,6 +1035,7 @@ fn witness_for(
         (Analysis::ModularRur(an), WitnessFinder::Modular) => an.witness(value, e, s, want),
         (Analysis::Poisson(an), WitnessFinder::Poisson) => an.witness(value, e, s, want),
         (Analysis::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
+        (Analysis::NonReduced(an), WitnessFinder::NonReduced) => an.witness(value, e, s, want),
         (Analysis::Constant, _) => {
             let c = e.center.clone();
             let mut p = c.clone();

@@ -25,6 +25,7 @@ mod fuzz_props;
 mod kernel_props;
 mod kernel_reference;
 mod natural;
+mod nonreduced;
 mod poisson;
 mod printing;
 mod tangent;
