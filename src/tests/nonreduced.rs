@@ -248,35 +248,39 @@ fn products_with_multiplicities_are_invariant_under_rigid_motions() {
 }
 
 #[test]
-fn field_route_follows_a_function_of_one_factor() {
-    // S = T²·(T + 10)³ = g(T) with g(v) = v²(v + 10)³: two coprime factors,
-    // so S goes through the field G; g′(v) = v(v + 10)²(5v + 20) vanishes at
-    // 0, −10, −4 only, so on T's range [ν, μ] ⊂ (−4, ∞) (checked) the
-    // extremes of S are g(ν), g(μ) and g(0) = 0 when T vanishes on E
-    let e = rotated("x^2+4y^2+2z^2-3", (1, 1), (1, 2), (1, 3));
-    let t = poly("x*y + z - 1/3");
-    let s = &t.pow(2) * &(&t + &QMPoly::constant(qi(10))).pow(3);
-    let r = decide(&e, &s);
-    check_certificate(&e, &s, &r);
-    assert!(matches!(
-        &r.certificate.method,
-        Analysis::NonReduced(an) if an.field.is_some()
-    ));
-    let rt = decide(&e, &t);
-    let (nu, mu) = (rt.min.as_ref().unwrap(), rt.max.as_ref().unwrap());
-    assert!(nu.cmp_rational(&qi(-4)) == Ordering::Greater);
-    let g = QPoly::new(vec![qi(0), qi(0), qi(1000), qi(300), qi(30), qi(1)]);
-    let one = QPoly::constant(Q::one());
-    let mut cands = vec![
-        value_at(nu, &g, &one).unwrap(),
-        value_at(mu, &g, &one).unwrap(),
-    ];
-    if nu.signum() <= 0 && mu.signum() >= 0 {
-        cands.push(RealAlg::rational(Q::zero()));
+fn field_route_hand_derived() {
+    // S = x²·y³ on the unit sphere: G = (2y, 3x, 0), so G × ∇E = 0 at the
+    // poles (value 0) and where z = 0, 2x² = 3y²... i.e. x² = 2/5, y² = 3/5,
+    // where S = ±(2/5)(3/5)^(3/2): μ = −ν = √(108/3125), the positive root
+    // of 3125u² − 108.  The same after one rational rotation of both (the
+    // sphere is fixed, S's factors become general planes).
+    let mu = RealAlg::roots_of(&crate::poly::ZPoly::from_i64s(&[-108, 0, 3125]))
+        .pop()
+        .unwrap();
+    let e = poly("x^2+y^2+z^2-1");
+    let s = poly("x^2*y^3");
+    let r = cayley_rotation(&q(1, 2), &q(-1, 3), &q(1, 5));
+    for (e, s) in [(e.clone(), s.clone()), (rotate(&e, &r), rotate(&s, &r))] {
+        let rep = decide(&e, &s);
+        assert!(matches!(
+            &rep.certificate.method,
+            Analysis::NonReduced(an) if an.field.is_some()
+        ));
+        assert_eq!(rep.verdict, Verdict::Intersecting);
+        assert!(eq(rep.max.as_ref().unwrap(), &mu));
+        assert!(rep.min.as_ref().unwrap().cmp_exact(&mu) != Ordering::Equal);
+        assert_eq!(
+            phi(rep.min.as_ref().unwrap(), &qi(1), 2).cmp_exact(&phi(&mu, &qi(1), 2)),
+            Ordering::Equal
+        );
+        assert!(
+            rep.certificate
+                .critical_values
+                .iter()
+                .any(|v| v.signum() == 0)
+        );
+        check_certificate(&e, &s, &rep);
     }
-    cands.sort_by(|a, b| a.cmp_exact(b));
-    assert!(eq(r.min.as_ref().unwrap(), &cands[0]));
-    assert!(eq(r.max.as_ref().unwrap(), cands.last().unwrap()));
 }
 
 #[test]
