@@ -886,7 +886,7 @@ pub const KERNEL_INPUTS: &str = include_str!("../../benches/data/kernel_inputs.j
 /// (`benches/data/natural_pairs.json`), used when no `--pairs` path is given.
 pub const NATURAL_PAIRS: &str = include_str!("../../benches/data/natural_pairs.json");
 
-/// Runs the suites (`kernel`, `tangent`, `natural` or `all`); the kernel
+/// Runs the suites (`kernel`, `tangent`, `nonreduced`, `natural` or `all`); the kernel
 /// suite reads `inputs_path` and the natural suite's pair rows `pairs_path`,
 /// or the shipped files when they are `None`.
 pub fn run(
@@ -896,10 +896,12 @@ pub fn run(
 ) -> Result<Vec<Row>, Error> {
     let mut rows = Vec::new();
     let all = suite == "all";
-    if !["all", "kernel", "tangent", "natural"].contains(&suite) {
+    if !["all", "kernel", "tangent", "nonreduced", "natural"].contains(&suite) {
         return Err(Error::new(
             ErrorKind::Input,
-            format!("unknown benchmark suite \"{suite}\" (kernel, tangent, natural or all)"),
+            format!(
+                "unknown benchmark suite \"{suite}\" (kernel, tangent, nonreduced, natural or all)"
+            ),
         ));
     }
     if all || suite == "kernel" {
@@ -919,6 +921,9 @@ pub fn run(
     }
     if all || suite == "tangent" {
         tangent_suite(&mut rows)?;
+    }
+    if all || suite == "nonreduced" {
+        super::bench_cases::nonreduced_suite(&mut rows);
     }
     if all || suite == "natural" {
         natural_suite(&mut rows)?;

@@ -186,8 +186,23 @@ pub fn big_cubic(bits: u32) -> Case {
 
 /// The route a report took (for the benchmark table).
 pub fn method_name(r: &crate::tangent::TangentReport) -> &'static str {
+    analysis_name(&r.certificate.method)
+}
+
+/// The name of a route (a non-reduced S: the route inside).
+fn analysis_name(a: &crate::tangent::Analysis) -> &'static str {
     use crate::tangent::Analysis;
-    match &r.certificate.method {
+    match a {
+        Analysis::NonReduced(an) => match an.inner() {
+            Some(Analysis::Pencil(_)) => "square-free part: pencil",
+            Some(Analysis::Lambda(_)) => "square-free part: lambda",
+            Some(Analysis::Separable(_)) => "square-free part: separable",
+            Some(Analysis::CriticalIdeal(_)) => "square-free part: exact-groebner",
+            Some(Analysis::ModularRur(_)) => "square-free part: modular",
+            Some(Analysis::Poisson(_)) => "square-free part: poisson",
+            Some(Analysis::LevelSets(_)) => "square-free part: level-sets",
+            _ => "square-free part",
+        },
         Analysis::Constant => "constant",
         Analysis::Pencil(_) => "pencil",
         Analysis::Lambda(_) => "lambda",
@@ -258,6 +273,74 @@ pub fn all_cases() -> Vec<Case> {
     all.push(big_cubic(300));
     all.push(big_cubic(3));
     all
+}
+
+/// The surfaces with a repeated factor of the `nonreduced` suite (issue 35):
+/// (id, S).
+pub const NONREDUCED_SURFACES: [(&str, &str); 7] = [
+    ("square", "(x*y - z)^2"),
+    ("cube", "(x*y - z)^3"),
+    ("cylinder_sq_plane", "(x^2 + y^2 - 1)^2*(z - 1)"),
+    ("plane_sq_plane_cube", "(x + y + z - 1)^2*(x - y)^3"),
+    (
+        "two_quadrics_squared",
+        "(x^2 + 2y^2 - z - 1)^2*(x*y + z^2 - 2)^2",
+    ),
+    (
+        "quadric_sq_quadric_cube",
+        "(x^2 + 2y^2 - z - 1)^2*(x*y + z^2 - 2)^3",
+    ),
+    (
+        "sextic_part",
+        "(x^3 + y^3 + z^3 + x*y - 2z - 1)^2*(x^2 + y*z - 2)*(x + 2y - z)",
+    ),
+];
+
+/// The three rotated ellipsoids of the `nonreduced` suite: the dense rows'
+/// ellipsoid, and two moved off the origin.
+pub fn nonreduced_ellipsoids() -> Vec<(&'static str, QMPoly)> {
+    vec![
+        ("e1", rotated_ellipsoid()),
+        (
+            "e2",
+            rotate(
+                &poly("(x - 1/2)^2/4 + (y + 1)^2 + (z - 1/3)^2/9 - 1"),
+                &cayley_rotation(&q(2, 3), &q(-1, 5), &q(1, 2)),
+            ),
+        ),
+        (
+            "e3",
+            rotate(
+                &poly("x^2 + 4y^2 + 2z^2 - 3"),
+                &cayley_rotation(&q(1, 1), &q(1, 2), &q(1, 3)),
+            ),
+        ),
+    ]
+}
+
+/// The rows of the `nonreduced` suite: full verdict (exact ν, μ, D(u) and
+/// certificate) of each surface with a repeated factor against each
+/// rotated ellipsoid.
+pub fn nonreduced_suite(rows: &mut Vec<Row>) {
+    let limit = std::time::Duration::from_secs(10);
+    for (sid, s) in NONREDUCED_SURFACES {
+        for (eid, e) in nonreduced_ellipsoids() {
+            let c = Case {
+                id: format!("{sid}_{eid}"),
+                e,
+                s: poly(s),
+            };
+            let (t, r) = time_case(&c, limit);
+            rows.push(Row {
+                suite: "nonreduced",
+                id: c.id,
+                desc: format!("S = {s}: {}", describe(&r)),
+                median: t,
+                samples: 3,
+                extra: Default::default(),
+            });
+        }
+    }
 }
 
 /// A polynomial with its denominators cleared (an integer multiple).

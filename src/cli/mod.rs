@@ -9,7 +9,7 @@ use std::process::ExitCode;
 
 pub mod alloc;
 pub mod bench;
-mod bench_cases;
+pub(crate) mod bench_cases;
 pub mod examples;
 mod limits;
 
@@ -115,7 +115,8 @@ enum Command {
     /// Median timings of the kernel (resultants, isolation, Sturm), the tangent
     /// point method and the natural-quadric deciders.
     Bench {
-        /// kernel, tangent, natural or all.
+        /// kernel, tangent, nonreduced (surfaces with a repeated factor),
+        /// natural or all.
         #[arg(default_value = "all")]
         suite: String,
         /// Kernel inputs (JSON; default: the copy shipped in the binary,

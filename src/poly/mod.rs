@@ -13,6 +13,7 @@ pub mod mpoly;
 pub mod parse;
 mod public;
 pub mod ring;
+pub(crate) mod sqfree;
 pub mod upoly;
 pub mod zpoly;
 

@@ -209,7 +209,7 @@ pub fn values_at(
     num: &QPoly,
     den: &QPoly,
 ) -> Vec<Option<RealAlg>> {
-    values_inner(phi, alphas, num, den, None)
+    values_inner(phi, alphas, num, den, None, true)
 }
 
 /// [`values_at`] when a square-free polynomial `values` vanishing at every
@@ -223,7 +223,22 @@ pub fn values_with(
     den: &QPoly,
     values: &ZPoly,
 ) -> Vec<Option<RealAlg>> {
-    values_inner(phi, alphas, num, den, Some(values))
+    values_inner(phi, alphas, num, den, Some(values), true)
+}
+
+/// [`values_with`] without [`RealAlg::simplify`]: an irrational α whose
+/// value happens to be rational keeps the isolating interval of `values`
+/// (exact either way; simplifying refines to up to 2048 bits when the
+/// rational-root sieve of `values` fails, which costs more than the
+/// identification on high-degree `values`).
+pub fn values_with_unsimplified(
+    phi: &ZPoly,
+    alphas: &[RealAlg],
+    num: &QPoly,
+    den: &QPoly,
+    values: &ZPoly,
+) -> Vec<Option<RealAlg>> {
+    values_inner(phi, alphas, num, den, Some(values), false)
 }
 
 fn values_inner(
@@ -232,6 +247,7 @@ fn values_inner(
     num: &QPoly,
     den: &QPoly,
     known: Option<&ZPoly>,
+    simplify: bool,
 ) -> Vec<Option<RealAlg>> {
     let mut r: Option<(ZPoly, Vec<RootInterval>)> = None;
     let mut zs: Option<((ZPoly, Q), (ZPoly, Q))> = None;
@@ -265,7 +281,8 @@ fn values_inner(
                         .filter(|&j| meets(&ivs[j], &vl, &vh))
                         .collect();
                     if hits.len() == 1 {
-                        return Some(RealAlg::from_interval(rp, &ivs[hits[0]]).simplify());
+                        let v = RealAlg::from_interval(rp, &ivs[hits[0]]);
+                        return Some(if simplify { v.simplify() } else { v });
                     }
                     for j in hits {
                         bisect_once(rp, &mut ivs[j]);

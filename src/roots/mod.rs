@@ -24,7 +24,9 @@ mod sturm;
 mod zerodim;
 
 pub use algebraic::{RealAlg, separate};
-pub use enclose::{eval_q, value_at, value_polynomial, values_at, values_with};
+pub use enclose::{
+    eval_q, value_at, value_polynomial, values_at, values_with, values_with_unsimplified,
+};
 pub(crate) use enclose::{meets, ratio_enclosure};
 pub(crate) use isolate::descartes_in;
 pub use isolate::{RootInterval, bisect_once, isolate_real_roots, isolate_squarefree};

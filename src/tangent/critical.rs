@@ -89,6 +89,39 @@ pub struct LevelSetAnalysis {
     pub attained: Vec<RealAlg>,
     /// The linear form used for the level curves.
     pub form: [Q; 3],
+    /// The minors `F × ∇E` of the critical system (for the witnesses'
+    /// level curves).
+    pub minors: [QMPoly; 3],
+}
+
+/// The polynomial system the routes of degree ≥ 3 solve: the critical
+/// points of S on E are the zeros of E and of the three minors `F × ∇E` of
+/// a vector field F — `F = ∇S` for S as given, or, when S has repeated
+/// factors, the field G of [`super::nonreduced`] (∇S divided by a product
+/// of powers of the factors; its zeros on E are the critical points off
+/// S = 0 and some on it).
+#[derive(Clone, Debug)]
+pub struct CriticalSystem {
+    /// `F × ∇E`.
+    pub minors: [QMPoly; 3],
+    /// True when `F = ∇S`: the resultant elimination of S's own Lagrange
+    /// system is then tried beside the RUR.
+    pub gradient: bool,
+    /// Critical values of S known without these minors (0 when E meets a
+    /// repeated factor of S): D(u) of the level sets has them as roots, so
+    /// that no level tested is one of them.
+    pub known_values: Vec<Q>,
+}
+
+impl CriticalSystem {
+    /// The system of S as given: `∇S × ∇E`.
+    pub fn of(s: &QMPoly, e: &Ellipsoid) -> CriticalSystem {
+        CriticalSystem {
+            minors: cross_gradients(s, &e.poly),
+            gradient: true,
+            known_values: Vec::new(),
+        }
+    }
 }
 
 /// What the critical-point analysis found.
@@ -106,9 +139,15 @@ pub fn cross_gradients(s: &QMPoly, e: &QMPoly) -> [QMPoly; 3] {
 }
 
 /// Runs the critical-point analysis of S on E.
+#[cfg(test)]
 pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
+    analyze_system(e, s, &CriticalSystem::of(s, e))
+}
+
+/// [`analyze`] on a given critical system (the values are those of S).
+pub fn analyze_system(e: &Ellipsoid, s: &QMPoly, sys: &CriticalSystem) -> Result<Outcome, Error> {
     let started = std::time::Instant::now();
-    let cross = cross_gradients(s, &e.poly);
+    let cross = sys.minors.clone();
     let mut all = vec![e.poly.clone()];
     all.extend(cross.iter().cloned());
     // conics of critical points (a monomial dividing the three minors) are
@@ -134,8 +173,11 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
             // skipped, like one beyond its own work budget or one taking
             // longer than the critical points took (plus 0.1 s)
             let cap = started.elapsed() + std::time::Duration::from_millis(100);
-            let elimination =
-                crate::budget::run_optional_for(cap, || super::judging::eliminate(e, s)).flatten();
+            let elimination = if sys.gradient {
+                crate::budget::run_optional_for(cap, || super::judging::eliminate(e, s)).flatten()
+            } else {
+                None
+            };
             Ok(Outcome::Finite(CriticalAnalysis {
                 generators: gens,
                 rur,
@@ -146,7 +188,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<Outcome, Error> {
                 conics,
             }))
         }
-        None => Ok(Outcome::Curves(level_sets(e, s, &all)?)),
+        None => Ok(Outcome::Curves(level_sets(e, s, &all, sys)?)),
     }
 }
 
@@ -179,9 +221,15 @@ fn elimination_ideal_values(gens: &[QMPoly], s: &QMPoly) -> Result<ZPoly, Error>
     Ok(d.squarefree_part())
 }
 
-/// Does `E ∩ {S = q}` have a real point?  (q must not be a critical value.)
-fn level_has_real_point(e: &Ellipsoid, s: &QMPoly, q: &Q) -> Result<Option<(Rur, [Q; 3])>, Error> {
-    let cross = cross_gradients(s, &e.poly);
+/// Does `E ∩ {S = q}` have a real point?  (q must not be a critical value;
+/// `cross` are the minors of the critical system, which off S = 0 vanish
+/// exactly where `∇S × ∇E` does.)
+fn level_has_real_point(
+    e: &Ellipsoid,
+    s: &QMPoly,
+    cross: &[QMPoly; 3],
+    q: &Q,
+) -> Result<Option<(Rur, [Q; 3])>, Error> {
     let sq = s - &MPoly::constant(q.clone());
     for l in GENERIC_FORMS {
         crate::budget::check_now();
@@ -194,8 +242,20 @@ fn level_has_real_point(e: &Ellipsoid, s: &QMPoly, q: &Q) -> Result<Option<(Rur,
     Ok(None)
 }
 
-fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnalysis, Error> {
-    let judging = elimination_ideal_values(gens, s)?;
+fn level_sets(
+    e: &Ellipsoid,
+    s: &QMPoly,
+    gens: &[QMPoly],
+    sys: &CriticalSystem,
+) -> Result<LevelSetAnalysis, Error> {
+    let mut judging = elimination_ideal_values(gens, s)?;
+    if !sys.known_values.is_empty() {
+        let mut p = judging.to_q();
+        for v in &sys.known_values {
+            p = &p * &QPoly::new(vec![-v.clone(), Q::one()]);
+        }
+        judging = ZPoly::from_q(&p).0.squarefree_part();
+    }
     let mut roots = RealAlg::roots_of(&judging);
     // separate the isolating intervals so that rationals fit between roots
     separate(&mut roots);
@@ -231,7 +291,7 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
     let mut form = [qi(1), qi(2), qi(3)];
     for q in &tests {
         crate::budget::check_now();
-        match level_has_real_point(e, s, q)? {
+        match level_has_real_point(e, s, &sys.minors, q)? {
             Some((rur, f)) => {
                 form = f;
                 levels.push((q.clone(), !rur.real_roots.is_empty()));
@@ -279,6 +339,7 @@ fn level_sets(e: &Ellipsoid, s: &QMPoly, gens: &[QMPoly]) -> Result<LevelSetAnal
         levels,
         attained,
         form,
+        minors: sys.minors.clone(),
     })
 }
 
@@ -319,7 +380,7 @@ impl LevelSetAnalysis {
         {
             return None;
         }
-        let (rur, _) = level_has_real_point(e, s, &q).ok()??;
+        let (rur, _) = level_has_real_point(e, s, &self.minors, &q).ok()??;
         if rur.real_roots.is_empty() {
             return None;
         }

@@ -14,7 +14,11 @@
 //! * deg S ≥ 3 otherwise: the critical points as the zero set of
 //!   `E = 0, ∇S × ∇E = 0` (no λ), solved by a Gröbner basis and a rational
 //!   univariate representation (`critical.rs`); real critical points are
-//!   exactly the real roots of the RUR's univariate polynomial.
+//!   exactly the real roots of the RUR's univariate polynomial;
+//! * deg S ≥ 3 with a repeated factor (`S = c·∏ Tᵢ^kᵢ`, some kᵢ ≥ 2, which
+//!   makes that system positive-dimensional): decided from the square-free
+//!   part (`nonreduced.rs`) — a square-free S is recognised first by one
+//!   modular image per variable and goes on unchanged.
 //!
 //! The judging polynomial D(u) is reported too (the paper's object), and the
 //! paper's trap is avoided by construction: a real root of D(u) counts only
@@ -25,6 +29,7 @@ pub(crate) mod critical;
 pub(crate) mod ellipsoid;
 pub(crate) mod judging;
 pub(crate) mod modular;
+pub(crate) mod nonreduced;
 pub(crate) mod pencil;
 pub(crate) mod poisson;
 pub(crate) mod quadric;
@@ -164,6 +169,10 @@ pub enum Method {
     PoissonRur,
     /// deg S ≥ 3 with curves of critical points: exact level-set tests.
     LevelSets,
+    /// S with a repeated factor: decided from its square-free
+    /// decomposition `S = c·∏ Tᵢ^kᵢ` (the factors' own analyses and the
+    /// critical points of S off S = 0).
+    SquareFreePart,
     /// S is a constant.
     Constant,
     /// No computation finished (undecided).
@@ -181,6 +190,7 @@ impl Method {
             Method::ModularRur => "critical-ideal-modular-rur",
             Method::PoissonRur => "critical-ideal-poisson-rur",
             Method::LevelSets => "level-sets",
+            Method::SquareFreePart => "square-free-part",
             Method::Constant => "constant",
             Method::None => "none",
         }
@@ -283,6 +293,8 @@ pub(crate) enum Analysis {
     Poisson(Box<poisson::PoissonAnalysis>),
     /// deg S ≥ 3 with curves of critical points (symmetric inputs).
     LevelSets(critical::LevelSetAnalysis),
+    /// S with a repeated factor, from its square-free decomposition.
+    NonReduced(Box<nonreduced::NonReducedAnalysis>),
     /// S is a non-zero constant.
     Constant,
     /// No computation finished.
@@ -335,6 +347,7 @@ impl Certificate {
             Analysis::ModularRur(_) => Method::ModularRur,
             Analysis::Poisson(_) => Method::PoissonRur,
             Analysis::LevelSets(_) => Method::LevelSets,
+            Analysis::NonReduced(_) => Method::SquareFreePart,
             Analysis::Constant => Method::Constant,
             Analysis::Undecided => Method::None,
         }
@@ -533,6 +546,15 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly, values: bool) -> Result<Tan
     }
     let e = e.clone();
     let deg = surface.total_degree().unwrap_or(0);
+    // a repeated factor makes the critical set of S positive-dimensional:
+    // S is decided from its square-free decomposition (a square-free S,
+    // the usual case, is recognised by one modular specialisation per
+    // variable and goes on unchanged)
+    if deg >= 3
+        && let Some(sf) = crate::poly::sqfree::repeated_factors(surface)
+    {
+        return nonreduced::decide(&e, surface, &sf);
+    }
     // deg S ≤ 2: the pencil discriminant decides generic pairs; the others
     // go to the separable route when it applies, else the λ-parametrisation
     let quadric_form = if deg == 1 || deg == 2 {
@@ -599,83 +621,136 @@ fn decide_validated(e: &Ellipsoid, surface: &QMPoly, values: bool) -> Result<Tan
             Analysis::Lambda(an),
             WitnessFinder::Lambda,
         )
-    } else if let Ok(an) = poisson::analyze(&e, surface, values) {
+    } else {
+        match critical_routes(
+            &e,
+            surface,
+            &critical::CriticalSystem::of(surface, &e),
+            values,
+        )? {
+            Routed::Values(f) => (f.values, f.nonreal, f.judging, f.method, f.finder),
+            Routed::Signs(an) => return Ok(finish_signs(&e, surface, *an)),
+            Routed::Undecided(why) => return Ok(undecided(&e, surface, why)),
+        }
+    };
+    Ok(finish(
+        &e, surface, values, nonreal, judging, method, witness_fn,
+    ))
+}
+
+/// What the routes of degree ≥ 3 found: the attained values, the roots of
+/// D(u) that are not attained (see [`classify`]), D(u), the analysis.
+pub(crate) struct Found {
+    pub(crate) values: Vec<RealAlg>,
+    pub(crate) nonreal: Vec<RealAlg>,
+    pub(crate) judging: ZPoly,
+    pub(crate) method: Analysis,
+    pub(crate) finder: WitnessFinder,
+}
+
+/// The outcome of [`critical_routes`].
+pub(crate) enum Routed {
+    /// The critical values.
+    Values(Found),
+    /// The signs of S at the real critical points only (verdict only).
+    Signs(Box<poisson::PoissonAnalysis>),
+    /// No certificate (the reason).
+    Undecided(String),
+}
+
+/// The critical values of S on E from the zeros of E and the minors of
+/// `sys` (degree ≥ 3, no special structure): the Poisson route, the
+/// multi-modular RUR, then the exact Gröbner route (finite critical set or
+/// level sets).
+pub(crate) fn critical_routes(
+    e: &Ellipsoid,
+    surface: &QMPoly,
+    sys: &critical::CriticalSystem,
+    values: bool,
+) -> Result<Routed, Error> {
+    if let Ok(an) = poisson::analyze_minors(e, surface, &sys.minors, values) {
         let Some(j) = an.judging.clone() else {
-            return Ok(finish_signs(&e, surface, an));
+            return Ok(Routed::Signs(Box::new(an)));
         };
         let (vals, nonreal) = if an.separates() {
             (an.real_values(), vec![])
         } else {
             split_values(&an.real_values(), &j)
         };
-        (
-            vals,
+        return Ok(Routed::Values(Found {
+            values: vals,
             nonreal,
-            j,
-            Analysis::Poisson(Box::new(an)),
-            WitnessFinder::Poisson,
-        )
-    } else if let Ok(an) = modular::analyze(&e, surface) {
+            judging: j,
+            method: Analysis::Poisson(Box::new(an)),
+            finder: WitnessFinder::Poisson,
+        }));
+    }
+    if let Ok(an) = modular::analyze(e, surface, &sys.minors) {
         let (vals, nonreal) = split_values(&an.real_values(), &an.judging);
         let j = an.judging.clone();
-        (
-            vals,
+        return Ok(Routed::Values(Found {
+            values: vals,
             nonreal,
-            j,
-            Analysis::ModularRur(an),
-            WitnessFinder::Modular,
-        )
-    } else {
-        let outcome = match critical::analyze(&e, surface) {
-            Ok(o) => o,
-            Err(err) if err.kind() == ErrorKind::Internal => {
-                return Ok(undecided(&e, surface, err.message().to_string()));
-            }
-            Err(other) => return Err(other),
-        };
-        match outcome {
-            critical::Outcome::Finite(an) => {
-                let real: Vec<RealAlg> = an.real_values();
-                let (vals, nonreal) = split_values(&real, &an.judging);
-                let j = an.judging.clone();
-                (
-                    vals,
-                    nonreal,
-                    j,
-                    Analysis::CriticalIdeal(an),
-                    WitnessFinder::Critical,
-                )
-            }
-            critical::Outcome::Curves(ls) => {
-                let j = ls.judging.clone();
-                let vals = ls.attained.clone();
-                // only the roots of D(u) outside [ν, μ] are known not to be
-                // attained at real points; those between are unclassified
-                // (named in a note by `finish`)
-                let (vals, roots) = split_values(&vals, &j);
-                let nonreal = match (vals.first(), vals.last()) {
-                    (Some(lo), Some(hi)) => roots
-                        .into_iter()
-                        .filter(|r| {
-                            r.cmp_exact(lo) == Ordering::Less
-                                || r.cmp_exact(hi) == Ordering::Greater
-                        })
-                        .collect(),
-                    _ => roots,
-                };
-                (
-                    vals,
-                    nonreal,
-                    j,
-                    Analysis::LevelSets(ls),
-                    WitnessFinder::Level,
-                )
+            judging: j,
+            method: Analysis::ModularRur(an),
+            finder: WitnessFinder::Modular,
+        }));
+    }
+    let outcome = match critical::analyze_system(e, surface, sys) {
+        Ok(o) => o,
+        Err(err) if err.kind() == ErrorKind::Internal => {
+            return Ok(Routed::Undecided(err.message().to_string()));
+        }
+        Err(other) => return Err(other),
+    };
+    Ok(Routed::Values(match outcome {
+        critical::Outcome::Finite(an) => {
+            let real: Vec<RealAlg> = an.real_values();
+            let (vals, nonreal) = split_values(&real, &an.judging);
+            let j = an.judging.clone();
+            Found {
+                values: vals,
+                nonreal,
+                judging: j,
+                method: Analysis::CriticalIdeal(an),
+                finder: WitnessFinder::Critical,
             }
         }
+        critical::Outcome::Curves(ls) => {
+            let j = ls.judging.clone();
+            let (vals, nonreal) = classify(&ls.attained, &j, true);
+            Found {
+                values: vals,
+                nonreal,
+                judging: j,
+                method: Analysis::LevelSets(ls),
+                finder: WitnessFinder::Level,
+            }
+        }
+    }))
+}
+
+/// [`split_values`], and with `curves` (only ν and μ are known among the
+/// attained values) only the roots of D(u) outside [ν, μ] count as known
+/// not to be attained at real points; those between are unclassified
+/// (named in a note by `finish`).
+pub(crate) fn classify(
+    attained: &[RealAlg],
+    judging: &ZPoly,
+    curves: bool,
+) -> (Vec<RealAlg>, Vec<RealAlg>) {
+    let (vals, roots) = split_values(attained, judging);
+    if !curves {
+        return (vals, roots);
+    }
+    let nonreal = match (vals.first(), vals.last()) {
+        (Some(lo), Some(hi)) => roots
+            .into_iter()
+            .filter(|r| r.cmp_exact(lo) == Ordering::Less || r.cmp_exact(hi) == Ordering::Greater)
+            .collect(),
+        _ => roots,
     };
-    Ok(finish(
-        &e, surface, values, nonreal, judging, method, witness_fn,
-    ))
+    (vals, nonreal)
 }
 
 /// The answer when no certificate could be produced (never a guess).
@@ -720,7 +795,7 @@ impl TangentReport {
 }
 
 #[derive(Clone, Copy, Debug)]
-enum WitnessFinder {
+pub(crate) enum WitnessFinder {
     None,
     Pencil,
     Lambda,
@@ -729,6 +804,7 @@ enum WitnessFinder {
     Modular,
     Poisson,
     Level,
+    NonReduced,
 }
 
 /// Sorts and deduplicates the attained values, and lists the real roots of
@@ -760,12 +836,20 @@ fn finish(
     wf: WitnessFinder,
 ) -> TangentReport {
     let mut notes = Vec::new();
-    if matches!(method, Analysis::LevelSets(_)) {
+    // the analysis that found the critical points (a non-reduced S: its
+    // factor's or its G-system's)
+    let inner = match &method {
+        Analysis::NonReduced(an) => an.inner().unwrap_or(&method),
+        m => m,
+    };
+    if matches!(inner, Analysis::LevelSets(_)) {
         let between: Vec<String> = match (values.first(), values.last()) {
             (Some(lo), Some(hi)) => RealAlg::roots_of(&judging)
                 .iter()
                 .filter(|r| {
-                    r.cmp_exact(lo) == Ordering::Greater && r.cmp_exact(hi) == Ordering::Less
+                    r.cmp_exact(lo) == Ordering::Greater
+                        && r.cmp_exact(hi) == Ordering::Less
+                        && !values.iter().any(|v| v.cmp_exact(r) == Ordering::Equal)
                 })
                 .map(|r| r.approx(12))
                 .collect(),
@@ -778,7 +862,7 @@ fn finish(
         };
         notes.push(format!("curves of critical points: ν and μ are exact; critical values strictly between them are not classified{listed}"));
     }
-    if let Analysis::Separable(sa) = &method
+    if let Analysis::Separable(sa) = inner
         && sa.has_curves()
     {
         notes.push("curves of critical points on a branch with two free coordinates; every critical value is exact".into());
@@ -951,6 +1035,7 @@ fn witness_for(
         (Analysis::ModularRur(an), WitnessFinder::Modular) => an.witness(value, e, s, want),
         (Analysis::Poisson(an), WitnessFinder::Poisson) => an.witness(value, e, s, want),
         (Analysis::LevelSets(ls), WitnessFinder::Level) => ls.witness(value, e, s, want),
+        (Analysis::NonReduced(an), WitnessFinder::NonReduced) => an.witness(value, e, s, want),
         (Analysis::Constant, _) => {
             let c = e.center.clone();
             let mut p = c.clone();

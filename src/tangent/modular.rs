@@ -14,7 +14,6 @@
 //! certificate; symmetric inputs (equal values, curves, multiple points)
 //! are declined and go to the exact route.
 
-use super::critical::cross_gradients;
 use super::ellipsoid::Ellipsoid;
 use super::witness::{WitnessPoint, witness_at_value};
 use crate::number::{Q, QSqrt, q};
@@ -239,11 +238,15 @@ fn critical_conic(e: &QMPoly, s: &QMPoly, v: usize) -> Result<Option<CriticalCon
 }
 
 /// The modular analysis, or why it does not apply (the caller then uses the
-/// exact route of [`super::critical`]).
-pub fn analyze(e: &Ellipsoid, s: &QMPoly) -> Result<ModularAnalysis, Declined> {
-    let cross = cross_gradients(s, &e.poly);
+/// exact route of [`super::critical`]); `cross` are the minors of the critical system (`∇S × ∇E` for S as
+/// given; see [`super::critical::CriticalSystem`]).
+pub fn analyze(
+    e: &Ellipsoid,
+    s: &QMPoly,
+    cross: &[QMPoly; 3],
+) -> Result<ModularAnalysis, Declined> {
     // a monomial dividing the three minors: conics of critical points
-    let (conics, minors) = split_conics(&e.poly, s, &cross);
+    let (conics, minors) = split_conics(&e.poly, s, cross);
     let mut gens = vec![e.poly.clone()];
     gens.extend(minors);
     let form = |l: &[i64; 3]| linear_form(&l.map(|x| q(x, 1)));

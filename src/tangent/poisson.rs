@@ -21,7 +21,6 @@
 //! real critical point is identified among the real roots of D by interval
 //! evaluation of S on an enclosure of the point.
 
-use super::critical::cross_gradients;
 use super::ellipsoid::Ellipsoid;
 use super::witness::{WitnessPoint, find_witness, witness_at_value};
 use crate::elim::f4::zmpoly_mod;
@@ -333,16 +332,28 @@ fn combine(v: [i64; 3], m: &[QMPoly; 3]) -> QMPoly {
 
 /// The Poisson analysis, or why it does not apply (the caller then uses
 /// another route).
+#[cfg(test)]
 pub fn analyze(e: &Ellipsoid, s: &QMPoly, values: bool) -> Result<PoissonAnalysis, Declined> {
-    let m = cross_gradients(s, &e.poly);
+    analyze_minors(e, s, &super::critical::cross_gradients(s, &e.poly), values)
+}
+
+/// [`analyze`] with the minors `m` of the critical system given (`∇S × ∇E`
+/// for S as given; see [`super::critical::CriticalSystem`]): the argument
+/// above holds for any m of the form `F × ∇E`, with `n·F` for `n·∇S`.
+pub fn analyze_minors(
+    e: &Ellipsoid,
+    s: &QMPoly,
+    m: &[QMPoly; 3],
+    values: bool,
+) -> Result<PoissonAnalysis, Declined> {
     let (ez, _) = e.poly.to_primitive_z();
     let grad_e = crate::geom::gradient(&e.poly);
     let mut last = Declined("no direction tried".into());
     for n in DIRECTIONS {
         crate::budget::check_now();
         let (a, b) = orthogonal_basis(n);
-        let ma = combine(a, &m);
-        let mb = combine(b, &m);
+        let ma = combine(a, m);
+        let mb = combine(b, m);
         if ma.is_zero() || mb.is_zero() {
             continue;
         }
@@ -357,7 +368,7 @@ pub fn analyze(e: &Ellipsoid, s: &QMPoly, values: bool) -> Result<PoissonAnalysi
                 continue;
             }
         };
-        match finish(&e.poly, s, n, &m, &grad_e, gens, &sys, rur, values) {
+        match finish(&e.poly, s, n, m, &grad_e, gens, &sys, rur, values) {
             Ok(an) => return Ok(an),
             Err(d) => last = d,
         }

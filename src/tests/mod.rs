@@ -26,6 +26,7 @@ mod kernel_props;
 mod kernel_reference;
 mod natural;
 mod natural_whole;
+mod nonreduced;
 mod poisson;
 mod printing;
 mod tangent;

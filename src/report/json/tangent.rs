@@ -265,6 +265,25 @@ fn method_json(m: &Analysis) -> Value {
                 "resultant_elimination": Value::Null,
             })
         }
+        Analysis::NonReduced(an) => json!({
+            "method": "square-free-part",
+            "constant": crate::number::fmt_q(&an.constant),
+            "factors": an.factors.iter().map(|(t, k)| json!({
+                "factor": t.to_string_canonical(),
+                "multiplicity": k,
+            })).collect::<Vec<_>>(),
+            "factor_reports": an.factor_reports.iter().map(|(i, r)| json!({
+                "factor": i,
+                "report": tangent_json(r),
+            })).collect::<Vec<_>>(),
+            "field": an.field.as_ref().map(|f| f.field.iter().map(|g| g.to_string_canonical()).collect::<Vec<_>>()),
+            "critical_system": an.field.as_ref().map(|f| method_json(&f.analysis)),
+            "argument": if an.factors.len() == 1 {
+                "S = constant·T^k (T = factors[0], k its multiplicity, square-free): the critical points of S on E are the points of E on T = 0 (value 0; E meets T = 0 iff factor_reports[0] says intersect) and the critical points of T (value constant·v^k where T = v); E is connected, so S takes on E the values constant·v^k for v in [min T, max T]; judging_poly is the square-free part of Res_v(D_T(v), u − constant·v^k), times u when E meets T = 0"
+            } else {
+                "S = constant·∏ Tᵢ^kᵢ (factors, square-free, pairwise coprime): off S = 0, ∇S = constant·∏ Tᵢ^(kᵢ−1)·G with G = field = Σ kᵢ·(∏_(j≠i) Tⱼ)·∇Tᵢ, so the critical points of S on E are the points of E on the factors with kᵢ ≥ 2 (value 0; factor_reports decide whether E meets each) and the zeros of E = 0, G × ∇E = 0, solved by critical_system with the values of S (its minors are those of G × ∇E, not ∇S × ∇E); judging_poly is that system's, times u when E meets a repeated factor. When a factor is a multiple of E (its report is the only one, field is null), S = 0 on all of E"
+            },
+        }),
         Analysis::LevelSets(ls) => json!({
             "method": "level-sets",
             "levels": ls.levels.iter().map(|(q, ne)| json!({"level": crate::number::fmt_q(q), "real_points": ne})).collect::<Vec<_>>(),

@@ -76,7 +76,44 @@ pub fn tangent_human(r: &TangentReport) -> String {
     }
     let c = &r.certificate;
     s.push_str("certificate\n");
-    let method = match &c.method {
+    let method = method_human(&c.method);
+    s.push_str(&format!("  method               {method}\n"));
+    let vals: Vec<String> = c.critical_values.iter().map(|v| v.approx(12)).collect();
+    s.push_str(&format!("  real critical values {}\n", vals.join(", ")));
+    if !c.nonreal_point_values.is_empty() {
+        let v: Vec<String> = c
+            .nonreal_point_values
+            .iter()
+            .map(|v| v.approx(12))
+            .collect();
+        s.push_str(&format!(
+            "  roots of D(u) at non-real critical points (not attained): {}\n",
+            v.join(", ")
+        ));
+    }
+    if let Some(w) = &c.negative_witness {
+        s.push_str(&format!("  point of E with S < 0  {}\n", point_human(w)));
+    }
+    if let Some(w) = &c.positive_witness {
+        s.push_str(&format!("  point of E with S > 0  {}\n", point_human(w)));
+    }
+    if let Analysis::CriticalIdeal(an) = &c.method
+        && let Some(e) = &an.elimination
+    {
+        s.push_str(&format!(
+            "  resultant elimination (gcd of two orders) {}\n",
+            upoly_string(&e.gcd, U)
+        ));
+    }
+    for n in &c.notes {
+        s.push_str(&format!("  note: {n}\n"));
+    }
+    s
+}
+
+/// The computation behind the critical values, in one line.
+fn method_human(m: &Analysis) -> String {
+    match m {
         Analysis::Constant => "S is constant".to_string(),
         Analysis::Undecided => "none".to_string(),
         Analysis::Pencil(an) => format!(
@@ -206,43 +243,31 @@ pub fn tangent_human(r: &TangentReport) -> String {
                 }
             }
         ),
+        Analysis::NonReduced(an) => {
+            let inner = match (&an.field, an.factors.len()) {
+                (Some(f), _) => format!(
+                    "the critical points off S = 0 from E = 0, G × ∇E = 0 with G = ({}, {}, {}), by {}",
+                    f.field[0].to_string_canonical(),
+                    f.field[1].to_string_canonical(),
+                    f.field[2].to_string_canonical(),
+                    method_human(&f.analysis)
+                ),
+                (None, 1) => match an.factor_reports.first() {
+                    Some((_, r)) => format!(
+                        "the factor on E by {}",
+                        method_human(&r.certificate.method)
+                    ),
+                    None => String::new(),
+                },
+                (None, _) => "a factor is a multiple of E: S = 0 on all of E".to_string(),
+            };
+            format!("square-free part: S = {}; {inner}", an.product())
+        }
         Analysis::LevelSets(ls) => format!(
             "curves of critical points: {} level curves tested",
             ls.levels.len()
         ),
-    };
-    s.push_str(&format!("  method               {method}\n"));
-    let vals: Vec<String> = c.critical_values.iter().map(|v| v.approx(12)).collect();
-    s.push_str(&format!("  real critical values {}\n", vals.join(", ")));
-    if !c.nonreal_point_values.is_empty() {
-        let v: Vec<String> = c
-            .nonreal_point_values
-            .iter()
-            .map(|v| v.approx(12))
-            .collect();
-        s.push_str(&format!(
-            "  roots of D(u) at non-real critical points (not attained): {}\n",
-            v.join(", ")
-        ));
     }
-    if let Some(w) = &c.negative_witness {
-        s.push_str(&format!("  point of E with S < 0  {}\n", point_human(w)));
-    }
-    if let Some(w) = &c.positive_witness {
-        s.push_str(&format!("  point of E with S > 0  {}\n", point_human(w)));
-    }
-    if let Analysis::CriticalIdeal(an) = &c.method
-        && let Some(e) = &an.elimination
-    {
-        s.push_str(&format!(
-            "  resultant elimination (gcd of two orders) {}\n",
-            upoly_string(&e.gcd, U)
-        ));
-    }
-    for n in &c.notes {
-        s.push_str(&format!("  note: {n}\n"));
-    }
-    s
 }
 
 impl std::fmt::Display for TangentReport {
