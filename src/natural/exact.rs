@@ -50,6 +50,38 @@ impl Exact {
         }
     }
 
+    /// The value as a double with a proven bound on its error:
+    /// `|self − v| ≤ b` for `(v, b)`, with `b` a few units in the last place
+    /// of `v` (`(±∞, ∞)` beyond the range of doubles).
+    ///
+    /// ```
+    /// use quadsect::natural::{classify_str, Component};
+    /// let r = classify_str("sphere center=0,0,0 radius2=2", "sphere center=1,0,0 radius2=2").unwrap();
+    /// let Component::Conic { axes2, .. } = &r.components()[0] else { panic!() };
+    /// let (v, b) = axes2[0].to_f64_bounded(); // the circle's radius², 7/4
+    /// assert!((v - 1.75).abs() <= b && b < 1e-15);
+    /// ```
+    pub fn to_f64_bounded(&self) -> (f64, f64) {
+        match self {
+            Exact::Quad(x) => x.to_f64_bounded(),
+            Exact::Alg(a) => {
+                let mut c = a.clone();
+                c.refine_relative(64);
+                let (lo, hi) = c.interval();
+                crate::number::xball::XBall::from_interval(&lo, &hi)
+                    .to_f64()
+                    .unwrap_or((
+                        if a.signum() < 0 {
+                            f64::NEG_INFINITY
+                        } else {
+                            f64::INFINITY
+                        },
+                        f64::INFINITY,
+                    ))
+            }
+        }
+    }
+
     /// Exact sign.
     pub fn signum(&self) -> i32 {
         match self {

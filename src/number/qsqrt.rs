@@ -264,6 +264,46 @@ impl QSqrt {
         &self.a + &self.b * root
     }
 
+    /// The value as a double with a proven bound on its error:
+    /// `|self − v| ≤ b` for `(v, b)`, the bound within a few units in the
+    /// last place of `v` however close to 0 the value is (`(±∞, ∞)` beyond
+    /// the range of doubles).  Cancellation in `a + b√d` is met by rational
+    /// bounds on `√d` of growing precision.
+    pub fn to_f64_bounded(&self) -> (f64, f64) {
+        use super::xball::XBall;
+        let ball = if self.b.is_zero() {
+            XBall::from_q(&self.a)
+        } else {
+            let fast = XBall::from_q(&self.d)
+                .sqrt()
+                .map(|r| XBall::from_q(&self.a).add(&XBall::from_q(&self.b).mul(&r)));
+            match fast {
+                Some(b) if b.r * 1_099_511_627_776.0 < b.m.abs() => b,
+                _ => {
+                    // rational enclosures of √d until the sum is tight
+                    let mut bits = 128u32;
+                    loop {
+                        let (lo, hi) = super::sqrt_bounds(&self.d, bits);
+                        let (x, y) = (&self.a + &self.b * &lo, &self.a + &self.b * &hi);
+                        let b = XBall::from_interval(&x.clone().min(y.clone()), &x.max(y));
+                        if b.r * 1_099_511_627_776.0 < b.m.abs() || bits > 1 << 16 {
+                            break b;
+                        }
+                        bits *= 2;
+                    }
+                }
+            }
+        };
+        ball.to_f64().unwrap_or((
+            if self.signum() < 0 {
+                f64::NEG_INFINITY
+            } else {
+                f64::INFINITY
+            },
+            f64::INFINITY,
+        ))
+    }
+
     /// Decimal approximation with `digits` significant digits, correctly
     /// rounded, however close to 0 the value is (a + b√d may cancel to far
     /// below 2^-1000): approximations within `2^-bits` are taken with

@@ -34,14 +34,16 @@ fn pow2(k: i64) -> f64 {
 }
 
 /// The leading 64 bits of `|z|` as a double (truncated, then rounded:
-/// relative error below `2^-52`) and the exponent of the scaling.
-fn top(z: &Z) -> (f64, i64) {
+/// relative error below `2^-52`), the exponent of the scaling, and whether
+/// it is exact (`z` has at most 53 significant bits).
+fn top(z: &Z) -> (f64, i64, bool) {
     let bits = z.bits() as i64;
     let shift = (bits - 64).max(0);
     let t = (z.magnitude() >> shift as usize)
         .to_u64()
         .unwrap_or(u64::MAX) as f64;
-    (t, shift)
+    let exact = bits - z.trailing_zeros().unwrap_or(0) as i64 <= 53;
+    (t, shift, exact)
 }
 
 impl XBall {
@@ -59,21 +61,36 @@ impl XBall {
         if x.is_zero() {
             return XBall::zero();
         }
-        let (n, en) = top(x.numer());
-        let (d, ed) = top(x.denom());
+        let (n, en, xn) = top(x.numer());
+        let (d, ed, xd) = top(x.denom());
         let m = n / d;
         let m = if x.numer().sign() == num_bigint::Sign::Minus {
             -m
         } else {
             m
         };
-        // two truncations (< 2^-63 each), two roundings to 53 bits, a division
+        // a truncation and a rounding per inexact part (2u each), a division
+        // (u; none by a power of two)
+        let pow2_den = x.denom().bits() - 1 == x.denom().trailing_zeros().unwrap_or(0);
+        let units = 2 * u32::from(!xn) + 2 * u32::from(!xd) + u32::from(!pow2_den);
         XBall {
             m,
-            r: 6.0 * U * m.abs() * INFL,
+            r: f64::from(units) * U * m.abs() * INFL,
             e: en - ed,
         }
         .normalized()
+    }
+
+    /// A ball holding the closed interval `[lo, hi]`.
+    pub fn from_interval(lo: &Q, hi: &Q) -> XBall {
+        let two = Q::from_integer(2.into());
+        let mid = XBall::from_q(&((lo + hi) / &two));
+        let rad = XBall::from_q(&((hi - lo) / &two));
+        mid.add(&XBall {
+            m: 0.0,
+            r: rad.m.abs() + rad.r,
+            e: rad.e,
+        })
     }
 
     /// The same ball with the midpoint's magnitude brought near 1 (an exact

@@ -9,7 +9,59 @@ use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 use serde_json::{Value, json};
 
+/// `[value, bound]`: the double nearest the exact value's enclosure and a
+/// proven bound on its error (`|x − value| ≤ bound`).
+fn f64_json(x: &Exact) -> Value {
+    let (v, b) = x.to_f64_bounded();
+    json!([v, b])
+}
+
+fn f64_point(p: &EPoint) -> Value {
+    Value::Array(p.iter().map(f64_json).collect())
+}
+
+/// The certified doubles of a component's numeric fields (the same fields
+/// as printed exactly, `[value, bound]` each).
+fn component_f64_json(c: &Component) -> Value {
+    match c {
+        Component::Conic {
+            plane,
+            center,
+            vertex,
+            axes2,
+            axis_dirs,
+            focal2,
+            ..
+        } => {
+            let (n, o) = normalize_plane(plane);
+            json!({
+                "plane": {"normal": f64_point(&n), "offset": f64_json(&o)},
+                "center": center.as_ref().map(f64_point),
+                "vertex": vertex.as_ref().map(f64_point),
+                "semi_axes2": axes2.iter().map(f64_json).collect::<Vec<_>>(),
+                "axis_directions": axis_dirs.iter().map(|d| f64_point(&normalize_direction(d))).collect::<Vec<_>>(),
+                "focal_length2": focal2.as_ref().map(f64_json),
+            })
+        }
+        Component::Line {
+            point, direction, ..
+        } => json!({"point": f64_point(point), "direction": f64_point(direction)}),
+        Component::Point { point, .. } => json!({"point": f64_point(point)}),
+        Component::Curve { singular, .. } => json!({
+            "singular_points": singular.iter().map(|p| f64_point(&p.point)).collect::<Vec<_>>(),
+        }),
+    }
+}
+
 fn component_json(c: &Component) -> Value {
+    let mut v = component_exact_json(c);
+    if let Value::Object(m) = &mut v {
+        m.insert("f64".into(), component_f64_json(c));
+    }
+    v
+}
+
+fn component_exact_json(c: &Component) -> Value {
     match c {
         Component::Conic {
             plane,
