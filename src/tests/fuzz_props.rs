@@ -105,6 +105,51 @@ fn fuzzer_slow_inputs_end_within_the_budget() {
     }
 }
 
+/// Found by libFuzzer (`fuzz/`, parse_poly: the first input ran 1.5 s
+/// under a 0.5 s budget): a product of polynomials with large coefficients
+/// read the clock every 64 rows, and ran up to 64 rows past its deadline
+/// (`poly::mpoly` now reads it every row when rows are large).  The second
+/// input needs minutes without a budget.
+#[test]
+fn fuzzer_slow_parses_end_within_the_budget() {
+    for s in ["(9 + y/7/ 9)^416 -/8 \u{f}16 -^1", "(9 + y/7/9)^2000"] {
+        let budget = Budget::default().with_time_limit(Some(LIMIT));
+        let t0 = Instant::now();
+        let r = crate::budget::run(&budget, || parse_poly(s).map(|p| p.len()));
+        let took = t0.elapsed();
+        assert!(took <= LIMIT + SLACK, "{s:?} took {took:?}");
+        assert!(r.is_err() || !s.ends_with("2000"), "{s:?}: {r:?}");
+    }
+}
+
+/// Found by libFuzzer (`fuzz/`, parse_poly: `(2^3)^77773 -0-1_…` ran
+/// 1.2–1.6 s under a 0.5 s budget in the sanitizer build): one step of a
+/// sum of huge integers is a gcd (num-bigint's binary gcd, quadratic in the
+/// bits even against 1: about 0.15 s natively for 233 000 bits, five times
+/// that under AddressSanitizer).  That is the budget's documented
+/// granularity, one arithmetic operation, and not a missed check: the sum
+/// reads the clock before each large step (`poly::ring`), so a run stops
+/// after the step running at its deadline, not several steps later.
+#[test]
+fn a_sum_of_huge_integers_stops_a_step_after_its_deadline() {
+    let one = "8^77773 - 1";
+    let t0 = Instant::now();
+    let _ = parse_poly(one).unwrap();
+    let step = t0.elapsed();
+    let six = [one; 6].join(" + ");
+    let limit = Duration::from_millis(1);
+    let t0 = Instant::now();
+    let r = crate::budget::run(&Budget::default().with_time_limit(Some(limit)), || {
+        parse_poly(&six).map(|p| p.len())
+    });
+    let took = t0.elapsed();
+    assert!(r.is_err(), "six steps end after the deadline: {r:?}");
+    assert!(
+        took <= limit + 3 * step + Duration::from_millis(20),
+        "{took:?} with a limit of {limit:?} and steps of {step:?}"
+    );
+}
+
 /// Inputs found by libFuzzer (`fuzz/`): huge constants must either be
 /// rejected with a size-limit error or print to text that parses back.
 #[test]
