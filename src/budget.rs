@@ -417,7 +417,7 @@ pub fn check_now() {
         {
             return Some(Exhausted::new(
                 Limit::Memory,
-                format!("memory limit of {} MiB", limit >> 20),
+                format!("memory limit of {}", fmt_mib(limit)),
             ));
         }
         None
@@ -453,9 +453,9 @@ pub fn check_size(what: &str, terms: usize, bits: u64) {
                 return Some(Exhausted::new(
                     Limit::Size,
                     format!(
-                        "{what} would need about {} MiB ({terms} terms of up to {bits} bits); the memory limit is {} MiB",
-                        bytes >> 20,
-                        limit >> 20
+                        "{what} would need about {} ({terms} terms of up to {bits} bits); the memory limit is {}",
+                        fmt_mib(bytes.min(usize::MAX as u128) as usize),
+                        fmt_mib(limit)
                     ),
                 ));
             }
@@ -503,9 +503,35 @@ fn fmt_secs(t: Duration) -> String {
     }
 }
 
+/// A number of bytes in MiB: whole MiB as an integer (`1024 MiB`), a
+/// fraction to three decimals (`0.5 MiB`, as `--memory-limit 0.5` or a
+/// batch line's `memory_limit` may give), or bytes below that.
+fn fmt_mib(bytes: usize) -> String {
+    if bytes.is_multiple_of(1 << 20) {
+        return format!("{} MiB", bytes >> 20);
+    }
+    let mib = format!("{:.3}", bytes as f64 / 1048576.0);
+    let mib = mib.trim_end_matches('0').trim_end_matches('.');
+    if mib == "0" {
+        format!("{bytes} bytes")
+    } else {
+        format!("{mib} MiB")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn memory_sizes_print_in_mib() {
+        assert_eq!(fmt_mib(1 << 30), "1024 MiB");
+        assert_eq!(fmt_mib(0), "0 MiB");
+        assert_eq!(fmt_mib(512 << 10), "0.5 MiB");
+        assert_eq!(fmt_mib(1048), "0.001 MiB");
+        assert_eq!(fmt_mib((3 << 20) + 1), "3 MiB");
+        assert_eq!(fmt_mib(100), "100 bytes");
+    }
 
     #[test]
     fn unlimited_and_outside_never_fail() {
