@@ -191,6 +191,30 @@ impl Budget {
         self
     }
 
+    /// This budget with its time and memory limits lowered to `time` and
+    /// `memory` where those are smaller (`None`: that limit stays as it
+    /// is): a limit can only be tightened here, never loosened.  A memory
+    /// limit also brings the size limits down to at most their defaults
+    /// ([`DEFAULT_MAX_TERMS`], [`DEFAULT_MAX_BITS`]), which a budget
+    /// without a memory limit may have lifted: the result is the tighter
+    /// of this budget and `Budget::default()` with these limits (the
+    /// per-line `time_limit` and `memory_limit` of the batch protocol).
+    pub(crate) fn tightened(mut self, time: Option<Duration>, memory: Option<usize>) -> Budget {
+        fn min<T: Ord>(a: Option<T>, b: Option<T>) -> Option<T> {
+            match (a, b) {
+                (Some(a), Some(b)) => Some(a.min(b)),
+                (a, b) => a.or(b),
+            }
+        }
+        self.time = min(self.time, time);
+        if memory.is_some() {
+            self.memory = min(self.memory, memory);
+            self.max_terms = min(self.max_terms, Some(DEFAULT_MAX_TERMS));
+            self.max_bits = min(self.max_bits, Some(DEFAULT_MAX_BITS));
+        }
+        self
+    }
+
     /// The wall-time limit.
     pub fn time_limit(&self) -> Option<Duration> {
         self.time
@@ -531,6 +555,36 @@ mod tests {
         assert_eq!(fmt_mib(1048), "0.001 MiB");
         assert_eq!(fmt_mib((3 << 20) + 1), "3 MiB");
         assert_eq!(fmt_mib(100), "100 bytes");
+    }
+
+    #[test]
+    fn tightened_only_lowers_limits() {
+        let s = Duration::from_secs;
+        let b = Budget::default().tightened(Some(s(2)), None);
+        assert_eq!(b.time_limit(), Some(s(2)));
+        assert_eq!(b.memory_limit(), Some(DEFAULT_MEMORY_LIMIT));
+        // never loosened
+        let b = b.tightened(Some(s(60)), Some(usize::MAX));
+        assert_eq!(b.time_limit(), Some(s(2)));
+        assert_eq!(b.memory_limit(), Some(DEFAULT_MEMORY_LIMIT));
+        let b = Budget::default().tightened(None, Some(64 << 20));
+        assert_eq!(b.time_limit(), Some(DEFAULT_TIME_LIMIT));
+        assert_eq!(b.memory_limit(), Some(64 << 20));
+        // no limits: each given one applies; a memory limit brings the
+        // default size limits back, as `--memory-limit MiB` has them
+        let none = Budget::unlimited();
+        let b = none.clone().tightened(Some(Duration::ZERO), None);
+        assert_eq!(b.time_limit(), Some(Duration::ZERO));
+        assert_eq!(b.size_limits(), (None, None));
+        let b = none.tightened(None, Some(1 << 20));
+        assert_eq!((b.time_limit(), b.memory_limit()), (None, Some(1 << 20)));
+        assert_eq!(
+            b.size_limits(),
+            (Some(DEFAULT_MAX_TERMS), Some(DEFAULT_MAX_BITS))
+        );
+        let small = Budget::default().with_size_limits(Some(10), Some(20));
+        let b = small.tightened(None, Some(1 << 20));
+        assert_eq!(b.size_limits(), (Some(10), Some(20)));
     }
 
     #[test]
