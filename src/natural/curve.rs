@@ -814,22 +814,33 @@ impl Rulings {
             };
             (None, root, t)
         };
-        let approx: Vec<(f64, f64)> = (0..3)
-            .map(|i| {
-                ball(&p0[i])
-                    .add(&t_ball.mul(&ball(&dir[i])))
-                    .to_f64()
-                    .ok_or_else(|| Error::internal("a curve point out of the range of doubles"))
-            })
-            .collect::<Result<_, _>>()?;
+        let balls: [XBall; 3] =
+            std::array::from_fn(|i| ball(&p0[i]).add(&t_ball.mul(&ball(&dir[i]))));
         let out = |v: &[Zf; 3]| -> [QSqrt; 3] { std::array::from_fn(|i| v[i].to_qsqrt(&d)) };
-        Ok(CurvePoint {
+        let mut point = CurvePoint {
             ruling_point: out(&p0),
             ruling_direction: out(&dir),
             quadratic: [qa.to_qsqrt(&d), qb.to_qsqrt(&d), qc.to_qsqrt(&d)],
             root,
             t: t_exact,
-            approx: [approx[0], approx[1], approx[2]],
-        })
+            approx: [(0.0, 0.0); 3],
+        };
+        // a coordinate that cancels (P₀ᵢ + t·dᵢ near 0 against its terms)
+        // comes from its exact value, so that every bound is relative
+        let mut exact = None;
+        for (i, b) in balls.iter().enumerate() {
+            point.approx[i] = match b.to_f64() {
+                Some(vb) if tight(b) => vb,
+                _ => {
+                    let e = exact.get_or_insert_with(|| point.exact());
+                    let vb = e[i].to_f64_bounded();
+                    if !vb.1.is_finite() {
+                        return Err(Error::internal("a curve point out of the range of doubles"));
+                    }
+                    vb
+                }
+            };
+        }
+        Ok(point)
     }
 }

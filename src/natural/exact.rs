@@ -187,6 +187,41 @@ pub fn normalize_direction(d: &EPoint) -> EPoint {
     std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)))
 }
 
+/// A direction scaled by a positive rational so that its coordinates,
+/// all in one field Q(√d), have coprime integer parts `a`, `b` (the
+/// orientation kept: a parabola's axis points into it); directions with
+/// a coordinate outside a common Q(√d) unchanged.  Constructions over Z
+/// leave directions with products of the inputs' denominators in them
+/// (10³⁰⁰ for 53-bit inputs); this keeps them the size of the inputs.
+pub(crate) fn primitive_direction(v: &EPoint) -> EPoint {
+    let mut field: Option<&Q> = None;
+    let mut parts: Vec<&Q> = Vec::with_capacity(6);
+    for c in v {
+        let Exact::Quad(x) = c else { return v.clone() };
+        if !x.is_rational() {
+            match field {
+                Some(d) if d != &x.d => return v.clone(),
+                _ => field = Some(&x.d),
+            }
+        }
+        parts.push(&x.a);
+        parts.push(&x.b);
+    }
+    let l = crate::number::denom_lcm(parts.iter().copied());
+    let mut g = BigInt::zero();
+    for q in &parts {
+        g = num_integer::Integer::gcd(&g, &(q.numer() * (&l / q.denom())));
+    }
+    if g.is_zero() {
+        return v.clone();
+    }
+    let k = Q::new(l, g);
+    std::array::from_fn(|i| match &v[i] {
+        Exact::Quad(x) => Exact::Quad(QSqrt::new(&x.a * &k, &x.b * &k, x.d.clone())),
+        other => other.clone(),
+    })
+}
+
 /// Text of a point.
 pub fn epoint_text(p: &EPoint) -> String {
     format!(
