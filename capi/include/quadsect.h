@@ -277,14 +277,18 @@ typedef int32_t qs_conic_kind;
 
 /**
  * A real number as a double with a proven bound on its error: the exact
- * value `x` satisfies `|x − value| ≤ bound`.  A rational `x` is rounded
+ * value `x` satisfies `|x − value| ≤ bound` (the double arithmetic of
+ * the check is the caller's: `value − bound ≤ x ≤ value + bound` holds
+ * for the real numbers these doubles denote).  A rational `x` is rounded
  * to the nearest double: `bound` is 0 when `x` is that double, otherwise
  * one unit in the last place; an irrational `x` (`a + b√d`, or a root of
  * a higher-degree polynomial) is within a few units in the last place
- * (the `[value, bound]` pairs of the JSON's `f64` blocks); beyond the
- * range of doubles `value` is ±infinity and `bound` infinity.
- * A field that does not apply (a parabola's centre, an ellipse's focal
- * length², an unused array entry) is `{NaN, NaN}`.
+ * (the `[value, bound]` pairs of the JSON's `f64` blocks); a curve's
+ * branch point within about 1e-10 relative.  Beyond the range of doubles
+ * `value` is ±infinity and `bound` infinity (possible for coordinates
+ * only: directions and planes are scaled into range).  A field that does
+ * not apply (a parabola's semi-axes, an ellipse's focal length², an
+ * unused array entry) is `{NaN, NaN}`.
  */
 typedef struct qs_ball {
     /**
@@ -298,8 +302,11 @@ typedef struct qs_ball {
 } qs_ball;
 
 /**
- * A conic in its plane `normal · P = offset` (a plane with rational
- * coefficients scaled to primitive integers, as in the JSON).
+ * A conic in its plane `normal · P = offset`.  The plane is the JSON's
+ * (rational coefficients scaled to primitive integers), except that a
+ * plane or direction whose numbers would lie beyond the range of doubles
+ * is multiplied by a power of two (exactly) so that its largest entry is
+ * near 1.
  */
 typedef struct qs_conic {
     /**
@@ -311,7 +318,7 @@ typedef struct qs_conic {
      */
     int32_t is_double;
     /**
-     * The plane's normal (rational normals scaled to primitive integers).
+     * The plane's normal (not of unit length).
      */
     struct qs_ball normal[3];
     /**
@@ -342,8 +349,9 @@ typedef struct qs_conic {
     uint32_t n_axis_dirs;
     /**
      * The directions of the semi-axes in the same order (any length;
-     * rational ones scaled to primitive integers), or `axis_dirs[0]`
-     * the axis of a parabola; unset entries are `{NaN, NaN}`.
+     * rational ones scaled to primitive integers, as in the JSON), or
+     * `axis_dirs[0]` the axis of a parabola; unset entries are
+     * `{NaN, NaN}`.
      */
     struct qs_ball axis_dirs[2][3];
     /**
@@ -361,7 +369,9 @@ typedef struct qs_line {
      */
     struct qs_ball point[3];
     /**
-     * Its direction (non-zero, any length).
+     * Its direction (non-zero, any length: the JSON's, multiplied by a
+     * power of two when its numbers would lie beyond the range of
+     * doubles).
      */
     struct qs_ball direction[3];
     /**
@@ -441,8 +451,9 @@ typedef struct qs_curve {
      */
     const struct qs_singular_point *singular;
     /**
-     * The number of its real affine connected components; 0 when they
-     * were not traced (so far: the twisted cubic beside a common line).
+     * The number of its real affine connected components (at least 1
+     * for a real curve); 0 when they were not traced (so far: the twisted
+     * cubic beside a common line; the JSON has no more then).
      */
     size_t n_branches;
     /**
