@@ -2,7 +2,7 @@
 
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
-use crate::natural::exact::{EPoint, Exact, normalize_direction};
+use crate::natural::exact::{EPoint, Exact, normalize_direction, normalize_plane};
 use crate::natural::result::Plane;
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
 use crate::natural::tangency::Section7;
@@ -129,32 +129,6 @@ fn branch_json(b: &crate::natural::CurveBranch) -> Value {
 fn plane_json(p: &Plane) -> Value {
     let (n, o) = normalize_plane(p);
     json!({"normal": epoint_json(&n), "offset": exact_json(&o)})
-}
-
-fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
-    let mut all = p.normal.to_vec();
-    all.push(p.offset.clone());
-    let rat: Option<Vec<crate::number::Q>> = all
-        .iter()
-        .map(|c| match c {
-            Exact::Quad(x) if x.is_rational() => Some(x.a.clone()),
-            _ => None,
-        })
-        .collect();
-    let Some(rat) = rat else {
-        return (p.normal.clone(), p.offset.clone());
-    };
-    let as_point: EPoint = std::array::from_fn(|i| Exact::rational(rat[i].clone()));
-    let n = normalize_direction(&as_point);
-    // scale factor k with n = k·normal, applied to the offset too
-    let idx = (0..3)
-        .find(|&i| !num_traits::Zero::is_zero(&rat[i]))
-        .unwrap_or(0);
-    let k = match &n[idx] {
-        Exact::Quad(x) => &x.a / &rat[idx],
-        _ => crate::number::Q::from_integer(1.into()),
-    };
-    (n, Exact::rational(&rat[3] * &k))
 }
 
 fn q3(v: &[crate::number::Q; 3]) -> Value {
