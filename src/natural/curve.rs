@@ -799,7 +799,7 @@ impl Rulings {
                 qc.neg().div(&qb.scale(&Z::from(2)), &d)
             };
             let tb = ball(&t);
-            (Some(t.to_qsqrt(&d)), 0, tb)
+            (Some(t), 0, tb)
         } else {
             let root = if self.cone { -at.sheet } else { at.sheet };
             // B² − AC exactly (positive inside the arc), then its root
@@ -825,36 +825,68 @@ impl Rulings {
             };
             (None, root, t)
         };
-        let balls: [XBall; 3] =
-            std::array::from_fn(|i| ball(&p0[i]).add(&t_ball.mul(&ball(&dir[i]))));
-        let mut point = CurvePoint {
+        // Xᵢ = P₀ᵢ + t·dᵢ; a coordinate that cancels (near 0 against its
+        // terms) is recomputed without cancellation, so that every bound
+        // is relative: with t exact, Xᵢ is exact in Z[√D]/den; otherwise
+        // A·Xᵢ = N + σ√M (N = A·P₀ᵢ − B·dᵢ, M = dᵢ²(B² − AC), σ = root·sign dᵢ),
+        // and when N and σ√M have opposite signs A·Xᵢ = (N² − M)/(N − σ√M),
+        // an exact numerator over a sum of two terms of one sign
+        let mut approx = [(0.0, 0.0); 3];
+        for i in 0..3 {
+            let b = ball(&p0[i]).add(&t_ball.mul(&ball(&dir[i])));
+            let b = if tight(&b) {
+                b
+            } else if let Some(t) = &t_exact {
+                ball(&p0[i].add(&t.mul(&dir[i], &d)))
+            } else {
+                let n = qa.mul(&p0[i], &d).sub(&qb.mul(&dir[i], &d));
+                let m = dir[i]
+                    .mul(&dir[i], &d)
+                    .mul(&qb.mul(&qb, &d).sub(&qa.mul(&qc, &d)), &d);
+                let sqrt_m = ball(&m)
+                    .sqrt()
+                    .ok_or_else(|| Error::internal("a branch point off its arc"))?;
+                let sigma = root * dir[i].sign(&d);
+                let inv_a = ball(&qa)
+                    .recip()
+                    .ok_or_else(|| Error::internal("A = 0 at a branch point"))?;
+                let sn = n.sign(&d);
+                if sigma == 0 || sn == 0 || sn == sigma {
+                    // N and σ√M of one sign: no cancellation
+                    let s = if sigma < 0 { sqrt_m.neg() } else { sqrt_m };
+                    ball(&n).add(&s).mul(&inv_a)
+                } else {
+                    let norm = n.mul(&n, &d).sub(&m);
+                    if norm.is_zero() {
+                        XBall::from_q(&Q::zero())
+                    } else {
+                        let conj = if sigma > 0 {
+                            ball(&n).sub(&sqrt_m)
+                        } else {
+                            ball(&n).add(&sqrt_m)
+                        };
+                        let inv = conj
+                            .recip()
+                            .ok_or_else(|| Error::internal("a branch point at infinity"))?;
+                        ball(&norm).mul(&inv).mul(&inv_a)
+                    }
+                }
+            };
+            approx[i] = b
+                .to_f64()
+                .ok_or_else(|| Error::internal("a curve point out of the range of doubles"))?;
+        }
+        Ok(CurvePoint {
             raw: std::sync::Arc::new(RawPoint {
                 p0,
                 dir,
                 quadratic: [qa, qb, qc],
-                d,
+                d: d.clone(),
             }),
             exact: std::sync::OnceLock::new(),
             root,
-            t: t_exact,
-            approx: [(0.0, 0.0); 3],
-        };
-        // a coordinate that cancels (P₀ᵢ + t·dᵢ near 0 against its terms)
-        // comes from its exact value, so that every bound is relative
-        let mut exact = None;
-        for (i, b) in balls.iter().enumerate() {
-            point.approx[i] = match b.to_f64() {
-                Some(vb) if tight(b) => vb,
-                _ => {
-                    let e = exact.get_or_insert_with(|| point.exact());
-                    let vb = e[i].to_f64_bounded();
-                    if !vb.1.is_finite() {
-                        return Err(Error::internal("a curve point out of the range of doubles"));
-                    }
-                    vb
-                }
-            };
-        }
-        Ok(point)
+            t: t_exact.map(|t| t.to_qsqrt(&d)),
+            approx,
+        })
     }
 }
