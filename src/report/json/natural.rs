@@ -33,9 +33,9 @@ fn component_f64_json(c: &Component) -> Value {
             focal2,
             ..
         } => {
-            let (n, o) = normalize_plane(plane);
+            let p = plane.normalized();
             json!({
-                "plane": {"normal": f64_point(&n), "offset": f64_json(&o)},
+                "plane": {"normal": f64_point(&p.normal), "offset": f64_json(&p.offset)},
                 "center": center.as_ref().map(f64_point),
                 "vertex": vertex.as_ref().map(f64_point),
                 "semi_axes2": axes2.iter().map(f64_json).collect::<Vec<_>>(),
@@ -127,34 +127,8 @@ fn branch_json(b: &crate::natural::CurveBranch) -> Value {
 
 /// A plane with rational coefficients is scaled to primitive integers.
 fn plane_json(p: &Plane) -> Value {
-    let (n, o) = normalize_plane(p);
-    json!({"normal": epoint_json(&n), "offset": exact_json(&o)})
-}
-
-fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
-    let mut all = p.normal.to_vec();
-    all.push(p.offset.clone());
-    let rat: Option<Vec<crate::number::Q>> = all
-        .iter()
-        .map(|c| match c {
-            Exact::Quad(x) if x.is_rational() => Some(x.a.clone()),
-            _ => None,
-        })
-        .collect();
-    let Some(rat) = rat else {
-        return (p.normal.clone(), p.offset.clone());
-    };
-    let as_point: EPoint = std::array::from_fn(|i| Exact::rational(rat[i].clone()));
-    let n = normalize_direction(&as_point);
-    // scale factor k with n = k·normal, applied to the offset too
-    let idx = (0..3)
-        .find(|&i| !num_traits::Zero::is_zero(&rat[i]))
-        .unwrap_or(0);
-    let k = match &n[idx] {
-        Exact::Quad(x) => &x.a / &rat[idx],
-        _ => crate::number::Q::from_integer(1.into()),
-    };
-    (n, Exact::rational(&rat[3] * &k))
+    let p = p.normalized();
+    json!({"normal": epoint_json(&p.normal), "offset": exact_json(&p.offset)})
 }
 
 fn q3(v: &[crate::number::Q; 3]) -> Value {
