@@ -18,9 +18,25 @@ use std::sync::{Arc, Condvar, Mutex, mpsc};
 /// budget runs out, `tangent` and `natural` answer `undecided` with the
 /// limit in `reason`, `roots` and `resultant` give an error of kind
 /// `budget`.
+///
+/// The object's own `time_limit` (seconds) and `memory_limit` (MiB), when
+/// present, tighten `budget` (never loosen it); a field that is not the
+/// op's, `id`, `op` or a limit is an error of kind `bad-field`.
+///
+/// ```
+/// use quadsect::budget::Budget;
+/// let line = r#"{"op":"roots","poly":"x^3000-3x^1001+1","time_limit":0}"#;
+/// let obj = serde_json::from_str(line).unwrap();
+/// let e = quadsect::batch::run_op_within(&obj, &Budget::default()).unwrap_err();
+/// assert_eq!(e.kind().as_str(), "budget");
+/// let typo = serde_json::from_str(r#"{"op":"roots","poly":"x","time_limt":1}"#).unwrap();
+/// let e = quadsect::batch::run_op_within(&typo, &Budget::default()).unwrap_err();
+/// assert_eq!(e.kind().as_str(), "bad-field");
+/// assert!(e.message().starts_with(r#"unknown field "time_limt" for op "roots""#));
+/// ```
 pub fn run_op_within(obj: &Map<String, Value>, budget: &Budget) -> Result<Value, Error> {
-    let request = crate::request::Request::from_json(obj)?;
-    Ok(request.execute(budget)?.to_json())
+    let (request, budget) = crate::request::Request::from_line(obj, budget)?;
+    Ok(request.execute(&budget)?.to_json())
 }
 
 /// [`run_op_within`] under the default budget ([`Budget::default`]).
@@ -523,6 +539,213 @@ mod tests {
         let e = run_batch_with(input, &mut out, &opts(2, 4)).unwrap_err();
         assert!(e.to_string().contains("disk on fire"));
         assert_eq!(String::from_utf8(out).unwrap().lines().count(), 5);
+    }
+
+    /// 12 terms of degree up to 6667: seconds of work.
+    const SLOW_ROOTS: &str =
+        "x^6667-3x^5000+7x^4000-x^3333+5x^2000-2x^1000+x^500-9x^100+x^50-3x^10+x-1";
+
+    fn answer(line: Value, budget: &Budget) -> Value {
+        answer_line_within(&line.to_string(), budget)
+    }
+
+    #[test]
+    fn a_line_time_limit_tightens_the_budget() {
+        let t0 = std::time::Instant::now();
+        let v = answer(
+            json!({"id": 1, "op": "roots", "poly": SLOW_ROOTS, "time_limit": 0.001}),
+            &Budget::default(),
+        );
+        assert!(t0.elapsed() < std::time::Duration::from_secs(5), "{v}");
+        assert_eq!((v["id"].clone(), v["ok"].clone()), (json!(1), json!(false)));
+        assert_eq!(v["error"]["kind"], "budget", "{v}");
+        assert!(
+            v["error"]["message"]
+                .as_str()
+                .unwrap()
+                .contains("time limit of 0.001 s"),
+            "{v}"
+        );
+        // tangent and natural answer undecided, with the limit
+        let v = answer(
+            json!({"id": 2, "op": "natural", "a": "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+                   "b": "cone vertex=0,1,0 axis=0,1,0 tan2=1", "time_limit": 0}),
+            &Budget::default(),
+        );
+        assert_eq!(v["result"]["class"], "undecided", "{v}");
+        assert_eq!(v["result"]["reason"]["limit"], "time");
+        let v = answer(
+            json!({"id": 3, "op": "tangent", "ellipsoid": "x^2+y^2+z^2-1", "surface": "x*y*z-1/9",
+                   "time_limit": 0}),
+            &Budget::default(),
+        );
+        assert_eq!(v["result"]["verdict"], "undecided", "{v}");
+        // a line without limits of its own, or with a loose one, is unaffected
+        for limit in [json!(null), json!("none"), json!(3600), json!(1e300)] {
+            let v = answer(
+                json!({"id": 4, "op": "roots", "poly": "x^2-2", "time_limit": limit}),
+                &Budget::default(),
+            );
+            assert_eq!(v["result"]["distinct_real"], 2, "{limit}: {v}");
+        }
+    }
+
+    #[test]
+    fn a_line_limit_never_loosens_the_budget() {
+        let no_time = Budget::default().with_time_limit(Some(std::time::Duration::ZERO));
+        for limit in [
+            json!(3600),
+            json!(1e300),
+            json!(null),
+            json!("none"),
+            json!("NONE"),
+        ] {
+            let v = answer(
+                json!({"id": 1, "op": "roots", "poly": "x^2-2", "time_limit": limit}),
+                &no_time,
+            );
+            assert_eq!(v["error"]["kind"], "budget", "{limit}: {v}");
+        }
+        // memory: the parser's products of (x+1)^64 (cancelled by its
+        // negative) are estimated at more than 0.001 MiB
+        let line = |m: Value| json!({"id": 2, "op": "roots", "poly": "(x+1)^64 - (x+1)^64 + x^2 - 2", "memory_limit": m});
+        let v = answer(line(json!(0.001)), &Budget::default());
+        assert_eq!(v["error"]["kind"], "budget", "{v}");
+        assert!(
+            v["error"]["message"]
+                .as_str()
+                .unwrap()
+                .contains("the memory limit is 0.001 MiB"),
+            "{v}"
+        );
+        assert_eq!(answer(line(json!(null)), &Budget::default())["ok"], true);
+        assert_eq!(answer(line(json!(1)), &Budget::default())["ok"], true);
+        let tiny = Budget::default().with_memory_limit(Some(1000));
+        for m in [json!(4096), json!(null), json!("none")] {
+            assert_eq!(answer(line(m), &tiny)["error"]["kind"], "budget");
+        }
+    }
+
+    #[test]
+    fn bad_limit_values_are_bad_fields_named() {
+        for field in ["time_limit", "memory_limit"] {
+            for value in [
+                json!(-1),
+                json!(-0.5),
+                json!("NaN"),
+                json!("inf"),
+                json!("0.5"),
+                json!(""),
+                json!(true),
+                json!([1]),
+                json!({"s": 1}),
+            ] {
+                let mut line = json!({"id": 9, "op": "roots", "poly": "x^2-2"});
+                line[field] = value.clone();
+                let v = answer(line, &Budget::default());
+                assert_eq!(v["id"], 9);
+                assert_eq!(v["error"]["kind"], "bad-field", "{field}={value}: {v}");
+                let m = v["error"]["message"].as_str().unwrap();
+                assert!(
+                    m.starts_with(&format!("field \"{field}\" must be a number of")),
+                    "{m}"
+                );
+                assert!(m.contains(&format!("got {value}")), "{m}");
+            }
+        }
+        // zero is a limit (no time at all), not an error
+        let v = answer(
+            json!({"id": 1, "op": "roots", "poly": "x^2-2", "time_limit": 0, "memory_limit": 0.0}),
+            &Budget::default(),
+        );
+        assert_eq!(v["error"]["kind"], "budget", "{v}");
+    }
+
+    #[test]
+    fn unknown_fields_are_bad_fields_named() {
+        let v = answer(
+            json!({"id": 5, "op": "roots", "poly": "x^2-2", "time_limt": 0.001}),
+            &Budget::default(),
+        );
+        assert_eq!(v["id"], 5);
+        assert_eq!(v["error"]["kind"], "bad-field");
+        assert_eq!(
+            v["error"]["message"],
+            r#"unknown field "time_limt" for op "roots" (expected: id, op, poly, time_limit, memory_limit)"#
+        );
+        // another op's field is unknown too; the first unknown one is named
+        let v = answer(
+            json!({"op": "resultant", "f": "x", "g": "y", "var": "x", "poly": "x", "zz": 1}),
+            &Budget::default(),
+        );
+        assert_eq!(
+            v["error"]["message"],
+            r#"unknown field "poly" for op "resultant" (expected: id, op, f, g, var, time_limit, memory_limit)"#
+        );
+        // a misspelt required field is named (not only the missing one)
+        let v = answer(json!({"op": "roots", "pol": "x"}), &Budget::default());
+        assert_eq!(v["error"]["kind"], "bad-field");
+        assert!(
+            v["error"]["message"]
+                .as_str()
+                .unwrap()
+                .starts_with(r#"unknown field "pol""#)
+        );
+        // an unknown op is still unknown-op
+        let v = answer(json!({"op": "frobnicate", "x": 1}), &Budget::default());
+        assert_eq!(v["error"]["kind"], "unknown-op");
+    }
+
+    #[test]
+    fn every_known_field_of_every_op_is_accepted() {
+        let lines = [
+            json!({"id": 1, "op": "tangent", "ellipsoid": "x^2+y^2+z^2-1", "surface": "x-2",
+                   "values": false, "float": true, "time_limit": 5, "memory_limit": 256}),
+            json!({"id": 2, "op": "natural", "a": "sphere center=0,0,0 radius2=1",
+                   "b": {"kind": "sphere", "center": ["3", "0", "0"], "radius2": "1"},
+                   "components": false, "float": false, "time_limit": 5, "memory_limit": 256}),
+            json!({"id": 3, "op": "roots", "poly": "x^2-2", "time_limit": 5, "memory_limit": 256}),
+            json!({"id": 4, "op": "resultant", "f": "x^2+y^2-1", "g": "x-y", "var": "x",
+                   "time_limit": 5, "memory_limit": 256}),
+        ];
+        assert_eq!(lines.len(), crate::request::OPS.len());
+        for line in lines {
+            let v = answer(line.clone(), &Budget::default());
+            assert_eq!(v["ok"], true, "{line}: {v}");
+            let op = line["op"].as_str().unwrap();
+            let (_, fields) = crate::request::OPS.iter().find(|(n, _)| *n == op).unwrap();
+            for f in *fields {
+                assert!(line.get(*f).is_some(), "the test line of {op} lacks {f}");
+            }
+        }
+    }
+
+    #[test]
+    fn lines_with_limits_and_bad_fields_are_answered_in_order() {
+        let lines = [
+            json!({"id": 0, "op": "roots", "poly": SLOW_ROOTS, "time_limit": 0.001}),
+            json!({"id": 1, "op": "roots", "poly": "x^2-2", "time_limit": 2}),
+            json!({"id": 2, "op": "roots", "poly": "x^2-2", "time_limit": -2}),
+            json!({"id": 3, "op": "roots", "poly": "x^2-2", "timelimit": 2}),
+            json!({"id": 4, "op": "roots", "poly": "x^2-3"}),
+        ];
+        let text: String = lines.iter().map(|l| format!("{l}\n")).collect();
+        let mut out = Vec::new();
+        let s = run_batch_with(Cursor::new(text.into_bytes()), &mut out, &opts(2, 4)).unwrap();
+        assert_eq!(s.lines, 5);
+        let got: Vec<Value> = String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        let kinds: Vec<&str> = got
+            .iter()
+            .map(|v| v["error"]["kind"].as_str().unwrap_or("ok"))
+            .collect();
+        assert_eq!(kinds, ["budget", "ok", "bad-field", "bad-field", "ok"]);
+        for (i, v) in got.iter().enumerate() {
+            assert_eq!(v["id"], i);
+        }
     }
 
     #[test]

@@ -191,6 +191,30 @@ impl Budget {
         self
     }
 
+    /// This budget with its time and memory limits lowered to `time` and
+    /// `memory` where those are smaller (`None`: that limit stays as it
+    /// is): a limit can only be tightened here, never loosened.  A memory
+    /// limit also brings the size limits down to at most their defaults
+    /// ([`DEFAULT_MAX_TERMS`], [`DEFAULT_MAX_BITS`]), which a budget
+    /// without a memory limit may have lifted: the result is the tighter
+    /// of this budget and `Budget::default()` with these limits (the
+    /// per-line `time_limit` and `memory_limit` of the batch protocol).
+    pub(crate) fn tightened(mut self, time: Option<Duration>, memory: Option<usize>) -> Budget {
+        fn min<T: Ord>(a: Option<T>, b: Option<T>) -> Option<T> {
+            match (a, b) {
+                (Some(a), Some(b)) => Some(a.min(b)),
+                (a, b) => a.or(b),
+            }
+        }
+        self.time = min(self.time, time);
+        if memory.is_some() {
+            self.memory = min(self.memory, memory);
+            self.max_terms = min(self.max_terms, Some(DEFAULT_MAX_TERMS));
+            self.max_bits = min(self.max_bits, Some(DEFAULT_MAX_BITS));
+        }
+        self
+    }
+
     /// The wall-time limit.
     pub fn time_limit(&self) -> Option<Duration> {
         self.time
@@ -417,7 +441,7 @@ pub fn check_now() {
         {
             return Some(Exhausted::new(
                 Limit::Memory,
-                format!("memory limit of {} MiB", limit >> 20),
+                format!("memory limit of {}", fmt_mib(limit)),
             ));
         }
         None
@@ -453,9 +477,9 @@ pub fn check_size(what: &str, terms: usize, bits: u64) {
                 return Some(Exhausted::new(
                     Limit::Size,
                     format!(
-                        "{what} would need about {} MiB ({terms} terms of up to {bits} bits); the memory limit is {} MiB",
-                        bytes >> 20,
-                        limit >> 20
+                        "{what} would need about {} ({terms} terms of up to {bits} bits); the memory limit is {}",
+                        fmt_mib(bytes.min(usize::MAX as u128) as usize),
+                        fmt_mib(limit)
                     ),
                 ));
             }
@@ -503,9 +527,65 @@ fn fmt_secs(t: Duration) -> String {
     }
 }
 
+/// A number of bytes in MiB: whole MiB as an integer (`1024 MiB`), a
+/// fraction to three decimals (`0.5 MiB`, as `--memory-limit 0.5` or a
+/// batch line's `memory_limit` may give), or bytes below that.
+fn fmt_mib(bytes: usize) -> String {
+    if bytes.is_multiple_of(1 << 20) {
+        return format!("{} MiB", bytes >> 20);
+    }
+    let mib = format!("{:.3}", bytes as f64 / 1048576.0);
+    let mib = mib.trim_end_matches('0').trim_end_matches('.');
+    if mib == "0" {
+        format!("{bytes} bytes")
+    } else {
+        format!("{mib} MiB")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn memory_sizes_print_in_mib() {
+        assert_eq!(fmt_mib(1 << 30), "1024 MiB");
+        assert_eq!(fmt_mib(0), "0 MiB");
+        assert_eq!(fmt_mib(512 << 10), "0.5 MiB");
+        assert_eq!(fmt_mib(1048), "0.001 MiB");
+        assert_eq!(fmt_mib((3 << 20) + 1), "3 MiB");
+        assert_eq!(fmt_mib(100), "100 bytes");
+    }
+
+    #[test]
+    fn tightened_only_lowers_limits() {
+        let s = Duration::from_secs;
+        let b = Budget::default().tightened(Some(s(2)), None);
+        assert_eq!(b.time_limit(), Some(s(2)));
+        assert_eq!(b.memory_limit(), Some(DEFAULT_MEMORY_LIMIT));
+        // never loosened
+        let b = b.tightened(Some(s(60)), Some(usize::MAX));
+        assert_eq!(b.time_limit(), Some(s(2)));
+        assert_eq!(b.memory_limit(), Some(DEFAULT_MEMORY_LIMIT));
+        let b = Budget::default().tightened(None, Some(64 << 20));
+        assert_eq!(b.time_limit(), Some(DEFAULT_TIME_LIMIT));
+        assert_eq!(b.memory_limit(), Some(64 << 20));
+        // no limits: each given one applies; a memory limit brings the
+        // default size limits back, as `--memory-limit MiB` has them
+        let none = Budget::unlimited();
+        let b = none.clone().tightened(Some(Duration::ZERO), None);
+        assert_eq!(b.time_limit(), Some(Duration::ZERO));
+        assert_eq!(b.size_limits(), (None, None));
+        let b = none.tightened(None, Some(1 << 20));
+        assert_eq!((b.time_limit(), b.memory_limit()), (None, Some(1 << 20)));
+        assert_eq!(
+            b.size_limits(),
+            (Some(DEFAULT_MAX_TERMS), Some(DEFAULT_MAX_BITS))
+        );
+        let small = Budget::default().with_size_limits(Some(10), Some(20));
+        let b = small.tightened(None, Some(1 << 20));
+        assert_eq!(b.size_limits(), (Some(10), Some(20)));
+    }
 
     #[test]
     fn unlimited_and_outside_never_fail() {

@@ -45,13 +45,19 @@ pub(crate) enum Answer {
     Resultant(ResultantReport),
 }
 
-/// The operations by name, with the fields of their batch lines.
+/// The operations by name, with the fields of their batch lines (besides
+/// [`LINE_FIELDS`]).
 pub(crate) const OPS: [(&str, &[&str]); 4] = [
     ("tangent", &["ellipsoid", "surface", "values", "float"]),
     ("natural", &["a", "b", "components", "float"]),
     ("roots", &["poly"]),
     ("resultant", &["f", "g", "var"]),
 ];
+
+/// The fields every batch line may have, whatever its op: before the op's
+/// own fields (`id`, `op`) and after them (the line's limits).
+pub(crate) const LINE_FIELDS: ([&str; 2], [&str; 2]) =
+    (["id", "op"], ["time_limit", "memory_limit"]);
 
 impl Request {
     /// Runs the request under `budget` (parsing included).  When the budget
@@ -144,9 +150,11 @@ impl fmt::Display for Answer {
 
 #[cfg(feature = "serde")]
 mod json {
-    use super::{Answer, NumberMode, OPS, Request};
+    use super::{Answer, LINE_FIELDS, NumberMode, OPS, Request};
+    use crate::budget::Budget;
     use crate::error::{Error, ErrorKind};
     use serde_json::{Map, Value};
+    use std::time::Duration;
 
     fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
         obj.get(name)
@@ -198,11 +206,110 @@ mod json {
         .map_err(|e| e.context(&format!("in \"{name}\"")))
     }
 
+    /// A field name or value as shown in a message: quoted and escaped
+    /// (JSON), and cut short when long.
+    fn shown(v: &Value) -> String {
+        let s = v.to_string();
+        match s.char_indices().nth(60) {
+            Some((i, _)) => format!("{}…", &s[..i]),
+            None => s,
+        }
+    }
+
+    /// The error of an op that is not in [`OPS`].
+    fn unknown_op(op: &str) -> Error {
+        let names: Vec<&str> = OPS.iter().map(|(n, _)| *n).collect();
+        Error::new(
+            ErrorKind::UnknownOp,
+            format!(
+                "unknown op {} (expected {})",
+                shown(&Value::from(op)),
+                names.join(", ")
+            ),
+        )
+    }
+
+    /// Every field of the line is one of `op`'s or of [`LINE_FIELDS`]: a
+    /// misspelt field is an error, never silently ignored.
+    fn known_fields(obj: &Map<String, Value>, op: &str, fields: &[&str]) -> Result<(), Error> {
+        let (head, tail) = LINE_FIELDS;
+        let known =
+            |name: &str| head.contains(&name) || fields.contains(&name) || tail.contains(&name);
+        match obj.keys().find(|k| !known(k)) {
+            None => Ok(()),
+            Some(name) => {
+                let expected: Vec<&str> = head.iter().chain(fields).chain(&tail).copied().collect();
+                Err(Error::new(
+                    ErrorKind::BadField,
+                    format!(
+                        "unknown field {} for op \"{op}\" (expected: {})",
+                        shown(&Value::from(name.as_str())),
+                        expected.join(", ")
+                    ),
+                ))
+            }
+        }
+    }
+
+    /// A limit field of a line (`time_limit` in seconds, `memory_limit` in
+    /// MiB): a number ≥ 0, or absent, `null` or `"none"` (any case) for no
+    /// limit of the line's own.
+    fn limit(obj: &Map<String, Value>, name: &str, unit: &str) -> Result<Option<f64>, Error> {
+        let bad = |v: &Value, why: &str| {
+            Error::new(
+                ErrorKind::BadField,
+                format!(
+                    "field \"{name}\" must be a number of {unit} ≥ 0, or null or \"none\" for the \
+                     batch's limit; got {} ({why})",
+                    shown(v)
+                ),
+            )
+        };
+        match obj.get(name) {
+            None | Some(Value::Null) => Ok(None),
+            Some(Value::String(s)) if s.trim().eq_ignore_ascii_case("none") => Ok(None),
+            Some(v @ Value::Number(n)) => match n.as_f64() {
+                Some(x) if x >= 0.0 && x.is_finite() => Ok(Some(x)),
+                _ => Err(bad(v, "negative")),
+            },
+            Some(v @ Value::String(_)) => Err(bad(v, "a string, not a number")),
+            Some(v) => Err(bad(v, "wrong type")),
+        }
+    }
+
+    /// The budget of a batch line: `budget` tightened by the line's own
+    /// `time_limit` (seconds) and `memory_limit` (MiB), which can lower the
+    /// limits but never raise them (see [`Budget::tightened`]).
+    fn line_budget(obj: &Map<String, Value>, budget: &Budget) -> Result<Budget, Error> {
+        // beyond 10⁹ s or 10¹² MiB a limit is no limit (as on the command line)
+        let time =
+            limit(obj, "time_limit", "seconds")?.map(|s| Duration::from_secs_f64(s.min(1e9)));
+        let memory = limit(obj, "memory_limit", "MiB")?.map(|m| (m.min(1e12) * 1048576.0) as usize);
+        Ok(budget.clone().tightened(time, memory))
+    }
+
     impl Request {
-        /// The request of a batch line's JSON object (`op` and its fields).
-        pub(crate) fn from_json(obj: &Map<String, Value>) -> Result<Request, Error> {
+        /// The request of a batch line's JSON object and its budget:
+        /// `budget` tightened by the line's own limits.  The line is read
+        /// in this order, and the first problem is the error: `op` (missing
+        /// or unknown), a field the op does not take ([`LINE_FIELDS`] are
+        /// always allowed), the limits, the op's fields.
+        pub(crate) fn from_line(
+            obj: &Map<String, Value>,
+            budget: &Budget,
+        ) -> Result<(Request, Budget), Error> {
             let op = text(obj, "op")?;
-            Ok(match op.as_str() {
+            let Some((_, fields)) = OPS.iter().find(|(name, _)| *name == op) else {
+                return Err(unknown_op(&op));
+            };
+            known_fields(obj, &op, fields)?;
+            let budget = line_budget(obj, budget)?;
+            Ok((Request::from_fields(obj, &op)?, budget))
+        }
+
+        /// The request of a known op's fields.
+        fn from_fields(obj: &Map<String, Value>, op: &str) -> Result<Request, Error> {
+            Ok(match op {
                 "tangent" => Request::Tangent {
                     ellipsoid: text(obj, "ellipsoid")?,
                     surface: text(obj, "surface")?,
@@ -222,13 +329,7 @@ mod json {
                     g: text(obj, "g")?,
                     var: text(obj, "var")?,
                 },
-                other => {
-                    let names: Vec<&str> = OPS.iter().map(|(n, _)| *n).collect();
-                    return Err(Error::new(
-                        ErrorKind::UnknownOp,
-                        format!("unknown op \"{other}\" (expected {})", names.join(", ")),
-                    ));
-                }
+                other => return Err(unknown_op(other)),
             })
         }
     }

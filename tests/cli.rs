@@ -1,6 +1,7 @@
 //! The command line: `--no-components` (the fast route), `--components`,
 //! hexadecimal input and `--float` on `natural` and `tangent`; the pair
-//! rows of the natural benchmark through the library.
+//! rows of the natural benchmark through the library; the batch lines'
+//! own limits and unknown fields.
 
 use serde_json::Value;
 use std::process::Command;
@@ -188,4 +189,87 @@ fn batch_accepts_components_and_float_fields() {
     );
     let line = r#"{"id":4,"op":"natural","a":"sphere center=0,0,0 radius2=1","b":"sphere center=1,0,0 radius2=1","float":1}"#;
     assert_eq!(quadsect::batch::answer_line(line)["ok"], false);
+}
+
+/// 12 terms of degree up to 6667: seconds of work.
+const SLOW_ROOTS: &str =
+    "x^6667-3x^5000+7x^4000-x^3333+5x^2000-2x^1000+x^500-9x^100+x^50-3x^10+x-1";
+
+#[test]
+fn batch_lines_may_tighten_their_limits_and_unknown_fields_are_errors() {
+    use serde_json::json;
+    let lines = [
+        // tightens --time-limit: a budget error at once, not after 0.3 s
+        json!({"id": "tight", "op": "roots", "poly": SLOW_ROOTS, "time_limit": 0.001}).to_string(),
+        // cannot loosen it: 0.3 s still applies
+        json!({"id": "loose", "op": "roots", "poly": SLOW_ROOTS, "time_limit": 3600}).to_string(),
+        json!({"id": "neg", "op": "roots", "poly": "x^2-2", "time_limit": -1}).to_string(),
+        json!({"id": "word", "op": "roots", "poly": "x^2-2", "memory_limit": "lots"}).to_string(),
+        json!({"id": "typo", "op": "roots", "poly": "x^2-2", "time_limt": 0.001}).to_string(),
+        json!({"id": "ok", "op": "roots", "poly": "x^2-2", "time_limit": null, "memory_limit": 64})
+            .to_string(),
+        "not json".to_string(),
+    ];
+    let path = std::env::temp_dir().join(format!("quadsect-limits-{}.jsonl", std::process::id()));
+    std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+    let t0 = std::time::Instant::now();
+    let (code, out, err) = run(&["batch", "--time-limit", "0.3", path.to_str().unwrap()]);
+    let took = t0.elapsed();
+    std::fs::remove_file(&path).ok();
+    // bad lines are answers: the batch itself succeeds
+    assert_eq!(code, 0, "{err}");
+    let answers: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(answers.len(), lines.len(), "one answer per line: {out}");
+    let ids: Vec<Value> = answers.iter().map(|a| a["id"].clone()).collect();
+    let expected = ["tight", "loose", "neg", "word", "typo", "ok"].map(|s| json!(s));
+    assert_eq!(ids[..6], expected, "in input order");
+    assert_eq!(ids[6], Value::Null);
+    let kind = |i: usize| answers[i]["error"]["kind"].as_str().unwrap_or("none");
+    let message = |i: usize| answers[i]["error"]["message"].as_str().unwrap_or("");
+    assert_eq!(kind(0), "budget");
+    assert!(
+        message(0).contains("time limit of 0.001 s"),
+        "{}",
+        message(0)
+    );
+    assert_eq!(kind(1), "budget");
+    assert!(message(1).contains("time limit of 0.3 s"), "{}", message(1));
+    assert_eq!(kind(2), "bad-field");
+    assert!(
+        message(2).starts_with("field \"time_limit\" must be a number of seconds"),
+        "{}",
+        message(2)
+    );
+    assert!(message(2).contains("got -1"), "{}", message(2));
+    assert_eq!(kind(3), "bad-field");
+    assert!(
+        message(3).starts_with("field \"memory_limit\" must be a number of MiB"),
+        "{}",
+        message(3)
+    );
+    assert_eq!(kind(4), "bad-field");
+    assert_eq!(
+        message(4),
+        "unknown field \"time_limt\" for op \"roots\" (expected: id, op, poly, time_limit, memory_limit)"
+    );
+    assert_eq!(answers[5]["ok"], true);
+    assert_eq!(answers[5]["result"]["distinct_real"], 2);
+    assert_eq!(kind(6), "json");
+    // the slow lines ran 0.001 s and 0.3 s, not seconds
+    assert!(took < std::time::Duration::from_secs(5), "{took:?}");
+    // the protocol is in the help
+    let (code, help, _) = run(&["batch", "--help"]);
+    assert_eq!(code, 0);
+    for word in [
+        "time_limit",
+        "memory_limit",
+        "bad-field",
+        "never loosen",
+        "Exit status",
+    ] {
+        assert!(help.contains(word), "{word}: {help}");
+    }
 }

@@ -1,9 +1,12 @@
-//! Fuzz the expression and number parsers: they must never panic, a
-//! successful parse must print to a string that parses back to the same
-//! polynomial, and parsing must end within a small compute budget (plus a
-//! small constant).
+//! Fuzz the expression and number parsers through the public API
+//! (`str::parse::<Polynomial>`, `Polynomial::parse_in`, `parse_rational`,
+//! `parse_rational_in`, `str::parse::<IntPoly>`): they must never panic,
+//! a polynomial that parses must print (`Display`, the canonical form) to
+//! text that parses back to the same polynomial, and parsing must end
+//! within a compute budget of 0.5 s (plus 1 s of slack).
 #![no_main]
 use libfuzzer_sys::fuzz_target;
+use quadsect::{Budget, IntPoly, NumberMode, Polynomial, budget};
 use std::time::{Duration, Instant};
 
 const LIMIT: Duration = Duration::from_millis(500);
@@ -11,17 +14,25 @@ const SLACK: Duration = Duration::from_millis(1000);
 
 fuzz_target!(|data: &[u8]| {
     if let Ok(s) = std::str::from_utf8(data) {
-        let budget = quadsect::budget::Budget::default().with_time_limit(Some(LIMIT));
+        let budget = Budget::default().with_time_limit(Some(LIMIT));
         let t0 = Instant::now();
-        let r = quadsect::budget::run(&budget, || {
-            let _ = quadsect::number::parse_rational(s);
-            quadsect::poly::parse_poly(s).map(|p| (p.to_string_canonical(), p))
+        let r = budget::run(&budget, || {
+            let _ = quadsect::parse_rational(s);
+            let _ = quadsect::parse_rational_in(s, NumberMode::Float);
+            let _ = Polynomial::parse_in(s, NumberMode::Float);
+            let _ = s.parse::<IntPoly>();
+            s.parse::<Polynomial>().map(|p| (p.to_string(), p))
         });
         let took = t0.elapsed();
-        assert!(took <= LIMIT + SLACK, "took {took:?} with a budget of {LIMIT:?}");
+        assert!(
+            took <= LIMIT + SLACK,
+            "took {took:?} with a budget of {LIMIT:?}"
+        );
         if let Ok(Ok((printed, p))) = r {
-            let back = quadsect::poly::parse_poly(&printed).expect("printed polynomial must parse");
-            assert_eq!(back, p);
+            let back: Polynomial = printed
+                .parse()
+                .unwrap_or_else(|e| panic!("printed polynomial {printed:?} does not parse: {e}"));
+            assert_eq!(back, p, "{printed:?}");
         }
     }
 });

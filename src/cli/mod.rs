@@ -137,6 +137,7 @@ enum Command {
         dump_systems: Option<std::path::PathBuf>,
     },
     /// JSON lines in (file or - for stdin), one JSON answer line out per input line.
+    #[command(after_help = BATCH_HELP)]
     Batch {
         /// Input file; standard input when absent or "-".
         file: Option<String>,
@@ -147,6 +148,29 @@ enum Command {
         limits: LimitArgs,
     },
 }
+
+/// The batch protocol in brief, after `quadsect batch --help` (the full
+/// contract: docs/contract.md §5).
+const BATCH_HELP: &str = "\
+Protocol: each input line is a JSON object {\"id\": …, \"op\": …, fields…}; each answer
+line is {\"id\": …, \"ok\": true, \"result\": {…}} or {\"id\": …, \"ok\": false,
+\"error\": {\"kind\": …, \"message\": …}}, in input order.
+
+Ops and their fields:
+  tangent     ellipsoid, surface; optional values (false: the verdict only), float
+  natural     a, b (short syntax or JSON object); optional components, float
+  roots       poly
+  resultant   f, g, var
+Fields of every line (all optional):
+  id            any JSON value, copied into the answer
+  time_limit    seconds (a number >= 0), or null or \"none\": no limit of the line's own
+  memory_limit  MiB (a number >= 0), or null or \"none\": no limit of the line's own
+A line's limit is the smaller of its own and --time-limit / --memory-limit: a line can
+tighten the limits, never loosen them. Any other field, or a bad limit, is an error line
+of kind \"bad-field\" naming the field.
+
+Exit status: 0 when every line was answered, whatever the answers (bad lines, exhausted
+budgets and internal failures are error lines); 2 when the input cannot be read.";
 
 /// Prints the JSON or the human form (only the one asked for is built).
 /// The JSON is serialized straight into a buffered standard output (no

@@ -187,8 +187,10 @@ fn zeros(g: &Gamma, r: &Reduced) -> Result<Vec<GPoint>, Error> {
     }
     let edge = g.edge();
     let mut out = Vec::new();
-    for x in RealAlg::roots_of(&r.w) {
+    for mut x in RealAlg::roots_of(&r.w) {
         crate::budget::check();
+        // narrow once, so that the signs at x below are decided by balls
+        x.refine_relative(60);
         match x.sign_of(&edge) {
             1 => continue, // no real point of Γ there
             0 => out.push(GPoint { x, ys: 0 }),

@@ -1535,7 +1535,7 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
 
 /// The whole answer on prepared quadrics: the fast route's predicates
 /// decide the class and counts and the case, then the case's construction
-/// builds the exact components ([`super::construct`]) — one pipeline, no
+/// builds the exact components (module `natural::construct`) — one pipeline, no
 /// second classification.  No budget of its own (see [`classify_with`]).
 pub fn classify_prepared(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Error> {
     let (x, y) = (&a.prep, &b.prep);

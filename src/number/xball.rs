@@ -81,16 +81,23 @@ impl XBall {
         .normalized()
     }
 
-    /// A ball holding the closed interval `[lo, hi]`.
+    /// A ball holding the closed interval `[lo, hi]` (the hull of the
+    /// balls of its ends: no rational arithmetic).
     pub fn from_interval(lo: &Q, hi: &Q) -> XBall {
-        let two = Q::from_integer(2.into());
-        let mid = XBall::from_q(&((lo + hi) / &two));
-        let rad = XBall::from_q(&((hi - lo) / &two));
-        mid.add(&XBall {
-            m: 0.0,
-            r: rad.m.abs() + rad.r,
-            e: rad.e,
-        })
+        XBall::from_q(lo).hull(&XBall::from_q(hi))
+    }
+
+    /// A ball holding both balls.
+    pub fn hull(&self, o: &XBall) -> XBall {
+        let e = self.e.max(o.e);
+        let (m1, r1) = self.at_exponent(e);
+        let (m2, r2) = o.at_exponent(e);
+        // the ends, widened by their roundings
+        let lo = (m1 - r1).min(m2 - r2);
+        let hi = (m1 + r1).max(m2 + r2);
+        let m = 0.5 * (lo + hi);
+        let r = ((hi - m).max(m - lo) + U * (lo.abs() + hi.abs())) * INFL + TINY;
+        XBall { m, r, e }.normalized()
     }
 
     /// The same ball with the midpoint's magnitude brought near 1 (an exact
@@ -219,6 +226,24 @@ impl XBall {
             }
             .normalized(),
         )
+    }
+
+    /// The sign of every point of the ball, when it is one (`None` when
+    /// the ball holds 0 or is not finite; an exact zero ball is 0).
+    pub fn sign(&self) -> Option<i32> {
+        if self.m == 0.0 && self.r == 0.0 {
+            return Some(0);
+        }
+        if !(self.m.is_finite() && self.r.is_finite()) {
+            return None;
+        }
+        if self.m > self.r {
+            Some(1)
+        } else if self.m < -self.r {
+            Some(-1)
+        } else {
+            None
+        }
     }
 
     /// The ends as exact rationals, `None` when not finite.

@@ -595,9 +595,14 @@ impl<C: Ring> Mul for &MPoly<C> {
         }
         let (terms, bits) = product_size(self, o);
         crate::budget::check_size("a product of polynomials", terms, bits);
+        // a row is `o.terms.len()` products of coefficients of up to
+        // `bits` bits: when that is much work the clock is read every row
+        // (read every 64 rows, a product of large coefficients ran seconds
+        // past its deadline)
+        let row_work = bits.saturating_mul(o.terms.len() as u64);
         let mut map: HashMap<Exps, C> = HashMap::with_capacity(terms);
         for (ea, ca) in &self.terms {
-            crate::budget::check();
+            crate::budget::check_for(row_work);
             for (eb, cb) in &o.terms {
                 let e = exps_add(ea, eb);
                 let p = ca.rmul(cb);
@@ -716,6 +721,40 @@ mod tests {
         assert_eq!(ZMPoly::from_upoly(&up, X), a);
         assert_eq!(a.derivative(X), &(&x + &x) + &(&y - &one));
         assert_eq!(a.substitute(Y, &one), &(&x + &one) * &(&x - &one));
+    }
+
+    /// Found by `fuzz/` (parse_poly: `(9 + y/7/ 9)^416 -/8 …` ran 1.5 s
+    /// under a 0.5 s budget): a product with large coefficients read the
+    /// clock every 64 rows, so it ran up to 64 rows past its deadline.  It
+    /// now stops within a row or two.
+    #[test]
+    fn a_product_of_large_rows_stops_a_row_after_its_deadline() {
+        use crate::budget::{self, Budget};
+        use std::time::{Duration, Instant};
+        // 200 terms with 60 000-bit coefficients: one row is 200 products
+        // of 60 000-bit integers (milliseconds)
+        let big = |n: usize| -> ZMPoly {
+            MPoly::from_terms((0..n).map(|i| {
+                let mut e = [0; NVARS];
+                e[X] = i as u32;
+                (e, num_traits::pow(BigInt::from(3), 37_000 + i))
+            }))
+        };
+        let (a, b, two_rows) = (big(200), big(200), big(2));
+        let t0 = Instant::now();
+        let _ = &two_rows * &b;
+        let row = t0.elapsed() / 2;
+        let limit = Duration::from_millis(5);
+        let t0 = Instant::now();
+        let r = budget::run(&Budget::unlimited().with_time_limit(Some(limit)), || {
+            &a * &b
+        });
+        let took = t0.elapsed();
+        assert!(r.is_err(), "200 rows end after the deadline");
+        assert!(
+            took <= limit + 8 * row + Duration::from_millis(20),
+            "{took:?} with a limit of {limit:?} and rows of {row:?}"
+        );
     }
 }
 

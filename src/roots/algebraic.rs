@@ -3,6 +3,7 @@
 //! polynomial at the number (zero detected by a gcd, never by a tolerance).
 
 use super::isolate::{RootInterval, bisect_once, isolate_squarefree, refine, sign_variations};
+use crate::number::xball::XBall;
 use crate::number::{Q, approx_decimal, floor_log2_q, fmt_q};
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{MPoly, U};
@@ -233,7 +234,7 @@ impl RealAlg {
     /// 2^-(3.33·digits + 56) is rounded (then the printed digits are within
     /// one unit of the last place).  The precision is relative however close
     /// to 0 the value is: the interval is first moved off 0
-    /// ([`RealAlg::separate_from_zero`]).
+    /// (by a lower bound on its nonzero roots).
     pub fn approx(&self, digits: usize) -> String {
         match &self.repr {
             Repr::Rational(q) => approx_decimal(q, digits),
@@ -489,6 +490,12 @@ impl RealAlg {
                 if q.degree() == Some(0) {
                     return crate::number::sign_z(&q.lc());
                 }
+                // a filter first: q over the isolating interval in
+                // extended-exponent balls, on a few bisections of it (a
+                // non-zero sign only; zero is left to the gcd)
+                if let Some(s) = Self::sign_by_balls(poly, lo, hi, q) {
+                    return s;
+                }
                 let g = poly.gcd(q);
                 if g.degree().unwrap_or(0) > 0 && g.sign_at(lo) * g.sign_at(hi) < 0 {
                     return 0;
@@ -508,6 +515,51 @@ impl RealAlg {
                 }
             }
         }
+    }
+
+    /// The sign of `q` at the root of `poly` in `(lo, hi)` when interval
+    /// evaluation proves it non-zero on the interval or on one of up to six
+    /// successive halvings of it (each halving decided by an exact sign of
+    /// `poly`); `None` otherwise.  Rigorous: [`XBall`] arithmetic.
+    fn sign_by_balls(poly: &ZPoly, lo: &Q, hi: &Q, q: &ZPoly) -> Option<i32> {
+        let coeffs: Vec<XBall> = q
+            .coeffs()
+            .iter()
+            .map(|c| XBall::from_q(&Q::from_integer(c.clone())))
+            .collect();
+        let eval = |lo: &Q, hi: &Q| -> Option<i32> {
+            let x = XBall::from_interval(lo, hi);
+            let mut acc = *coeffs.last()?;
+            for c in coeffs.iter().rev().skip(1) {
+                acc = acc.mul(&x).add(c);
+            }
+            acc.sign().filter(|&s| s != 0)
+        };
+        if let Some(s) = eval(lo, hi) {
+            return Some(s);
+        }
+        let (mut lo, mut hi) = (lo.clone(), hi.clone());
+        let s_lo = poly.sign_at(&lo);
+        for _ in 0..6 {
+            // the midpoint unreduced (no gcd)
+            let mid = Q::new_raw(
+                lo.numer() * hi.denom() + hi.numer() * lo.denom(),
+                lo.denom() * hi.denom() * 2,
+            );
+            let sm = poly.sign_at(&mid);
+            if sm == 0 {
+                return None; // a rational root: the exact path decides
+            }
+            if sm == s_lo {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            if let Some(s) = eval(&lo, &hi) {
+                return Some(s);
+            }
+        }
+        None
     }
 
     /// Exact sign of `q(self)` for a rational polynomial.

@@ -1,14 +1,26 @@
-//! Fuzzing of the text inputs with proptest (the libFuzzer targets in
-//! `fuzz/` need nightly): parsers and batch lines never panic, what parses
-//! prints back to itself, and every input ends within a small compute
-//! budget (an exhausted budget is an answer; a run past the budget by more
-//! than a small constant is a finding).
+//! Fuzzing of the text inputs with proptest: the properties of the three
+//! libFuzzer targets in `fuzz/` (which need nightly), run by `cargo test`.
+//!
+//! * `parse_poly`: the expression and number parsers never panic, what
+//!   parses prints back to itself, and parsing ends within its budget.
+//! * `natural_parse`: the natural-quadric parsers (short syntax and JSON)
+//!   never panic, what parses prints back (`to_short`) to itself, and two
+//!   parsed quadrics classify (both routes) within the budget.
+//! * `batch_line`: any bytes on a batch line give exactly one JSON answer
+//!   object within the budget; the line's own limits and unknown fields
+//!   give the documented answers.
+//!
+//! Every input runs under a compute budget: an exhausted budget is an
+//! answer; a run past the budget by more than a small constant is a
+//! finding.
 
 use crate::budget::Budget;
-use crate::number::parse_rational;
+use crate::natural::{ClassifyOptions, Natural};
+use crate::number::{NumberMode, parse_rational};
 use crate::poly::parse_poly;
+use crate::{IntPoly, Polynomial};
 use proptest::prelude::*;
-use serde_json::Value;
+use serde_json::{Value, json};
 use std::time::{Duration, Instant};
 
 /// The budget of each fuzzed input, and what it may overshoot.
@@ -20,7 +32,8 @@ const SLACK: Duration = Duration::from_millis(if cfg!(debug_assertions) {
     2_000
 });
 
-/// One batch line under the fuzzing budget; fails when it runs past it.
+/// One batch line under the fuzzing budget; fails when it runs past it or
+/// when the answer is not exactly one answer object (`batch_line`).
 fn answer_line(line: &str) -> Value {
     let budget = Budget::default().with_time_limit(Some(LIMIT));
     let t0 = Instant::now();
@@ -30,40 +43,217 @@ fn answer_line(line: &str) -> Value {
         took <= LIMIT + SLACK,
         "{line:?} took {took:?} with a budget of {LIMIT:?}"
     );
+    let obj = v.as_object().expect("the answer is a JSON object");
+    assert!(obj.contains_key("id"), "{v}");
+    match obj.get("ok").and_then(|b| b.as_bool()) {
+        Some(true) => assert!(obj.len() == 3 && obj.contains_key("result"), "{v}"),
+        Some(false) => {
+            assert!(obj.len() == 3, "{v}");
+            assert!(
+                v["error"]["kind"].is_string() && v["error"]["message"].is_string(),
+                "{v}"
+            );
+        }
+        None => panic!("no boolean \"ok\": {v}"),
+    }
+    assert!(!v.to_string().contains('\n'), "{v}");
     v
+}
+
+/// Every parser of `parse_poly` on `s` under the fuzzing budget: no panic,
+/// no run past the budget, and a polynomial that parses prints to text
+/// that parses back to it.
+fn parse_everything(s: &str) {
+    let budget = Budget::default().with_time_limit(Some(LIMIT));
+    let t0 = Instant::now();
+    let r = crate::budget::run(&budget, || {
+        let _ = parse_rational(s);
+        let _ = crate::parse_rational_in(s, NumberMode::Float);
+        let _ = Polynomial::parse_in(s, NumberMode::Float);
+        let _ = s.parse::<IntPoly>();
+        s.parse::<Polynomial>().map(|p| (p.to_string(), p))
+    });
+    let took = t0.elapsed();
+    assert!(took <= LIMIT + SLACK, "{s:?} took {took:?}");
+    if let Ok(Ok((printed, p))) = r {
+        let back: Polynomial = printed
+            .parse()
+            .unwrap_or_else(|e| panic!("{s:?} printed as {printed:?}, which does not parse: {e}"));
+        assert_eq!(back, p, "{s:?} printed as {printed:?}");
+    }
+}
+
+/// A natural quadric's text parsed as `natural_parse` does (both number
+/// modes); one that parses prints (`to_short`) to text that parses back.
+fn parse_natural(text: &str) -> Option<Natural> {
+    let _ = Natural::parse_in(text, NumberMode::Float);
+    let q: Natural = text.parse().ok()?;
+    let short = q.to_short();
+    let back: Natural = short
+        .parse()
+        .unwrap_or_else(|e| panic!("{text:?} printed as {short:?}, which does not parse: {e}"));
+    assert_eq!(back, q, "{text:?} printed as {short:?}");
+    Some(q)
+}
+
+/// Two quadrics classified under the fuzzing budget, by the full or the
+/// fast route: never past the budget.
+fn classify_within_budget(a: &Natural, b: &Natural, components: bool) {
+    let mut options = ClassifyOptions::with_budget(Budget::default().with_time_limit(Some(LIMIT)));
+    options.components = components;
+    let t0 = Instant::now();
+    let _ = crate::natural::classify_with(a, b, &options);
+    let took = t0.elapsed();
+    assert!(took <= LIMIT + SLACK, "{a:?} and {b:?} took {took:?}");
+}
+
+/// A number as the inputs write them: integers, fractions, decimals,
+/// scientific and hexadecimal floats, and now and then nonsense.
+fn number() -> impl Strategy<Value = String> {
+    prop_oneof![
+        12 => (-4i32..5).prop_map(|n| n.to_string()),
+        6 => (-9i32..10, 1u32..5).prop_map(|(n, d)| format!("{n}/{d}")),
+        4 => "-?[0-9]\\.[0-9]{1,3}(e-?[0-9])?",
+        1 => Just("0x1.8p-1".to_string()),
+        1 => "[-0-9/.e]{0,6}",
+    ]
+}
+
+/// A number for a squared radius or an angle: mostly positive (and in
+/// (0, 1), as cos2 and sin2 need), at times anything (zero, negative,
+/// nonsense).
+fn positive() -> impl Strategy<Value = String> {
+    prop_oneof![
+        6 => "1/[2-9]",
+        3 => (1u32..10, 1u32..5).prop_map(|(n, d)| format!("{n}/{d}")),
+        1 => "0\\.[0-9]{1,3}",
+        1 => number(),
+    ]
+}
+
+fn triple() -> impl Strategy<Value = [String; 3]> {
+    [number(), number(), number()]
+}
+
+/// A natural quadric in the short syntax or as JSON text, mostly valid
+/// (every kind and angle parameter), sometimes with a bad value.
+fn quadric_text() -> impl Strategy<Value = String> {
+    let short = |v: &[String; 3]| v.join(",");
+    let json = |v: &[String; 3]| json!(v).to_string();
+    prop_oneof![
+        (triple(), positive(), any::<bool>()).prop_map(move |(c, r, j)| if j {
+            format!(
+                r#"{{"kind":"sphere","center":{},"radius2":"{r}"}}"#,
+                json(&c)
+            )
+        } else {
+            format!("sphere center={} radius2={r}", short(&c))
+        }),
+        (triple(), triple(), positive(), any::<bool>()).prop_map(move |(p, a, r, j)| if j {
+            format!(
+                r#"{{"kind":"cylinder","point":{},"axis":{},"radius2":"{r}"}}"#,
+                json(&p),
+                json(&a)
+            )
+        } else {
+            format!(
+                "cylinder point={} axis={} radius2={r}",
+                short(&p),
+                short(&a)
+            )
+        }),
+        (
+            triple(),
+            triple(),
+            "(tan2|tan|cos2|sin2)",
+            positive(),
+            any::<bool>()
+        )
+            .prop_map(move |(v, a, k, t, j)| if j {
+                format!(
+                    r#"{{"kind":"cone","vertex":{},"axis":{},"{k}":"{t}"}}"#,
+                    json(&v),
+                    json(&a)
+                )
+            } else {
+                format!("cone vertex={} axis={} {k}={t}", short(&v), short(&a))
+            }),
+    ]
+}
+
+/// The generator of [`natural_pairs_classify_within_the_budget`] reaches
+/// the classification: most pairs parse (else the property tests little).
+#[test]
+fn most_generated_quadric_pairs_parse() {
+    use proptest::strategy::ValueTree;
+    let mut runner = proptest::test_runner::TestRunner::deterministic();
+    let pair = (quadric_text(), quadric_text());
+    let parsed = (0..400)
+        .filter(|_| {
+            let (a, b) = pair.new_tree(&mut runner).unwrap().current();
+            a.parse::<Natural>().is_ok() && b.parse::<Natural>().is_ok()
+        })
+        .count();
+    assert!(parsed >= 160, "{parsed} of 400 pairs parse");
+}
+
+/// A value of a batch line's `time_limit` or `memory_limit`, valid or not.
+fn limit_value() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        Just(Value::Null),
+        Just(json!("none")),
+        Just(json!("NONE")),
+        (0.0f64..2.0).prop_map(Value::from),
+        (0u32..3).prop_map(Value::from),
+        (-2.0f64..-1e-9).prop_map(Value::from),
+        Just(json!(-1)),
+        Just(json!("NaN")),
+        Just(json!("0.5")),
+        Just(json!(true)),
+        Just(json!([1])),
+        Just(json!({"s": 1})),
+        "[a-z0-9.]{0,4}".prop_map(Value::from),
+    ]
+}
+
+/// Whether a batch line may have this limit value (contract §5).
+fn valid_limit(v: &Value) -> bool {
+    match v {
+        Value::Null => true,
+        Value::String(s) => s.trim().eq_ignore_ascii_case("none"),
+        Value::Number(n) => n.as_f64().is_some_and(|x| x >= 0.0),
+        _ => false,
+    }
 }
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 2000, .. ProptestConfig::default() })]
 
-    /// Arbitrary Unicode text: no panic; a successful parse round-trips.
+    /// `parse_poly` on arbitrary Unicode text.
     #[test]
     fn parse_poly_never_panics(s in "\\PC{0,60}") {
-        let _ = parse_rational(&s);
-        if let Ok(p) = parse_poly(&s) {
-            prop_assert_eq!(parse_poly(&p.to_string_canonical()).unwrap(), p);
-        }
+        parse_everything(&s);
     }
 
-    /// Text built from the grammar's own alphabet reaches deep into the parser.
+    /// `parse_poly` on text built from the grammar's own alphabet, which
+    /// reaches deep into the parser (powers, products, long numbers).
     #[test]
     fn parse_poly_grammar_alphabet(s in "[-+*/^() xyzu0-9.eE]{0,80}") {
-        if let Ok(p) = parse_poly(&s) {
-            prop_assert_eq!(parse_poly(&p.to_string_canonical()).unwrap(), p);
-        }
+        parse_everything(&s);
     }
 
-    /// Any batch line gives exactly one answer object with `ok`.
+    /// `batch_line` on arbitrary text and on arbitrary bytes (read as the
+    /// CLI reads a line: invalid UTF-8 becomes U+FFFD).
     #[test]
-    fn batch_line_always_answers(s in "\\PC{0,80}") {
-        let v = answer_line(&s);
-        prop_assert!(v.get("ok").and_then(|b| b.as_bool()).is_some());
+    fn batch_line_always_answers(s in "\\PC{0,80}", bytes in proptest::collection::vec(any::<u8>(), 0..80)) {
+        answer_line(&s);
+        answer_line(&String::from_utf8_lossy(&bytes));
     }
 
-    /// The natural-quadric parser never panics on arbitrary text.
+    /// `natural_parse` on arbitrary text.
     #[test]
     fn natural_parser_never_panics(s in "\\PC{0,60}") {
-        let _ = crate::natural::parse_natural(&s);
+        let _ = parse_natural(&s);
     }
 
     /// Text close to the short syntax reaches deep into the parser, and
@@ -72,22 +262,76 @@ proptest! {
     fn natural_syntax_alphabet(kind in "(sphere|cylinder|cone|torus)", k1 in "(center|point|vertex|axis|radius2|tan2|tan|cos2|sin2|foo)",
                                v1 in "[-0-9/.,e]{0,12}", k2 in "(axis|radius2|tan2|cos2)", v2 in "[-0-9/.,]{0,10}") {
         let text = format!("{kind} {k1}={v1} {k2}={v2}");
-        if let Ok(q) = crate::natural::parse_natural(&text) {
-            let other = crate::natural::parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
-            let budget = Budget::default().with_time_limit(Some(LIMIT));
-            let t0 = Instant::now();
-            let _ = crate::natural::classify_with(&q, &other, &crate::natural::ClassifyOptions::with_budget(budget));
-            prop_assert!(t0.elapsed() <= LIMIT + SLACK, "{} took {:?}", text, t0.elapsed());
+        if let Some(q) = parse_natural(&text) {
+            let other = parse_natural("cylinder point=0,0,0 axis=1,0,0 radius2=1").unwrap();
+            classify_within_budget(&q, &other, true);
         }
     }
 
-    /// Well-formed JSON with random fields still answers.
+    /// Well-formed lines of every op with random text in their fields,
+    /// random limits and now and then a stray field: the documented answer
+    /// (unknown op, unknown field, bad limit, or the op's own answer).
     #[test]
-    fn batch_json_fields(op in "(roots|resultant|tangent|natural|bogus)", a in "[-+*/^() xyzu0-9]{0,20}", b in "[-+*/^() xyzu0-9]{0,20}") {
-        let line = serde_json::json!({"id": 1, "op": op, "poly": a, "f": a, "g": b, "var": "x",
-            "ellipsoid": a, "surface": b, "a": a, "b": b}).to_string();
-        let v = answer_line(&line);
-        prop_assert_eq!(v.get("id").cloned(), Some(serde_json::json!(1)));
+    fn batch_json_fields(op in "(roots|resultant|tangent|natural|bogus)",
+                         text in proptest::collection::vec("[-+*/^() xyzu0-9]{0,20}", 3),
+                         flag in any::<bool>(),
+                         time in proptest::option::of(limit_value()),
+                         memory in proptest::option::of(limit_value()),
+                         stray in proptest::option::of("[a-z_]{1,10}")) {
+        let mut line = serde_json::Map::new();
+        line.insert("id".into(), json!(1));
+        line.insert("op".into(), json!(op));
+        let fields = crate::request::OPS.iter().find(|(n, _)| *n == op).map_or(&[][..], |(_, f)| *f);
+        for (i, f) in fields.iter().enumerate() {
+            let v = match *f {
+                "values" | "components" | "float" => json!(flag),
+                "var" => json!(["x", "y", "w"][i % 3]),
+                _ => json!(text[i % text.len()]),
+            };
+            line.insert((*f).into(), v);
+        }
+        if let Some(t) = &time {
+            line.insert("time_limit".into(), t.clone());
+        }
+        if let Some(m) = &memory {
+            line.insert("memory_limit".into(), m.clone());
+        }
+        let known = |k: &str| ["id", "op", "time_limit", "memory_limit"].contains(&k) || fields.contains(&k);
+        let stray = stray.filter(|k| !known(k));
+        if let Some(k) = &stray {
+            line.insert(k.clone(), json!(1));
+        }
+        let v = answer_line(&Value::Object(line).to_string());
+        prop_assert_eq!(&v["id"], &json!(1));
+        let kind = v["error"]["kind"].as_str().unwrap_or("");
+        let message = v["error"]["message"].as_str().unwrap_or("");
+        let bad = |l: &Option<Value>| l.as_ref().is_some_and(|x| !valid_limit(x));
+        if op == "bogus" {
+            prop_assert_eq!(kind, "unknown-op");
+        } else if let Some(k) = &stray {
+            prop_assert_eq!(kind, "bad-field");
+            prop_assert!(message.starts_with(&format!("unknown field \"{k}\"")), "{}", message);
+        } else if bad(&time) || bad(&memory) {
+            let name = if bad(&time) { "time_limit" } else { "memory_limit" };
+            prop_assert_eq!(kind, "bad-field");
+            prop_assert!(message.starts_with(&format!("field \"{name}\"")), "{}", message);
+        } else {
+            prop_assert!(kind != "bad-field" && kind != "unknown-op", "{}", v);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 500, .. ProptestConfig::default() })]
+
+    /// `natural_parse` on pairs of mostly valid quadrics of every kind, in
+    /// both syntaxes: they print back to themselves and classify within
+    /// the budget by both routes.
+    #[test]
+    fn natural_pairs_classify_within_the_budget(a in quadric_text(), b in quadric_text(), components in any::<bool>()) {
+        if let (Some(x), Some(y)) = (parse_natural(&a), parse_natural(&b)) {
+            classify_within_budget(&x, &y, components);
+        }
     }
 }
 
@@ -103,6 +347,51 @@ fn fuzzer_slow_inputs_end_within_the_budget() {
         let v = answer_line(line);
         assert!(v.get("ok").is_some(), "{v}");
     }
+}
+
+/// Found by libFuzzer (`fuzz/`, parse_poly: the first input ran 1.5 s
+/// under a 0.5 s budget): a product of polynomials with large coefficients
+/// read the clock every 64 rows, and ran up to 64 rows past its deadline
+/// (`poly::mpoly` now reads it every row when rows are large).  The second
+/// input needs minutes without a budget.
+#[test]
+fn fuzzer_slow_parses_end_within_the_budget() {
+    for s in ["(9 + y/7/ 9)^416 -/8 \u{f}16 -^1", "(9 + y/7/9)^2000"] {
+        let budget = Budget::default().with_time_limit(Some(LIMIT));
+        let t0 = Instant::now();
+        let r = crate::budget::run(&budget, || parse_poly(s).map(|p| p.len()));
+        let took = t0.elapsed();
+        assert!(took <= LIMIT + SLACK, "{s:?} took {took:?}");
+        assert!(r.is_err() || !s.ends_with("2000"), "{s:?}: {r:?}");
+    }
+}
+
+/// Found by libFuzzer (`fuzz/`, parse_poly: `(2^3)^77773 -0-1_…` ran
+/// 1.2–1.6 s under a 0.5 s budget in the sanitizer build): one step of a
+/// sum of huge integers is a gcd (num-bigint's binary gcd, quadratic in the
+/// bits even against 1: about 0.15 s natively for 233 000 bits, five times
+/// that under AddressSanitizer).  That is the budget's documented
+/// granularity, one arithmetic operation, and not a missed check: the sum
+/// reads the clock before each large step (`poly::ring`), so a run stops
+/// after the step running at its deadline, not several steps later.
+#[test]
+fn a_sum_of_huge_integers_stops_a_step_after_its_deadline() {
+    let one = "8^77773 - 1";
+    let t0 = Instant::now();
+    let _ = parse_poly(one).unwrap();
+    let step = t0.elapsed();
+    let six = [one; 6].join(" + ");
+    let limit = Duration::from_millis(1);
+    let t0 = Instant::now();
+    let r = crate::budget::run(&Budget::default().with_time_limit(Some(limit)), || {
+        parse_poly(&six).map(|p| p.len())
+    });
+    let took = t0.elapsed();
+    assert!(r.is_err(), "six steps end after the deadline: {r:?}");
+    assert!(
+        took <= limit + 3 * step + Duration::from_millis(20),
+        "{took:?} with a limit of {limit:?} and steps of {step:?}"
+    );
 }
 
 /// Inputs found by libFuzzer (`fuzz/`): huge constants must either be
