@@ -16,13 +16,20 @@ the last place).  A :class:`CurveBranch`'s point is given this way only
 are the ``"f64"`` blocks of the CLI's ``--json``.
 
 All classes are frozen dataclasses: comparable, hashable, picklable.
+
+**The dict form.**  Before these classes, components were dicts of the
+CLI's ``--json`` (exact rationals as ``Fraction``, ``a + b√d`` as ``{"a",
+"b", "d", "approx"}``, lists for vectors).  That form stays available:
+``component.to_dict()`` returns it, and ``component["semi_axes2"]``,
+``component.get(key)``, ``component.keys()`` and ``key in component`` read
+it, so code written for the dicts keeps working.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any, ClassVar, Literal, Optional, Tuple, Union
+from typing import Any, ClassVar, Dict, Iterator, List, Literal, Optional, Tuple, Union
 
 from ._quadsect import QuadraticIrrational, RealAlgebraic
 
@@ -67,6 +74,59 @@ def _approx(v: Vector64) -> str:
     return "(" + ", ".join(f"{x:.6g}" for x, _ in v) + ")"
 
 
+def _exact_dict(x: Any) -> Any:
+    """A number as the dict form spells it (the CLI's JSON, rationals as
+    ``Fraction``)."""
+    if isinstance(x, Fraction):
+        return x
+    if isinstance(x, QuadraticIrrational):
+        return {"a": x.a, "b": x.b, "d": x.d, "approx": x.approx(20)}
+    if isinstance(x, RealAlgebraic):
+        j = x.to_json()
+        return {"poly": j["poly"], "interval": [Fraction(c) for c in j["interval"]], "approx": j["approx"]}
+    if x is None:
+        return None
+    if isinstance(x, tuple):
+        return [_exact_dict(c) for c in x]
+    return x
+
+
+def _f64_dict(x: Any) -> Any:
+    """Certified doubles as the dict form spells them (lists)."""
+    if x is None:
+        return None
+    if isinstance(x, tuple):
+        return [_f64_dict(c) for c in x]
+    return x
+
+
+class _DictForm:
+    """Read access to the dict form (:meth:`to_dict`) by key, as the
+    components were before they were typed."""
+
+    __slots__ = ()
+
+    def to_dict(self) -> Dict[str, Any]:  # pragma: no cover - overridden
+        raise NotImplementedError
+
+    def __getitem__(self, key: str) -> Any:
+        return self.to_dict()[key]
+
+    def get(self, key: str, default: Any = None) -> Any:
+        """``to_dict().get(key, default)``."""
+        return self.to_dict().get(key, default)
+
+    def keys(self) -> List[str]:
+        """The keys of the dict form."""
+        return list(self.to_dict())
+
+    def __contains__(self, key: object) -> bool:
+        return key in self.to_dict()
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.to_dict())
+
+
 @dataclass(frozen=True, repr=False)
 class Plane:
     """The plane ``normal · P = offset`` of a conic.
@@ -87,9 +147,13 @@ class Plane:
     def __repr__(self) -> str:
         return f"Plane(normal={_vec(self.normal)}, offset={_num(self.offset)})"
 
+    def to_dict(self) -> Dict[str, Any]:
+        """``{"normal", "offset"}`` as in the CLI's JSON."""
+        return {"normal": _exact_dict(self.normal), "offset": _exact_dict(self.offset)}
+
 
 @dataclass(frozen=True, repr=False)
-class Conic:
+class Conic(_DictForm):
     """A real conic of the intersection: ``kind`` is ``"circle"``,
     ``"ellipse"``, ``"hyperbola"`` or ``"parabola"``; it lies in
     :attr:`plane`.
@@ -138,9 +202,35 @@ class Conic:
         double = ", double" if self.double else ""
         return f"Conic({self.kind!r}, {where}, plane={self.plane!r}{double})"
 
+    def to_dict(self) -> Dict[str, Any]:
+        """The dict form: the component as in the CLI's ``--json``, exact
+        rationals as ``Fraction`` (see the module's documentation)."""
+        return {
+            "type": "conic",
+            "conic": self.kind,
+            "plane": self.plane.to_dict(),
+            "center": _exact_dict(self.center),
+            "vertex": _exact_dict(self.vertex),
+            "semi_axes2": _exact_dict(self.semi_axes2),
+            "axis_directions": _exact_dict(self.axis_directions),
+            "focal_length2": _exact_dict(self.focal_length2),
+            "double": self.double,
+            "f64": {
+                "plane": {
+                    "normal": _f64_dict(self.plane.normal_f64),
+                    "offset": _f64_dict(self.plane.offset_f64),
+                },
+                "center": _f64_dict(self.center_f64),
+                "vertex": _f64_dict(self.vertex_f64),
+                "semi_axes2": _f64_dict(self.semi_axes2_f64),
+                "axis_directions": _f64_dict(self.axis_directions_f64),
+                "focal_length2": _f64_dict(self.focal_length2_f64),
+            },
+        }
+
 
 @dataclass(frozen=True, repr=False)
-class Line:
+class Line(_DictForm):
     """A real line of the intersection: the points ``point + t·direction``
     (``t`` real).  A rational direction is scaled to a primitive integer
     vector.  ``double`` is true when the surfaces are tangent along it (a
@@ -160,9 +250,19 @@ class Line:
         double = ", double" if self.double else ""
         return f"Line(point={_vec(self.point)}, direction={_vec(self.direction)}{double})"
 
+    def to_dict(self) -> Dict[str, Any]:
+        """The dict form (as in the CLI's ``--json``)."""
+        return {
+            "type": "line",
+            "point": _exact_dict(self.point),
+            "direction": _exact_dict(self.direction),
+            "double": self.double,
+            "f64": {"point": _f64_dict(self.point_f64), "direction": _f64_dict(self.direction_f64)},
+        }
+
 
 @dataclass(frozen=True, repr=False)
-class Point:
+class Point(_DictForm):
     """An isolated real point of the intersection: ``kind`` is
     ``"tangency"`` (the surfaces touch there), ``"vertex"`` (a cone's vertex
     alone on the other surface) or ``"acnode"`` (an isolated singular point
@@ -177,6 +277,15 @@ class Point:
 
     def __repr__(self) -> str:
         return f"Point({self.kind!r}, {_vec(self.point)})"
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The dict form (as in the CLI's ``--json``)."""
+        return {
+            "type": "point",
+            "point": _exact_dict(self.point),
+            "kind": self.kind,
+            "f64": {"point": _f64_dict(self.point_f64)},
+        }
 
 
 @dataclass(frozen=True, repr=False)
@@ -197,6 +306,10 @@ class SingularPoint:
 
     def __repr__(self) -> str:
         return f"SingularPoint({self.kind!r}, {_vec(self.point)})"
+
+    def to_dict(self) -> Dict[str, Any]:
+        """``{"point", "kind", "isolated"}`` as in the CLI's JSON."""
+        return {"point": _exact_dict(self.point), "kind": self.kind, "isolated": self.isolated}
 
 
 @dataclass(frozen=True, repr=False)
@@ -232,9 +345,26 @@ class CurveBranch:
     def __repr__(self) -> str:
         return f"CurveBranch(bounded={self.bounded}, point≈{_approx(self.point_f64)})"
 
+    def to_dict(self) -> Dict[str, Any]:
+        """The branch as in the CLI's JSON: ``bounded``, ``point`` (the
+        certified doubles), ``ruling`` and ``along_ruling``."""
+        a, b, c = self.quadratic
+        return {
+            "bounded": self.bounded,
+            "point": _f64_dict(self.point_f64),
+            "ruling": {"point": _exact_dict(self.ruling_point), "direction": _exact_dict(self.ruling_direction)},
+            "along_ruling": {
+                "a": _exact_dict(a),
+                "b": _exact_dict(b),
+                "c": _exact_dict(c),
+                "root": self.root,
+                "t": _exact_dict(self.t),
+            },
+        }
+
 
 @dataclass(frozen=True, repr=False)
-class Curve:
+class Curve(_DictForm):
     """A genuine space curve of the intersection (not made of lines and
     conics): a quartic, or a twisted cubic beside a common line
     (``degree`` 4 or 3), with its real affine singular points
@@ -261,6 +391,17 @@ class Curve:
             f"Curve(degree={self.degree}, singular_points=[{sing}], "
             f"branches={len(self.branches)} ({bounded} bounded))"
         )
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The dict form (as in the CLI's ``--json``)."""
+        return {
+            "type": "curve",
+            "degree": self.degree,
+            "singular_points": [s.to_dict() for s in self.singular_points],
+            "real_components": self.real_components,
+            "branches": [b.to_dict() for b in self.branches],
+            "f64": {"singular_points": [_f64_dict(s.point_f64) for s in self.singular_points]},
+        }
 
 
 Component = Union[Conic, Line, Point, Curve]

@@ -160,11 +160,7 @@ impl<'a> Input<'a> {
     }
 }
 
-fn options(
-    py: Python<'_>,
-    time_limit: Option<f64>,
-    components: bool,
-) -> PyResult<ClassifyOptions> {
+fn options(py: Python<'_>, time_limit: Option<f64>, components: bool) -> PyResult<ClassifyOptions> {
     let options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
     Ok(if components {
         options
@@ -208,7 +204,9 @@ pub(crate) fn natural(
         let qb = ib.natural("in the second quadric")?;
         // boxed at once: the report is large, and moves of it would cost
         // a noticeable part of a fast call
-        Ok(Box::new(quadsect::natural::classify_with(&qa, &qb, &options)?))
+        Ok(Box::new(quadsect::natural::classify_with(
+            &qa, &qb, &options,
+        )?))
     })?;
     let report = NativeReport { r };
     let head = report.head();
@@ -460,9 +458,10 @@ impl Part {
                     ]
                     .into_iter(),
                 )?;
-                let opt = |p: &Option<Pt>, f: fn(Python<'py>, &Pt) -> PyResult<Bound<'py, PyAny>>| {
-                    p.as_ref().map_or_else(|| Ok(none()), |p| f(py, p))
-                };
+                let opt =
+                    |p: &Option<Pt>, f: fn(Python<'py>, &Pt) -> PyResult<Bound<'py, PyAny>>| {
+                        p.as_ref().map_or_else(|| Ok(none()), |p| f(py, p))
+                    };
                 vec![
                     tag("conic"),
                     tag(kind),

@@ -271,14 +271,19 @@ impl QSqrt {
     /// bounds on `√d` of growing precision.
     pub fn to_f64_bounded(&self) -> (f64, f64) {
         use super::xball::XBall;
+        /// 2^50: a ball is tight when its radius is below 2^-50 of its
+        /// midpoint (at most 4 units in the last place).
+        const TIGHT: f64 = 1_125_899_906_842_624.0;
         let ball = if self.b.is_zero() {
             XBall::from_q(&self.a)
         } else {
             let fast = XBall::from_q(&self.d)
                 .sqrt()
                 .map(|r| XBall::from_q(&self.a).add(&XBall::from_q(&self.b).mul(&r)));
+            // accepted when the radius is below 2^-50 of the midpoint: the
+            // bound is then at most a few units in the last place
             match fast {
-                Some(b) if b.r * 1_099_511_627_776.0 < b.m.abs() => b,
+                Some(b) if b.r * TIGHT < b.m.abs() => b,
                 _ => {
                     // rational enclosures of √d until the sum is tight
                     let mut bits = 128u32;
@@ -286,7 +291,7 @@ impl QSqrt {
                         let (lo, hi) = super::sqrt_bounds(&self.d, bits);
                         let (x, y) = (&self.a + &self.b * &lo, &self.a + &self.b * &hi);
                         let b = XBall::from_interval(&x.clone().min(y.clone()), &x.max(y));
-                        if b.r * 1_099_511_627_776.0 < b.m.abs() || bits > 1 << 16 {
+                        if b.r * TIGHT < b.m.abs() || bits > 1 << 16 {
                             break b;
                         }
                         bits *= 2;
@@ -495,6 +500,38 @@ mod tests {
         let inv = s2.inv().unwrap();
         assert_eq!(inv.mul(&s2), QSqrt::rational(qi(1)));
         assert_eq!(s2.approx(10), "1.414213562");
+    }
+
+    #[test]
+    fn f64_bounded_encloses_and_is_tight_under_cancellation() {
+        // (a, b, d): no cancellation, mild (3 − 1.5·√3 ≈ 0.40), strong
+        // (99/70 − √2 ≈ −7.2e-5, 665857/470832 − √2 ≈ 1.6e-12)
+        let cases = [
+            (qi(1), qi(1), qi(2)),
+            (qi(3), q(-3, 2), qi(3)),
+            (qi(-3), q(3, 2), qi(3)),
+            (q(99, 70), qi(-1), qi(2)),
+            (q(665857, 470832), qi(-1), qi(2)),
+            (q(1, 3), q(-7, 5), qi(11)),
+        ];
+        for (a, b, d) in cases {
+            let x = QSqrt::new(a, b, d);
+            let (v, bound) = x.to_f64_bounded();
+            let (vq, bq) = (Q::from_float(v).unwrap(), Q::from_float(bound).unwrap());
+            assert!(
+                QSqrt::rational(&vq - &bq).cmp_exact(&x) != Ordering::Greater,
+                "{x:?}"
+            );
+            assert!(
+                QSqrt::rational(&vq + &bq).cmp_exact(&x) != Ordering::Less,
+                "{x:?}"
+            );
+            // a few units in the last place (ulp(v) ≥ |v|·2^-53)
+            assert!(
+                bound <= 8.0 * f64::EPSILON * v.abs(),
+                "{x:?}: {v} ± {bound}"
+            );
+        }
     }
 
     #[test]
