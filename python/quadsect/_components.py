@@ -11,7 +11,8 @@ vectors are tuples of three.
 **Certified doubles.**  Every numeric field ``x`` has a twin ``x_f64`` of
 the same shape in which each number is a pair ``(value, bound)``: a double
 and a proven bound on its error, ``|exact − value| ≤ bound`` (a few units in
-the last place).  A :class:`CurveBranch`'s point is given this way only
+the last place, at most ``2**-46 * abs(value)``; 0 when the exact number is
+itself a double).  A :class:`CurveBranch`'s point is given this way only
 (``point_f64``): its exact coordinates nest square roots.  The same pairs
 are the ``"f64"`` blocks of the CLI's ``--json``.
 

@@ -573,7 +573,8 @@ impl QuadraticIrrational {
     /// to_f64_bounded() -> tuple[float, float]
     ///
     /// ``(value, bound)``: a double and a proven bound on its error,
-    /// ``|x − value| ≤ bound`` (a few units in the last place of ``value``).
+    /// ``|x − value| ≤ bound`` (a few units in the last place of ``value``,
+    /// at most ``2**-46 * abs(value)``).
     fn to_f64_bounded(&self, py: Python<'_>) -> PyResult<(f64, f64)> {
         guard::run(py, || Ok(self.value.to_f64_bounded()))
     }

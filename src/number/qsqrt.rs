@@ -265,33 +265,38 @@ impl QSqrt {
     }
 
     /// The value as a double with a proven bound on its error:
-    /// `|self − v| ≤ b` for `(v, b)`, the bound within a few units in the
-    /// last place of `v` however close to 0 the value is (`(±∞, ∞)` beyond
-    /// the range of doubles).  Cancellation in `a + b√d` is met by rational
+    /// `|self − v| ≤ b` for `(v, b)`, with `b ≤ 2^-46·|v|` (a few units in
+    /// the last place of `v`, at most 64) however close to 0 the value is,
+    /// and `b = 0` for a rational that is a double; `(±∞, ∞)` beyond the
+    /// range of doubles.  Cancellation in `a + b√d` is met by rational
     /// bounds on `√d` of growing precision.
     pub fn to_f64_bounded(&self) -> (f64, f64) {
         use super::xball::XBall;
-        /// 2^50: a ball is tight when its radius is below 2^-50 of its
-        /// midpoint (at most 4 units in the last place).
-        const TIGHT: f64 = 1_125_899_906_842_624.0;
+        /// 2^47: a ball is tight enough when its radius is below 2^-47 of
+        /// its midpoint.  A ball of `√d` alone is about 2^-50 wide
+        /// (relative), the conversions of `a`, `b` add a few 2^-53: the
+        /// double-ball route passes unless `a + b√d` cancels more than a
+        /// few bits; a rational enclosure of the sum converts within
+        /// about 7·2^-53.
+        const TIGHT: f64 = 140_737_488_355_328.0;
         let ball = if self.b.is_zero() {
             XBall::from_q(&self.a)
         } else {
             let fast = XBall::from_q(&self.d)
                 .sqrt()
                 .map(|r| XBall::from_q(&self.a).add(&XBall::from_q(&self.b).mul(&r)));
-            // accepted when the radius is below 2^-50 of the midpoint: the
-            // bound is then at most a few units in the last place
             match fast {
                 Some(b) if b.r * TIGHT < b.m.abs() => b,
                 _ => {
-                    // rational enclosures of √d until the sum is tight
+                    // rational enclosures of √d until the sum is tight (the
+                    // sum is irrational, so not 0: its relative width falls
+                    // as the precision grows)
                     let mut bits = 128u32;
                     loop {
                         let (lo, hi) = super::sqrt_bounds(&self.d, bits);
                         let (x, y) = (&self.a + &self.b * &lo, &self.a + &self.b * &hi);
                         let b = XBall::from_interval(&x.clone().min(y.clone()), &x.max(y));
-                        if b.r * TIGHT < b.m.abs() || bits > 1 << 16 {
+                        if b.r * TIGHT < b.m.abs() || bits >= 1 << 14 {
                             break b;
                         }
                         bits *= 2;
@@ -513,6 +518,19 @@ mod tests {
             (q(99, 70), qi(-1), qi(2)),
             (q(665857, 470832), qi(-1), qi(2)),
             (q(1, 3), q(-7, 5), qi(11)),
+            // a tiny coefficient of a huge radicand (a curve branch's ruling)
+            (
+                qi(0),
+                Q::new(
+                    BigInt::from(-1),
+                    "1772303994379887832075638086516255403".parse().unwrap(),
+                ),
+                Q::from_integer(
+                    "2724436517094913528924234705567029378355482133044366905"
+                        .parse()
+                        .unwrap(),
+                ),
+            ),
         ];
         for (a, b, d) in cases {
             let x = QSqrt::new(a, b, d);
@@ -526,9 +544,9 @@ mod tests {
                 QSqrt::rational(&vq + &bq).cmp_exact(&x) != Ordering::Less,
                 "{x:?}"
             );
-            // a few units in the last place (ulp(v) ≥ |v|·2^-53)
+            // at most 2^-46·|v| (64 units in the last place at worst)
             assert!(
-                bound <= 8.0 * f64::EPSILON * v.abs(),
+                bound <= v.abs() / 70_368_744_177_664.0,
                 "{x:?}: {v} ± {bound}"
             );
         }
