@@ -345,6 +345,9 @@ struct Branch {
 /// A component in the form the answers print (planes and rational
 /// directions normalized, as in the JSON), every number with its certified
 /// double: computed by the engine with the GIL released, then converted.
+// a few per answer, each converted to Python at once: the size of a conic
+// beside a line costs nothing worth a box
+#[allow(clippy::large_enum_variant)]
 enum Part {
     Conic {
         kind: &'static str,
