@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds libquadsect.a and libquadsect.so, compiles the C and C++ examples,
-# the hostile-input test and the C example of the README's "C and C++"
-# section (as written, at most 15 lines) against each of them with gcc
+# Builds libquadsect.a and libquadsect.so, compiles the C and C++ examples
+# (example.c, example.cpp, and components.c: the typed components of
+# natural pairs), the hostile-input test and the C example of the README's
+# "C and C++" section (as written, at most 15 lines) against each of them with gcc
 # (C99) and g++ (C++11), runs them, compares their output with the
 # expected files, and runs them under valgrind --leak-check=full (leaks and
 # memory errors fail) when valgrind is installed.  Prints "examples: N
@@ -96,6 +97,7 @@ check() {
 
 build example gcc "$here/examples/example.c" "${cflags[@]}"
 build example_cpp g++ "$here/examples/example.cpp" "${cxxflags[@]}"
+build components gcc "$here/examples/components.c" "${cflags[@]}"
 build hostile gcc "$here/examples/hostile.c" "${cflags[@]}"
 build readme gcc "$work/readme.c" "${cflags[@]}"
 # the header alone compiles as C++11 too (extern "C" guards)
@@ -108,6 +110,7 @@ fi
 
 check example "$here/examples/expected/example.txt"
 check example_cpp "$here/examples/expected/example_cpp.txt"
+check components "$here/examples/expected/components.txt"
 check hostile -
 check readme "$work/readme.txt"
 

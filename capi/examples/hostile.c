@@ -62,6 +62,14 @@ static void natural_f64(const char *what, const qs_natural_f64 *a, const qs_natu
     check(what, r.conics == 0 && r.lines == 0 && r.points == 0);
 }
 
+static void natural_components(const char *what, const qs_natural_f64 *a, const qs_natural_f64 *b) {
+    qs_natural_components *out = (qs_natural_components *)&out; /* garbage to be cleared */
+    qs_error *err = NULL;
+    int code = qs_natural_components_f64(a, b, NULL, &out, &err);
+    expect_input_error(what, code, err, out);
+    qs_natural_components_free(out); /* NULL: does nothing */
+}
+
 static void tangent_f64(const char *what, const qs_ellipsoid_f64 *e, const double *q) {
     qs_tangent_result r;
     qs_error *err = NULL;
@@ -162,6 +170,45 @@ int main(void) {
     code = qs_natural_classify_f64(&good, &good, NULL, &err);
     expect_input_error("NULL natural out", code, err, NULL);
     (void)nr;
+
+    /* the typed components: the same refusals, *out NULL (even when it held
+     * garbage), nothing to free */
+    bad = good;
+    bad.point[0] = NAN;
+    natural_components("components: NaN centre", &bad, &good);
+    bad = good;
+    bad.param = -INFINITY;
+    natural_components("components: infinite radius2", &good, &bad);
+    bad = good;
+    bad.param = -1.0;
+    natural_components("components: negative radius2", &bad, &good);
+    bad.kind = -7;
+    bad.param = 1.0;
+    natural_components("components: unknown kind", &bad, &good);
+    cyl.axis[0] = 0.0;
+    natural_components("components: zero axis", &good, &cyl);
+    cyl.axis[1] = INFINITY;
+    natural_components("components: infinite axis", &cyl, &good);
+    natural_components("components: NULL a", NULL, &good);
+    natural_components("components: NULL b", &good, NULL);
+    code = qs_natural_components_f64(&good, &good, NULL, NULL, &err);
+    expect_input_error("components: NULL out", code, err, NULL);
+    check("components: NULL err still returns the code",
+          qs_natural_components_f64(NULL, NULL, NULL, NULL, NULL) == QS_ERR_INPUT);
+    qs_natural_components_free(NULL);
+    /* extreme but valid doubles: an answer, never a crash, and no infinite
+     * direction (directions are scaled into the range of doubles) */
+    qs_natural_f64 tiny = {QS_CYLINDER, {0, 0, 0}, {0, 1e-300, 3e-300}, 1.0};
+    qs_natural_f64 tiny2 = {QS_CYLINDER, {1, 0, 0}, {0, 1e-300, 3e-300}, 1.0};
+    qs_natural_components *nc = NULL;
+    code = qs_natural_components_f64(&tiny, &tiny2, NULL, &nc, NULL);
+    int finite = code == QS_OK && nc != NULL && nc->count == 2;
+    for (size_t i = 0; finite && i < nc->count; i++)
+        for (int k = 0; k < 3; k++)
+            finite = finite && nc->components[i].tag == QS_COMPONENT_LINE &&
+                     isfinite(nc->components[i].data.line.direction[k].value);
+    check("components: axes of 1e-300 give two finite lines", finite);
+    qs_natural_components_free(nc);
 
     qs_ellipsoid_f64 e = {{0, 0, 0}, {1, 1, 1}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
     double q[10] = {0, 0, 0, 0, 0, 0, 1, 0, 0, 0};

@@ -266,6 +266,262 @@ typedef struct qs_tangent_result {
 } qs_tangent_result;
 
 /**
+ * The type of a component (`qs_component.tag`).
+ */
+typedef int32_t qs_component_type;
+
+/**
+ * The type of a conic.
+ */
+typedef int32_t qs_conic_kind;
+
+/**
+ * A real number as a double with a proven bound on its error: the exact
+ * value `x` satisfies `|x − value| ≤ bound` (the double arithmetic of
+ * the check is the caller's: `value − bound ≤ x ≤ value + bound` holds
+ * for the real numbers these doubles denote).  A rational `x` is rounded
+ * to the nearest double: `bound` is 0 when `x` is that double, otherwise
+ * one unit in the last place; an irrational `x` (`a + b√d`, or a root of
+ * a higher-degree polynomial) is within a few units in the last place
+ * (the `[value, bound]` pairs of the JSON's `f64` blocks); a curve's
+ * branch point within about 1e-10 relative.  Beyond the range of doubles
+ * `value` is ±infinity and `bound` infinity (possible for coordinates
+ * only: directions and planes are scaled into range).  A field that does
+ * not apply (a parabola's semi-axes, an ellipse's focal length², an
+ * unused array entry) is `{NaN, NaN}`.
+ */
+typedef struct qs_ball {
+    /**
+     * The double nearest to the exact value, or close to it.
+     */
+    double value;
+    /**
+     * A proven bound on `|exact − value|`.
+     */
+    double bound;
+} qs_ball;
+
+/**
+ * A conic in its plane `normal · P = offset`.  The plane is the JSON's
+ * (rational coefficients scaled to primitive integers), except that a
+ * plane or direction whose numbers would lie beyond the range of doubles
+ * is multiplied by a power of two (exactly) so that its largest entry is
+ * near 1.
+ */
+typedef struct qs_conic {
+    /**
+     * `QS_CONIC_…`.
+     */
+    qs_conic_kind kind;
+    /**
+     * 1 when the surfaces are tangent along the conic (a double conic).
+     */
+    int32_t is_double;
+    /**
+     * The plane's normal (not of unit length).
+     */
+    struct qs_ball normal[3];
+    /**
+     * The plane's right-hand side.
+     */
+    struct qs_ball offset;
+    /**
+     * 0: `center` is the centre (circle, ellipse, hyperbola); 1: it is
+     * the vertex (parabola).
+     */
+    int32_t is_vertex;
+    /**
+     * How many entries of `semi_axes2` are set: 2, or 0 for a parabola.
+     */
+    uint32_t n_semi_axes2;
+    /**
+     * The centre, or the vertex of a parabola (see `is_vertex`).
+     */
+    struct qs_ball center[3];
+    /**
+     * The squared semi-axes (a circle's radius² twice; a hyperbola's
+     * transverse one first); `{NaN, NaN}` for a parabola.
+     */
+    struct qs_ball semi_axes2[2];
+    /**
+     * How many entries of `axis_dirs` are set: 2, or 1 for a parabola.
+     */
+    uint32_t n_axis_dirs;
+    /**
+     * The directions of the semi-axes in the same order (any length;
+     * rational ones scaled to primitive integers, as in the JSON), or
+     * `axis_dirs[0]` the axis of a parabola; unset entries are
+     * `{NaN, NaN}`.
+     */
+    struct qs_ball axis_dirs[2][3];
+    /**
+     * A parabola's squared focal length; `{NaN, NaN}` otherwise.
+     */
+    struct qs_ball focal2;
+} qs_conic;
+
+/**
+ * A line `point + t·direction`.
+ */
+typedef struct qs_line {
+    /**
+     * A point of the line.
+     */
+    struct qs_ball point[3];
+    /**
+     * Its direction (non-zero, any length: the JSON's, multiplied by a
+     * power of two when its numbers would lie beyond the range of
+     * doubles).
+     */
+    struct qs_ball direction[3];
+    /**
+     * 1 when the surfaces are tangent along it (a double line).
+     */
+    int32_t is_double;
+} qs_line;
+
+/**
+ * Why an isolated point is isolated.
+ */
+typedef int32_t qs_point_kind;
+
+/**
+ * An isolated point of the intersection.
+ */
+typedef struct qs_point {
+    /**
+     * Its coordinates.
+     */
+    struct qs_ball point[3];
+    /**
+     * `QS_POINT_…`.
+     */
+    qs_point_kind kind;
+} qs_point;
+
+/**
+ * The type of a real singular point of a space curve.
+ */
+typedef int32_t qs_singular_kind;
+
+/**
+ * A real singular point of a space curve.
+ */
+typedef struct qs_singular_point {
+    /**
+     * Its coordinates.
+     */
+    struct qs_ball point[3];
+    /**
+     * `QS_SINGULAR_…`.
+     */
+    qs_singular_kind kind;
+} qs_singular_point;
+
+/**
+ * A real affine connected component (branch) of a space curve.
+ */
+typedef struct qs_curve_branch {
+    /**
+     * 1: a closed loop; 0: both its ends go to infinity.
+     */
+    int32_t bounded;
+    /**
+     * A point on it (where a marcher can start).
+     */
+    struct qs_ball point[3];
+} qs_curve_branch;
+
+/**
+ * A space curve that is not made of lines and conics.  The arrays belong
+ * to the `qs_natural_components` result and live until
+ * `qs_natural_components_free`.
+ */
+typedef struct qs_curve {
+    /**
+     * Its degree (4, or 3 for a twisted cubic beside a common line).
+     */
+    uint32_t degree;
+    /**
+     * The number of its real affine singular points.
+     */
+    size_t n_singular;
+    /**
+     * Its singular points (NULL when `n_singular` is 0).
+     */
+    const struct qs_singular_point *singular;
+    /**
+     * The number of its real affine connected components (at least 1
+     * for a real curve); 0 when they were not traced (so far: the twisted
+     * cubic beside a common line; the JSON has no more then).
+     */
+    size_t n_branches;
+    /**
+     * Its connected components (NULL when `n_branches` is 0).
+     */
+    const struct qs_curve_branch *branches;
+} qs_curve;
+
+/**
+ * The data of a component: the member named by `qs_component.tag`.
+ */
+typedef union qs_component_data {
+    /**
+     * `QS_COMPONENT_CONIC`.
+     */
+    struct qs_conic conic;
+    /**
+     * `QS_COMPONENT_LINE`.
+     */
+    struct qs_line line;
+    /**
+     * `QS_COMPONENT_POINT`.
+     */
+    struct qs_point point;
+    /**
+     * `QS_COMPONENT_CURVE`.
+     */
+    struct qs_curve curve;
+} qs_component_data;
+
+/**
+ * A real component of the intersection: a tag and its data.
+ */
+typedef struct qs_component {
+    /**
+     * `QS_COMPONENT_CONIC`, `_LINE`, `_POINT` or `_CURVE`: which member
+     * of `data` is set.
+     */
+    qs_component_type tag;
+    /**
+     * The component.
+     */
+    union qs_component_data data;
+} qs_component;
+
+/**
+ * The answer of `qs_natural_components_f64`: the class and counts (as
+ * `qs_natural_classify_f64` gives them) and the real affine components.
+ * Made by the library, read-only for the caller, freed (with every array
+ * in it) by `qs_natural_components_free`.
+ */
+typedef struct qs_natural_components {
+    /**
+     * The class, counts, axes and Theorem 8.
+     */
+    struct qs_natural_result result;
+    /**
+     * The number of components (0 for the classes empty, same surface
+     * and undecided).
+     */
+    size_t count;
+    /**
+     * The components (NULL when `count` is 0).
+     */
+    const struct qs_component *components;
+} qs_natural_components;
+
+/**
  * A sphere: `point` is the centre, `param` the squared radius.
  */
 #define QS_SPHERE 0
@@ -422,6 +678,83 @@ typedef struct qs_tangent_result {
  * A budget ran out (time, size, cancellation).
  */
 #define QS_UNDECIDED_BUDGET 2
+
+/**
+ * A conic: `data.conic`.
+ */
+#define QS_COMPONENT_CONIC 0
+
+/**
+ * A line: `data.line`.
+ */
+#define QS_COMPONENT_LINE 1
+
+/**
+ * An isolated point: `data.point`.
+ */
+#define QS_COMPONENT_POINT 2
+
+/**
+ * A space curve (a quartic, or a twisted cubic beside a common line):
+ * `data.curve`.
+ */
+#define QS_COMPONENT_CURVE 3
+
+/**
+ * A circle.
+ */
+#define QS_CONIC_CIRCLE 0
+
+/**
+ * A non-circular ellipse.
+ */
+#define QS_CONIC_ELLIPSE 1
+
+/**
+ * A hyperbola.
+ */
+#define QS_CONIC_HYPERBOLA 2
+
+/**
+ * A parabola.
+ */
+#define QS_CONIC_PARABOLA 3
+
+/**
+ * The surfaces touch there (an isolated tangency point).
+ */
+#define QS_POINT_TANGENCY 0
+
+/**
+ * A cone vertex that is an isolated point of the intersection.
+ */
+#define QS_POINT_VERTEX 1
+
+/**
+ * An isolated singular point (acnode) of an intersection curve.
+ */
+#define QS_POINT_ACNODE 2
+
+/**
+ * An isolated real point (the tangent cone is imaginary); counted in
+ * `qs_natural_result.points`.
+ */
+#define QS_SINGULAR_ACNODE 0
+
+/**
+ * Two real branches cross (a node with real tangents).
+ */
+#define QS_SINGULAR_CROSSING 1
+
+/**
+ * A cusp (the tangent cone is a double line).
+ */
+#define QS_SINGULAR_CUSP 2
+
+/**
+ * Two real branches touch.
+ */
+#define QS_SINGULAR_TACNODE 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -710,6 +1043,45 @@ int qs_tangent_quadric_f64_opts(const struct qs_ellipsoid_f64 *e,
                                 const struct qs_options *opts,
                                 struct qs_tangent_result *out,
                                 struct qs_error **err);
+
+/**
+ * Classifies the intersection of two natural quadrics given in doubles
+ * (exact values) and gives its real affine components: `*out` is a new
+ * `qs_natural_components` with the class and counts (as
+ * `qs_natural_classify_f64`) and `count` components, each a tagged
+ * `qs_component` (`QS_COMPONENT_CONIC`, `_LINE`, `_POINT`, `_CURVE`)
+ * whose numbers are doubles with proven error bounds (`qs_ball`), the
+ * values of the JSON's `f64` blocks.  `opts` NULL means the default
+ * budget (10 s).  Free `*out` with `qs_natural_components_free`.
+ *
+ * Returns 0; 3 (`QS_ERR_BUDGET`) when the budget ran out: `*out` is then
+ * a result with `QS_CLASS_UNDECIDED`, zero counts and no components (free
+ * it too); 2 for bad input (NaN, infinity, radius² ≤ 0, a zero axis, an
+ * unknown kind, a NULL pointer) or 1 internal: `*out` is then NULL.  On
+ * every non-zero code `*err` (when `err` is not NULL) says why.  Slower
+ * than `qs_natural_classify_f64`, which computes no components.
+ *
+ * # Safety
+ * `a` and `b` are NULL or valid `qs_natural_f64`; `opts` is NULL or a
+ * live `qs_options`; `out` is NULL or writable; `err` is NULL or points
+ * to a writable pointer.
+ */
+int qs_natural_components_f64(const struct qs_natural_f64 *a,
+                              const struct qs_natural_f64 *b,
+                              const struct qs_options *opts,
+                              struct qs_natural_components **out,
+                              struct qs_error **err);
+
+/**
+ * Frees a result of `qs_natural_components_f64` with all its arrays
+ * (NULL is allowed and does nothing).  Pointers into it (components,
+ * singular points, branches) are invalid afterwards.
+ *
+ * # Safety
+ * `c` is NULL or a result of `qs_natural_components_f64`, unmodified and
+ * freed only once.
+ */
+void qs_natural_components_free(struct qs_natural_components *c);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -8,7 +8,9 @@
 //!   the CLI's `--json` out, and one line of the batch protocol;
 //! * typed doubles ([`typed`]): natural quadrics, ellipsoids and quadrics
 //!   given as doubles, each taken as its exact binary value; answers in
-//!   small structs, extremes as doubles rounded outward ([`float`]).
+//!   small structs, extremes as doubles rounded outward ([`float`]), and
+//!   the components of two natural quadrics as doubles with proven error
+//!   bounds ([`components`]: one owned result, freed by its `_free`).
 //!
 //! Every entry point runs inside [`boundary::guard`]: a panic becomes an
 //! internal error (code 1), bad input code 2, an exhausted budget code 3
@@ -27,6 +29,8 @@ mod header;
 pub mod json;
 pub mod options;
 pub mod typed;
+// after typed: its section of the header follows qs_natural_classify_f64
+pub mod components;
 
 use std::ffi::c_char;
 

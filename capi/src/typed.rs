@@ -5,7 +5,7 @@
 use crate::boundary::{Answer, answer_into, input_error, qs_error, read_ref};
 use crate::float::{Enclosure, enclose, exact};
 use crate::options::{budget_of, qs_options};
-use engine::natural::{AxesRelation, Class, ClassifyOptions};
+use engine::natural::{AxesRelation, Class, ClassifyOptions, NaturalReport};
 use engine::tangent::{Containment, Side, TangentOptions, Undecided, Verdict};
 use engine::{
     Cone, Cylinder, Ellipsoid, Error, Natural, Polynomial, Rational, RealAlg, Sphere, Var,
@@ -239,7 +239,7 @@ fn exact3(v: &[f64; 3], what: &str) -> Result<[Rational; 3], Error> {
 }
 
 /// The natural quadric `q`, checked; `name` (`a`, `b`) prefixes errors.
-fn natural_of(q: &qs_natural_f64, name: &str) -> Result<Natural, Error> {
+pub(crate) fn natural_of(q: &qs_natural_f64, name: &str) -> Result<Natural, Error> {
     let point = exact3(&q.point, &format!("{name}.point"))?;
     let param = exact_double(q.param, || format!("{name}.param"))?;
     let axis = || exact3(&q.axis, &format!("{name}.axis"));
@@ -301,6 +301,13 @@ fn classify(
     let (a, b) = (natural_of(a, "a")?, natural_of(b, "b")?);
     let options = ClassifyOptions::with_budget(budget).without_components();
     let r = engine::natural::classify_with(&a, &b, &options)?;
+    natural_result(&r)
+}
+
+/// The class, counts, axes and Theorem 8 of a report, and the budget
+/// error when the budget ran out (the class is then `QS_CLASS_UNDECIDED`
+/// and the counts 0).
+pub(crate) fn natural_result(r: &NaturalReport) -> Result<Answer<qs_natural_result>, Error> {
     let exhausted = r.exhausted().map(|e| Error::from(e.clone()));
     let undecided = exhausted.is_some();
     let counted = |n: usize| if undecided { 0 } else { count(n) };

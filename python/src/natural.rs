@@ -11,6 +11,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyString, PyTuple};
 use quadsect::natural::{
     ClassifyOptions, Component, CurveBranch, EPoint, Exact, SingularPoint, normalize_direction,
+    normalize_plane,
 };
 use quadsect::{
     Class, Cone, Cylinder, Error, ErrorKind, Natural, NaturalReport, QSqrt, Rational, Sphere,
@@ -389,11 +390,11 @@ impl Part {
                 focal2,
                 double,
             } => {
-                let p = plane.normalized();
+                let (normal, offset) = normalize_plane(plane);
                 Part::Conic {
                     kind: kind.as_str(),
-                    normal: pt(&p.normal),
-                    offset: Num::new(&p.offset),
+                    normal: pt(&normal),
+                    offset: Num::new(&offset),
                     center: center.as_ref().map(pt),
                     vertex: vertex.as_ref().map(pt),
                     axes2: axes2.iter().map(Num::new).collect(),

@@ -47,5 +47,24 @@ pub(crate) fn components(
             return super::topology::classify_nonplanar(na, nb);
         }
     };
-    Ok((comps, Vec::new()))
+    Ok((
+        comps.into_iter().map(small_directions).collect(),
+        Vec::new(),
+    ))
+}
+
+/// Directions of lines and conic axes scaled to their smallest form
+/// ([`super::exact::primitive_direction`]).
+fn small_directions(mut c: Component) -> Component {
+    use super::exact::primitive_direction;
+    match &mut c {
+        Component::Line { direction, .. } => *direction = primitive_direction(direction),
+        Component::Conic { axis_dirs, .. } => {
+            for d in axis_dirs.iter_mut() {
+                *d = primitive_direction(d);
+            }
+        }
+        _ => {}
+    }
+    c
 }

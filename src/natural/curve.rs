@@ -164,17 +164,23 @@ fn sign_at_point(r: &Reduced, p: &GPoint) -> i32 {
 
 /// The sign of `F` at `(x, ys·√y²)` for a rational `x` inside `Γ`'s range.
 fn sign_at_rational(g: &Gamma, r: &Reduced, x: &Q, ys: i32) -> i32 {
-    let a = r.a.eval_q(x);
-    let b = r.b.eval_q(x) * Q::from_integer(g.g2.clone()) * Q::from_integer(ys.into());
-    let (sa, sb) = (crate::number::sign_q(&a), crate::number::sign_q(&b));
+    // in integers: x = p/q, a = Ha/Da, b = Hb·g2·ys/Db (Da, Db > 0)
+    let (p, q) = (x.numer(), x.denom());
+    let (ha, da) = r.a.eval_homogeneous(p, q);
+    let (hb, db) = r.b.eval_homogeneous(p, q);
+    let sz = crate::number::sign_z;
+    let (sa, sb) = (sz(&ha), sz(&hb) * sz(&g.g2) * ys);
     if sb == 0 || sa == sb {
         return if sa == 0 { sb } else { sa };
     }
     if sa == 0 {
         return sb;
     }
-    // a + b√E with opposite signs: compare a² with b²E
-    sa * crate::number::sign_q(&(&a * &a - &b * &b * g.y2(x)))
+    // a + b√E with opposite signs: compare a² with b²E, E = (g0q² − g1p²)/(g2q²),
+    // times Da²·Db²·q² > 0
+    let q2 = q * q;
+    let e = &g.g0 * &q2 - &g.g1 * p * p;
+    sa * sz(&(&ha * &ha * &db * &db * &q2 - &hb * &hb * &g.g2 * e * &da * &da))
 }
 
 /// The zeros of `F` on `Γ` (distinct points; `Err` when `F` vanishes on
@@ -597,24 +603,43 @@ fn dot(a: &[Z; 3], b: &[Z; 3]) -> Z {
 /// also as doubles, each with a proven bound on its error.
 #[derive(Clone, Debug)]
 pub struct CurvePoint {
-    pub(crate) ruling_point: [QSqrt; 3],
-    pub(crate) ruling_direction: [QSqrt; 3],
-    pub(crate) quadratic: [QSqrt; 3],
+    /// `P0`, `d` and `A, B, C` over `Z[√D]/den`, unreduced: reduced to
+    /// lowest terms only when asked for (the gcds of 300-digit integers
+    /// cost more than the rest of the construction).
+    raw: std::sync::Arc<RawPoint>,
+    exact: std::sync::OnceLock<[[QSqrt; 3]; 3]>,
     pub(crate) root: i32,
     pub(crate) t: Option<QSqrt>,
     pub(crate) approx: [(f64, f64); 3],
 }
 
+#[derive(Debug)]
+struct RawPoint {
+    p0: [Zf; 3],
+    dir: [Zf; 3],
+    quadratic: [Zf; 3],
+    d: Z,
+}
+
 impl CurvePoint {
+    fn reduced(&self) -> &[[QSqrt; 3]; 3] {
+        self.exact.get_or_init(|| {
+            let r = &*self.raw;
+            let out = |v: &[Zf; 3]| -> [QSqrt; 3] { std::array::from_fn(|i| v[i].to_qsqrt(&r.d)) };
+            [out(&r.p0), out(&r.dir), out(&r.quadratic)]
+        })
+    }
+
     /// The ruling it lies on: a point and a direction (exact).
     pub fn ruling(&self) -> (&[QSqrt; 3], &[QSqrt; 3]) {
-        (&self.ruling_point, &self.ruling_direction)
+        let r = self.reduced();
+        (&r[0], &r[1])
     }
 
     /// `[A, B, C]`: the other quadric's equation along the ruling is a
     /// positive multiple of `A·t² + 2B·t + C`.
     pub fn quadratic(&self) -> &[QSqrt; 3] {
-        &self.quadratic
+        &self.reduced()[2]
     }
 
     /// Which root `t` of the quadratic the point is: `t = (−B + r·√(B² −
@@ -639,26 +664,26 @@ impl CurvePoint {
     /// degree ≤ 4 when the root nests a square root: computed on demand,
     /// tens of microseconds to milliseconds).
     pub fn exact(&self) -> EPoint {
+        let (ruling_point, ruling_direction) = self.ruling();
         if let Some(t) = &self.t {
             return std::array::from_fn(|i| {
-                Exact::Quad(self.ruling_point[i].add(&t.mul(&self.ruling_direction[i])))
+                Exact::Quad(ruling_point[i].add(&t.mul(&ruling_direction[i])))
             });
         }
-        let [a, b, c] = &self.quadratic;
+        let [a, b, c] = self.quadratic();
         let disc = b.mul(b).sub(&a.mul(c));
         let inv_a = a.inv().expect("a quadratic along a ruling");
-        let e = self
-            .ruling_point
+        let e = ruling_point
             .iter()
-            .chain(self.ruling_direction.iter())
-            .chain(self.quadratic.iter())
+            .chain(ruling_direction.iter())
+            .chain(self.quadratic().iter())
             .find(|x| !x.is_rational())
             .map(|x| x.d.clone())
             .unwrap_or_else(Q::one);
         std::array::from_fn(|i| {
             // X = (P0 − B·k) + root·k·√disc with k = dᵢ/A
-            let k = self.ruling_direction[i].mul(&inv_a);
-            let base = self.ruling_point[i].sub(&b.mul(&k));
+            let k = ruling_direction[i].mul(&inv_a);
+            let base = ruling_point[i].sub(&b.mul(&k));
             let inner = disc.mul(&k).mul(&k);
             let s = self.root * k.signum();
             super::exact::nested(&base.a, &base.b, &e, &Q::one(), &inner.a, &inner.b, s)
@@ -668,36 +693,22 @@ impl CurvePoint {
 
 /// `(u + v√D)/den` as an extended-exponent ball, with a relative radius
 /// below 2^-40 (so its sign shows) unless it is 0: from the double ball of
-/// `√D` first, then, under cancellation, from rational bounds on `√D` of
-/// growing precision.
+/// `√D` when `u` and `v√D` have the same sign, else (cancellation) as
+/// `(u² − v²D)/(den·(u − v√D))`, whose numerator is an exact integer and
+/// whose denominator adds two terms of one sign.
 fn zf_ball(x: &Zf, sqrt_d: &XBall, d: &Z) -> XBall {
     let q = |n: &Z| XBall::from_q(&Q::new_raw(n.clone(), x.den.clone()));
     let fast = q(&x.u).add(&q(&x.v).mul(sqrt_d));
     if x.v.is_zero() || x.is_zero() || tight(&fast) {
         return fast;
     }
-    let dq = Q::from_integer(d.clone());
-    let mut bits = 128u32;
-    loop {
-        let (sl, sh) = crate::number::sqrt_bounds(&dq, bits);
-        let den = Q::from_integer(x.den.clone());
-        let (a, b) = (
-            (Q::from_integer(x.u.clone()) + Q::from_integer(x.v.clone()) * &sl) / &den,
-            (Q::from_integer(x.u.clone()) + Q::from_integer(x.v.clone()) * &sh) / &den,
-        );
-        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-        let two = Q::from_integer(2.into());
-        let mid = XBall::from_q(&((&lo + &hi) / &two));
-        let rad = XBall::from_q(&((&hi - &lo) / &two));
-        let ball = mid.add(&XBall {
-            m: 0.0,
-            r: rad.m.abs() + rad.r,
-            e: rad.e,
-        });
-        if tight(&ball) || bits > 1 << 16 {
-            return ball;
-        }
-        bits *= 2;
+    let z = |n: &Z| XBall::from_q(&Q::from_integer(n.clone()));
+    let norm = &x.u * &x.u - &x.v * &x.v * d;
+    let conj = z(&x.u).sub(&z(&x.v).mul(sqrt_d));
+    match conj.recip() {
+        Some(inv) => q(&norm).mul(&inv),
+        // u − v√D has no cancellation when u + v√D has: not reached
+        None => fast,
     }
 }
 
@@ -788,7 +799,7 @@ impl Rulings {
                 qc.neg().div(&qb.scale(&Z::from(2)), &d)
             };
             let tb = ball(&t);
-            (Some(t.to_qsqrt(&d)), 0, tb)
+            (Some(t), 0, tb)
         } else {
             let root = if self.cone { -at.sheet } else { at.sheet };
             // B² − AC exactly (positive inside the arc), then its root
@@ -814,22 +825,68 @@ impl Rulings {
             };
             (None, root, t)
         };
-        let approx: Vec<(f64, f64)> = (0..3)
-            .map(|i| {
-                ball(&p0[i])
-                    .add(&t_ball.mul(&ball(&dir[i])))
-                    .to_f64()
-                    .ok_or_else(|| Error::internal("a curve point out of the range of doubles"))
-            })
-            .collect::<Result<_, _>>()?;
-        let out = |v: &[Zf; 3]| -> [QSqrt; 3] { std::array::from_fn(|i| v[i].to_qsqrt(&d)) };
+        // Xᵢ = P₀ᵢ + t·dᵢ; a coordinate that cancels (near 0 against its
+        // terms) is recomputed without cancellation, so that every bound
+        // is relative: with t exact, Xᵢ is exact in Z[√D]/den; otherwise
+        // A·Xᵢ = N + σ√M (N = A·P₀ᵢ − B·dᵢ, M = dᵢ²(B² − AC), σ = root·sign dᵢ),
+        // and when N and σ√M have opposite signs A·Xᵢ = (N² − M)/(N − σ√M),
+        // an exact numerator over a sum of two terms of one sign
+        let mut approx = [(0.0, 0.0); 3];
+        for i in 0..3 {
+            let b = ball(&p0[i]).add(&t_ball.mul(&ball(&dir[i])));
+            let b = if tight(&b) {
+                b
+            } else if let Some(t) = &t_exact {
+                ball(&p0[i].add(&t.mul(&dir[i], &d)))
+            } else {
+                let n = qa.mul(&p0[i], &d).sub(&qb.mul(&dir[i], &d));
+                let m = dir[i]
+                    .mul(&dir[i], &d)
+                    .mul(&qb.mul(&qb, &d).sub(&qa.mul(&qc, &d)), &d);
+                let sqrt_m = ball(&m)
+                    .sqrt()
+                    .ok_or_else(|| Error::internal("a branch point off its arc"))?;
+                let sigma = root * dir[i].sign(&d);
+                let inv_a = ball(&qa)
+                    .recip()
+                    .ok_or_else(|| Error::internal("A = 0 at a branch point"))?;
+                let sn = n.sign(&d);
+                if sigma == 0 || sn == 0 || sn == sigma {
+                    // N and σ√M of one sign: no cancellation
+                    let s = if sigma < 0 { sqrt_m.neg() } else { sqrt_m };
+                    ball(&n).add(&s).mul(&inv_a)
+                } else {
+                    let norm = n.mul(&n, &d).sub(&m);
+                    if norm.is_zero() {
+                        XBall::from_q(&Q::zero())
+                    } else {
+                        let conj = if sigma > 0 {
+                            ball(&n).sub(&sqrt_m)
+                        } else {
+                            ball(&n).add(&sqrt_m)
+                        };
+                        let inv = conj
+                            .recip()
+                            .ok_or_else(|| Error::internal("a branch point at infinity"))?;
+                        ball(&norm).mul(&inv).mul(&inv_a)
+                    }
+                }
+            };
+            approx[i] = b
+                .to_f64()
+                .ok_or_else(|| Error::internal("a curve point out of the range of doubles"))?;
+        }
         Ok(CurvePoint {
-            ruling_point: out(&p0),
-            ruling_direction: out(&dir),
-            quadratic: [qa.to_qsqrt(&d), qb.to_qsqrt(&d), qc.to_qsqrt(&d)],
+            raw: std::sync::Arc::new(RawPoint {
+                p0,
+                dir,
+                quadratic: [qa, qb, qc],
+                d: d.clone(),
+            }),
+            exact: std::sync::OnceLock::new(),
             root,
-            t: t_exact,
-            approx: [approx[0], approx[1], approx[2]],
+            t: t_exact.map(|t| t.to_qsqrt(&d)),
+            approx,
         })
     }
 }

@@ -8,6 +8,7 @@
 //! high-precision approximation and then *verified exactly* (the relation
 //! must vanish at the number, decided by a gcd), so nothing is guessed.
 
+use super::result::Plane;
 use crate::number::xball::XBall;
 use crate::number::{Q, QSqrt};
 use crate::poly::{QPoly, ZPoly};
@@ -186,6 +187,68 @@ pub fn normalize_direction(d: &EPoint) -> EPoint {
         g = -g;
     }
     std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)))
+}
+
+/// A direction scaled by a positive rational so that its coordinates,
+/// all in one field Q(√d), have coprime integer parts `a`, `b` (the
+/// orientation kept: a parabola's axis points into it); directions with
+/// a coordinate outside a common Q(√d) unchanged.  Constructions over Z
+/// leave directions with products of the inputs' denominators in them
+/// (10³⁰⁰ for 53-bit inputs); this keeps them the size of the inputs.
+pub(crate) fn primitive_direction(v: &EPoint) -> EPoint {
+    let mut field: Option<&Q> = None;
+    let mut parts: Vec<&Q> = Vec::with_capacity(6);
+    for c in v {
+        let Exact::Quad(x) = c else { return v.clone() };
+        if !x.is_rational() {
+            match field {
+                Some(d) if d != &x.d => return v.clone(),
+                _ => field = Some(&x.d),
+            }
+        }
+        parts.push(&x.a);
+        parts.push(&x.b);
+    }
+    let l = crate::number::denom_lcm(parts.iter().copied());
+    let mut g = BigInt::zero();
+    for q in &parts {
+        g = num_integer::Integer::gcd(&g, &(q.numer() * (&l / q.denom())));
+    }
+    if g.is_zero() {
+        return v.clone();
+    }
+    let k = Q::new(l, g);
+    std::array::from_fn(|i| match &v[i] {
+        Exact::Quad(x) => Exact::Quad(QSqrt::new(&x.a * &k, &x.b * &k, x.d.clone())),
+        other => other.clone(),
+    })
+}
+
+/// A plane with rational coefficients scaled to primitive integers (the
+/// normal as by [`normalize_direction`], the offset by the same factor);
+/// other planes unchanged.  The JSON and the C interface print planes so.
+pub fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
+    let mut all = p.normal.to_vec();
+    all.push(p.offset.clone());
+    let rat: Option<Vec<Q>> = all
+        .iter()
+        .map(|c| match c {
+            Exact::Quad(x) if x.is_rational() => Some(x.a.clone()),
+            _ => None,
+        })
+        .collect();
+    let Some(rat) = rat else {
+        return (p.normal.clone(), p.offset.clone());
+    };
+    let as_point: EPoint = std::array::from_fn(|i| Exact::rational(rat[i].clone()));
+    let n = normalize_direction(&as_point);
+    // scale factor k with n = k·normal, applied to the offset too
+    let idx = (0..3).find(|&i| !rat[i].is_zero()).unwrap_or(0);
+    let k = match &n[idx] {
+        Exact::Quad(x) => &x.a / &rat[idx],
+        _ => Q::one(),
+    };
+    (n, Exact::rational(&rat[3] * &k))
 }
 
 /// Text of a point.

@@ -43,41 +43,6 @@ pub struct Plane {
     pub offset: Exact,
 }
 
-impl Plane {
-    /// The plane as the answers print it: rational coefficients scaled to
-    /// a primitive integer normal (first non-zero component positive) and
-    /// the offset scaled alike; a plane with an irrational coefficient is
-    /// returned unchanged.
-    pub fn normalized(&self) -> Plane {
-        let mut all = self.normal.to_vec();
-        all.push(self.offset.clone());
-        let rat: Option<Vec<Q>> = all
-            .iter()
-            .map(|c| match c {
-                Exact::Quad(x) if x.is_rational() => Some(x.a.clone()),
-                _ => None,
-            })
-            .collect();
-        let Some(rat) = rat else {
-            return self.clone();
-        };
-        let as_point: EPoint = std::array::from_fn(|i| Exact::rational(rat[i].clone()));
-        let normal = super::exact::normalize_direction(&as_point);
-        // scale factor k with normal = k·self.normal, applied to the offset too
-        let idx = (0..3)
-            .find(|&i| !num_traits::Zero::is_zero(&rat[i]))
-            .unwrap_or(0);
-        let k = match &normal[idx] {
-            Exact::Quad(x) => &x.a / &rat[idx],
-            _ => Q::one(),
-        };
-        Plane {
-            normal,
-            offset: Exact::rational(&rat[3] * &k),
-        }
-    }
-}
-
 /// Kind of an isolated point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]

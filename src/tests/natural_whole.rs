@@ -102,3 +102,172 @@ fn both_rulings_count_the_same_components_on_the_benchmark_pairs() {
     );
     assert!(checked > 100, "only {checked} curves checked");
 }
+
+// ----------------------------------------------------------------- properties
+
+use crate::natural::exact::Exact;
+use crate::natural::{Component, cayley_rotation, parse_natural};
+use crate::number::{Q, q, qi};
+use crate::roots::RealAlg;
+use proptest::prelude::*;
+
+/// `x` lies in `[v − b, v + b]`, decided exactly (the double and its
+/// bound at their exact binary values).
+fn holds(x: &Exact, (v, b): (f64, f64)) -> bool {
+    if v.is_infinite() && b == f64::INFINITY {
+        // beyond the range of doubles, with its sign (documented)
+        let max = Q::from_float(f64::MAX).unwrap();
+        let a = x.to_alg();
+        return if v > 0.0 {
+            a.cmp_exact(&RealAlg::rational(max)).is_gt()
+        } else {
+            a.cmp_exact(&RealAlg::rational(-max)).is_lt()
+        };
+    }
+    if !v.is_finite() || !b.is_finite() {
+        return false;
+    }
+    let (lo, hi) = (
+        Q::from_float(v).unwrap() - Q::from_float(b).unwrap(),
+        Q::from_float(v).unwrap() + Q::from_float(b).unwrap(),
+    );
+    let a = x.to_alg();
+    a.cmp_exact(&RealAlg::rational(lo)).is_ge() && a.cmp_exact(&RealAlg::rational(hi)).is_le()
+}
+
+/// Every numeric field of every component: its certified double holds the
+/// exact value, and the bound is small (relative 2⁻⁴⁰, or absolute 2⁻⁶⁰
+/// for 0); curve branch points hold their exact coordinates.
+fn bounds_hold(components: &[Component]) -> Result<usize, String> {
+    let mut n = 0;
+    let mut check = |what: &str, x: &Exact, vb: (f64, f64)| -> Result<(), String> {
+        n += 1;
+        let small =
+            vb.1 <= vb.0.abs() * 2f64.powi(-40) || vb.1 <= 2f64.powi(-60) || vb.1 == f64::INFINITY;
+        if holds(x, vb) && small {
+            Ok(())
+        } else {
+            Err(format!("{what}: {} not within {vb:?}", x.approx(30)))
+        }
+    };
+    for c in components {
+        match c {
+            Component::Conic {
+                plane,
+                center,
+                vertex,
+                axes2,
+                focal2,
+                ..
+            } => {
+                for x in plane.normal.iter().chain([&plane.offset]) {
+                    check("plane", x, x.to_f64_bounded())?;
+                }
+                for x in center.iter().chain(vertex.iter()).flatten() {
+                    check("centre or vertex", x, x.to_f64_bounded())?;
+                }
+                for x in axes2.iter().chain(focal2.iter()) {
+                    check("semi-axis² or focal length²", x, x.to_f64_bounded())?;
+                }
+            }
+            Component::Line {
+                point, direction, ..
+            } => {
+                for x in point.iter().chain(direction.iter()) {
+                    check("line", x, x.to_f64_bounded())?;
+                }
+            }
+            Component::Point { point, .. } => {
+                for x in point {
+                    check("point", x, x.to_f64_bounded())?;
+                }
+            }
+            Component::Curve {
+                singular, branches, ..
+            } => {
+                for p in singular {
+                    for x in &p.point {
+                        check("singular point", x, x.to_f64_bounded())?;
+                    }
+                }
+                for br in branches {
+                    let exact = br.start.exact();
+                    for (x, vb) in exact.iter().zip(br.start.approx()) {
+                        check("branch point", x, vb)?;
+                    }
+                }
+            }
+        }
+    }
+    Ok(n)
+}
+
+/// One surface from a small code: kinds and parameters drawn from small
+/// ranges so that coincidences (common vertices, tangencies, parallel or
+/// intersecting axes, equal radii) are frequent.
+fn surface(kind: u8, p: (i64, i64, i64), a: (i64, i64, i64), k: i64) -> String {
+    let a = if a == (0, 0, 0) { (0, 0, 1) } else { a };
+    match kind {
+        0 => format!("sphere center={},{},{} radius2={}", p.0, p.1, p.2, k),
+        1 => format!(
+            "cylinder point={},{},{} axis={},{},{} radius2={}",
+            p.0, p.1, p.2, a.0, a.1, a.2, k
+        ),
+        2 => format!(
+            "cone vertex={},{},{} axis={},{},{} tan2={}",
+            p.0, p.1, p.2, a.0, a.1, a.2, k
+        ),
+        _ => format!(
+            "cone vertex={},{},{} axis={},{},{} tan2=1/{}",
+            p.0, p.1, p.2, a.0, a.1, a.2, k
+        ),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, .. ProptestConfig::default() })]
+
+    /// Random pairs, degenerate ones frequent by construction, moved by a
+    /// rational rigid motion: the one pipeline's whole answer equals the
+    /// reference route's (class, counts and exact components), and every
+    /// certified double holds its exact value.
+    #[test]
+    fn whole_answers_agree_and_bounds_hold_on_random_pairs(
+        k1 in 0u8..4, p1 in (-1i64..2, -1i64..2, -1i64..2), a1 in (-1i64..2, -1i64..2, 0i64..2), r1 in 1i64..4,
+        k2 in 0u8..4, p2 in (-1i64..2, -1i64..2, -1i64..2), a2 in (-1i64..2, -1i64..2, 0i64..2), r2 in 1i64..4,
+        rot in (-2i64..3, -2i64..3, -2i64..3, 1i64..3), t in (-2i64..3, -2i64..3, -2i64..3),
+    ) {
+        let (sa, sb) = (surface(k1, p1, a1, r1), surface(k2, p2, a2, r2));
+        let r = cayley_rotation(&q(rot.0, rot.3), &q(rot.1, rot.3), &q(rot.2, rot.3));
+        let m = |s: &str| parse_natural(s).unwrap().moved(&r, &[qi(t.0), qi(t.1), qi(t.2)]);
+        let (a, b) = (m(&sa), m(&sb));
+        if let Err(e) = compare(&a, &b) {
+            return Err(TestCaseError::fail(format!("{sa} | {sb} moved by {rot:?} {t:?}: {e}")));
+        }
+        let rep = crate::natural::classify(&a, &b).unwrap();
+        if let Err(e) = bounds_hold(rep.components()) {
+            return Err(TestCaseError::fail(format!("{sa} | {sb}: {e}")));
+        }
+        if let Err(e) = rulings_agree(&a, &b) {
+            return Err(TestCaseError::fail(format!("{sa} | {sb}: {e}")));
+        }
+    }
+}
+
+/// The certified doubles hold on every benchmark pair (decimal500
+/// included: its values are the far ones from doubles).
+#[test]
+fn certified_doubles_hold_on_the_benchmark_pairs() {
+    let pairs = read_pairs(None).unwrap();
+    let mut bad = Vec::new();
+    let mut n = 0;
+    for p in &pairs {
+        let rep = crate::natural::classify(&p.a, &p.b).unwrap();
+        match bounds_hold(rep.components()) {
+            Ok(k) => n += k,
+            Err(e) => bad.push(format!("{}: {e}", p.name)),
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+    assert!(n > 1000, "only {n} values checked");
+}

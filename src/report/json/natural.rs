@@ -2,7 +2,7 @@
 
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
-use crate::natural::exact::{EPoint, Exact, normalize_direction};
+use crate::natural::exact::{EPoint, Exact, normalize_direction, normalize_plane};
 use crate::natural::result::Plane;
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
 use crate::natural::tangency::Section7;
@@ -33,9 +33,9 @@ fn component_f64_json(c: &Component) -> Value {
             focal2,
             ..
         } => {
-            let p = plane.normalized();
+            let (n, o) = normalize_plane(plane);
             json!({
-                "plane": {"normal": f64_point(&p.normal), "offset": f64_json(&p.offset)},
+                "plane": {"normal": f64_point(&n), "offset": f64_json(&o)},
                 "center": center.as_ref().map(f64_point),
                 "vertex": vertex.as_ref().map(f64_point),
                 "semi_axes2": axes2.iter().map(f64_json).collect::<Vec<_>>(),
@@ -127,8 +127,8 @@ fn branch_json(b: &crate::natural::CurveBranch) -> Value {
 
 /// A plane with rational coefficients is scaled to primitive integers.
 fn plane_json(p: &Plane) -> Value {
-    let p = p.normalized();
-    json!({"normal": epoint_json(&p.normal), "offset": exact_json(&p.offset)})
+    let (n, o) = normalize_plane(p);
+    json!({"normal": epoint_json(&n), "offset": exact_json(&o)})
 }
 
 fn q3(v: &[crate::number::Q; 3]) -> Value {
