@@ -1461,7 +1461,8 @@ pub struct ClassifyOptions {
     /// ([`NaturalReport::deciders`], [`NaturalReport::section7`]) and check
     /// them and the reference route's components against the answer (a
     /// disagreement is a note).  Off by default: it costs the reference
-    /// route (milliseconds); `quadsect examples` and `--deciders` use it.
+    /// route (milliseconds); `quadsect examples` uses it (the command line and
+    /// batch do not offer it yet: their `deciders` and `section7` are null).
     pub deciders: bool,
 }
 

@@ -105,35 +105,49 @@ pub fn floor_log2_q(x: &Q) -> i64 {
 ///
 /// Plain notation is used for moderate exponents, scientific otherwise.
 pub fn approx_decimal(x: &Q, digits: usize) -> String {
+    approx_decimal_ratio(x.numer(), x.denom(), digits)
+}
+
+/// [`approx_decimal`] of `n/d` (`d > 0`, not necessarily in lowest terms),
+/// in integers only: no reduction of the fraction.
+pub(crate) fn approx_decimal_ratio(n: &BigInt, d: &BigInt, digits: usize) -> String {
+    debug_assert!(d.is_positive());
     let digits = digits.max(1);
-    if x.is_zero() {
+    if n.is_zero() {
         return "0".to_string();
     }
-    crate::budget::check_for(x.numer().bits() + x.denom().bits());
-    let neg = x.is_negative();
-    let ax = x.abs();
-    // e10 = floor(log10 |x|): estimate from log2, then correct exactly.
-    let l2 = floor_log2_q(&ax);
+    crate::budget::check_for(n.bits() + d.bits());
+    let neg = n.is_negative();
+    let an = n.abs();
+    // e10 = floor(log10 |x|): estimate from log2, then correct exactly
+    let l2 = an.bits() as i64 - d.bits() as i64;
     let mut e10 = ((l2 as f64) * std::f64::consts::LOG10_2).floor() as i64;
     let ten = BigInt::from(10);
-    let pow10 = |e: i64| -> Q {
+    let p10 = |e: usize| -> BigInt { num_traits::pow(ten.clone(), e) };
+    // 10^e ≤ |n|/d  ⇔  10^e·d ≤ |n| (e ≥ 0), d ≤ |n|·10^-e (e < 0)
+    let ge = |e: i64| -> bool {
         if e >= 0 {
-            Q::from_integer(num_traits::pow(ten.clone(), e as usize))
+            d * p10(e as usize) <= an
         } else {
-            Q::new(BigInt::one(), num_traits::pow(ten.clone(), (-e) as usize))
+            *d <= &an * p10((-e) as usize)
         }
     };
-    while pow10(e10) > ax {
+    while !ge(e10) {
         e10 -= 1;
     }
-    while pow10(e10 + 1) <= ax {
+    while ge(e10 + 1) {
         e10 += 1;
     }
-    // scaled = |x| * 10^(digits-1-e10), rounded to an integer with `digits` digits
-    let scaled = &ax * pow10(digits as i64 - 1 - e10);
-    let (qt, r) = scaled.numer().div_rem(scaled.denom());
+    // |x|·10^(digits−1−e10), rounded to an integer with `digits` digits
+    let sh = digits as i64 - 1 - e10;
+    let (num, den) = if sh >= 0 {
+        (&an * p10(sh as usize), d.clone())
+    } else {
+        (an.clone(), d * p10((-sh) as usize))
+    };
+    let (qt, r) = num.div_rem(&den);
     let mut m = qt;
-    if (&r << 1usize) >= *scaled.denom() {
+    if (&r << 1usize) >= den {
         m += 1;
     }
     if m.to_string().len() > digits {

@@ -265,43 +265,49 @@ impl QSqrt {
     }
 
     /// The value as a double with a proven bound on its error:
-    /// `|self − v| ≤ b` for `(v, b)`, with `b ≤ 2^-46·|v|` (a few units in
-    /// the last place of `v`, at most 64) however close to 0 the value is,
-    /// and `b = 0` for a rational that is a double; `(±∞, ∞)` beyond the
-    /// range of doubles.  Cancellation in `a + b√d` is met by rational
-    /// bounds on `√d` of growing precision.
+    /// `|self − v| ≤ b` for `(v, b)`, the bound within a few units in the
+    /// last place of `v` (at most `2^-46·|v|`) however close to 0 the value
+    /// is (`(±∞, ∞)` beyond the range of doubles; bound 0 for a rational
+    /// that is a double).  Cancellation in `a + b√d` is met by the
+    /// conjugate: `(a² − b²d)/(a − b√d)`.
     pub fn to_f64_bounded(&self) -> (f64, f64) {
         use super::xball::XBall;
-        /// 2^47: a ball is tight enough when its radius is below 2^-47 of
-        /// its midpoint.  A ball of `√d` alone is about 2^-50 wide
-        /// (relative), the conversions of `a`, `b` add a few 2^-53: the
-        /// double-ball route passes unless `a + b√d` cancels more than a
-        /// few bits; a rational enclosure of the sum converts within
-        /// about 7·2^-53.
-        const TIGHT: f64 = 140_737_488_355_328.0;
         let ball = if self.b.is_zero() {
-            XBall::from_q(&self.a)
+            let ball = XBall::from_q(&self.a);
+            // a double exactly: bound 0
+            if let Some((v, _)) = ball.to_f64()
+                && Q::from_float(v).is_some_and(|x| x == self.a)
+            {
+                return (v, 0.0);
+            }
+            ball
         } else {
-            let fast = XBall::from_q(&self.d)
+            let a = XBall::from_q(&self.a);
+            let rb = XBall::from_q(&self.d)
                 .sqrt()
-                .map(|r| XBall::from_q(&self.a).add(&XBall::from_q(&self.b).mul(&r)));
-            match fast {
-                Some(b) if b.r * TIGHT < b.m.abs() => b,
-                _ => {
-                    // rational enclosures of √d until the sum is tight (the
-                    // sum is irrational, so not 0: its relative width falls
-                    // as the precision grows)
-                    let mut bits = 128u32;
-                    loop {
-                        let (lo, hi) = super::sqrt_bounds(&self.d, bits);
-                        let (x, y) = (&self.a + &self.b * &lo, &self.a + &self.b * &hi);
-                        let b = XBall::from_interval(&x.clone().min(y.clone()), &x.max(y));
-                        if b.r * TIGHT < b.m.abs() || bits >= 1 << 14 {
-                            break b;
+                .map(|r| XBall::from_q(&self.b).mul(&r));
+            match rb {
+                Some(rb) => {
+                    let fast = a.add(&rb);
+                    // tight when the radius is below 2^-47 of the midpoint:
+                    // a ball of √d is about 2^-50 wide (relative) and the
+                    // conversions of a, b add a few 2^-53, so the sum passes
+                    // unless it cancels more than a few bits
+                    if fast.r * 140_737_488_355_328.0 < fast.m.abs() {
+                        fast
+                    } else {
+                        // cancellation: a + b√d = (a² − b²d)/(a − b√d), an
+                        // exact numerator over two terms of one sign
+                        let norm = &self.a * &self.a - &self.b * &self.b * &self.d;
+                        match a.sub(&rb).recip() {
+                            Some(inv) => XBall::from_q(&norm).mul(&inv),
+                            None => fast,
                         }
-                        bits *= 2;
                     }
                 }
+                // √d of a positive d always has a ball: not reached, and
+                // an infinite bound is still true
+                None => return (0.0, f64::INFINITY),
             }
         };
         ball.to_f64().unwrap_or((
@@ -328,18 +334,33 @@ impl QSqrt {
         if let Some(r) = super::exact_sqrt_q(&self.d) {
             return approx_decimal(&(&self.a + &self.b * r), digits);
         }
-        let mut bits = 4 * digits as u32 + 64;
+        // in integers: x = (N1 + N2·√R)/D with a = an/ad, b = bn/bd,
+        // d = dn/dd: N1 = an·bd·dd, N2 = bn·ad, R = dn·dd, D = ad·bd·dd;
+        // m = N1·2^k + sgn(N2)·⌊√(N2²·R·4^k)⌋ is within 1 of x·D·2^k
+        let (an, ad) = (self.a.numer(), self.a.denom());
+        let (bn, bd) = (self.b.numer(), self.b.denom());
+        let (dn, dd) = (self.d.numer(), self.d.denom());
+        let n1 = an * bd * dd;
+        let r = dn * dd;
+        let n2sq_r = bn * bn * ad * ad * &r;
+        let den = ad * bd * dd;
+        let mut k = 4 * digits + 64;
         loop {
-            let m = self.to_rational_approx(bits);
-            let eps = Q::new(BigInt::one(), BigInt::one() << bits as usize);
-            let (lo, hi) = (&m - &eps, &m + &eps);
+            let root = (&n2sq_r << (2 * k)).sqrt();
+            let m = if bn.is_negative() {
+                (&n1 << k) - root
+            } else {
+                (&n1 << k) + root
+            };
+            let d2 = &den << k;
+            let (lo, hi): (BigInt, BigInt) = (&m - 1, &m + 1);
             if lo.is_positive() || hi.is_negative() {
-                let (a, b) = (approx_decimal(&lo, digits), approx_decimal(&hi, digits));
-                if a == b {
+                let a = super::approx_decimal_ratio(&lo, &d2, digits);
+                if a == super::approx_decimal_ratio(&hi, &d2, digits) {
                     return a;
                 }
             }
-            bits *= 2;
+            k *= 2;
         }
     }
 
@@ -367,6 +388,40 @@ impl QSqrt {
         if self.b.is_zero() {
             return self.clone();
         }
+        // the radicands of one answer repeat (a curve point's ruling and
+        // quadratic share one): its split is kept for the next call
+        thread_local! {
+            static LAST: std::cell::RefCell<Option<(Q, Split)>> =
+                const { std::cell::RefCell::new(None) };
+        }
+        let cached = LAST.with(|l| {
+            l.borrow()
+                .as_ref()
+                .filter(|(d, _)| d == &self.d)
+                .map(|(_, s)| s.clone())
+        });
+        let split = match cached {
+            Some(s) => s,
+            None => {
+                let s = self.split_radicand();
+                LAST.with(|l| *l.borrow_mut() = Some((self.d.clone(), s.clone())));
+                s
+            }
+        };
+        let coef = Q::new(split.out, self.d.denom().clone());
+        match split.root {
+            Some(r) => QSqrt::rational(&self.a + &self.b * coef * Q::from_integer(r)),
+            None => QSqrt {
+                a: self.a.clone(),
+                b: &self.b * coef,
+                d: Q::from_integer(split.rad),
+            },
+        }
+    }
+
+    /// `√d = (out/den)·√rad` with the small square factors of `rad` taken
+    /// out, and `√rad` when `rad` is a square.
+    fn split_radicand(&self) -> Split {
         // √(n/m) = √(n·m)/m
         let mut rad = self.d.numer() * self.d.denom();
         let mut out = BigInt::one();
@@ -404,9 +459,20 @@ impl QSqrt {
                 }
             }
         }
-        let coef = Q::new(out, self.d.denom().clone());
-        QSqrt::new(self.a.clone(), &self.b * coef, Q::from_integer(rad))
+        let root = {
+            let r = rad.sqrt();
+            (&r * &r == rad).then_some(r)
+        };
+        Split { out, rad, root }
     }
+}
+
+/// A radicand split by [`QSqrt::normalized`].
+#[derive(Clone)]
+struct Split {
+    out: BigInt,
+    rad: BigInt,
+    root: Option<BigInt>,
 }
 
 /// `|x| mod m` (`m > 0`) by one pass over the 64-bit words, most
