@@ -3,7 +3,8 @@
 Every number is exact: inputs are ``int``, ``fractions.Fraction``, ``str``
 in the engine's syntax (``"7/9"``, ``"1.5"``, ``"1e-12"``) or ``float`` /
 ``Decimal`` taken at their exact binary/decimal value; rationals come back
-as ``Fraction`` and irrational values as :class:`RealAlgebraic` (a
+as ``Fraction``, numbers of one square root as :class:`QuadraticIrrational`
+(``a + b√d``) and other irrational values as :class:`RealAlgebraic` (a
 square-free integer polynomial and an isolating interval).  Polynomials are
 strings in the input syntax (``"x^2 + y^2 + z^2 - 25"``, ``"2x^2 - 3(y-1)"``).
 
@@ -13,7 +14,9 @@ The four jobs:
   point method): intersecting, touching, separated, with the exact min and
   max of S on E and a certificate;
 * :func:`natural` — two natural quadrics (spheres, circular cylinders, right
-  cones): the class of their intersection and every conic, line and point;
+  cones): the class of their intersection and every component, typed
+  (:class:`Conic`, :class:`Line`, :class:`Point`, :class:`Curve`) with exact
+  numbers and certified doubles;
 * :func:`roots`, :func:`resultant` — the algebra kernel;
 
 and the batch protocol of ``quadsect batch``: :func:`answer_line`,
@@ -36,27 +39,54 @@ quadsect :class:`InternalError`.
 
 from __future__ import annotations
 
-import json
-import re
-from dataclasses import dataclass
-from fractions import Fraction
-from typing import (
-    Any,
-    Dict,
-    Iterable,
-    Iterator,
-    List,
-    Mapping,
-    Optional,
-    Sequence,
-    Tuple,
-    Union,
-    overload,
-)
+import json as _json
+import re as _re
+from collections.abc import Mapping as _Mapping
+from dataclasses import dataclass as _dataclass
+from fractions import Fraction as _Fraction
+from typing import TYPE_CHECKING as _TYPE_CHECKING
+from typing import Sequence as _Sequence
+from typing import overload as _overload
 
 from . import _quadsect
+from ._components import (
+    Conic,
+    Curve,
+    CurveBranch,
+    Line,
+    Plane,
+    Point,
+    SingularPoint,
+    _component,
+)
 from ._errors import BudgetError, InputError, InternalError, QuadsectError
-from ._quadsect import RealAlgebraic, answer_line, exact
+from ._quadsect import QuadraticIrrational, RealAlgebraic, answer_line, exact
+
+if _TYPE_CHECKING:  # names of the annotations only: not attributes of the package
+    from fractions import Fraction
+    from typing import (
+        Any,
+        Dict,
+        Iterable,
+        Iterator,
+        List,
+        Mapping,
+        Optional,
+        Sequence,
+        Tuple,
+        Union,
+    )
+
+    from ._components import Component
+
+    #: A number input: int, Fraction, str (engine syntax), float or Decimal (exact value).
+    Number = Union[int, Fraction, float, str, Any]
+    Vector = Tuple[Fraction, Fraction, Fraction]
+    #: A natural quadric: short syntax, JSON text, a dict, or Sphere/Cylinder/Cone.
+    NaturalLike = Union[str, Mapping[str, Any], "Sphere", "Cylinder", "Cone"]
+
+# the __future__ import binds a name: not part of the package
+del annotations
 
 __version__: str = _quadsect.__version__
 
@@ -64,21 +94,34 @@ __version__: str = _quadsect.__version__
 DEFAULT_TIME_LIMIT: float = _quadsect.DEFAULT_TIME_LIMIT
 
 __all__ = [
+    # the jobs
     "tangent",
     "natural",
     "roots",
     "resultant",
     "answer_line",
     "batch",
+    # exact numbers
     "exact",
     "RealAlgebraic",
+    "QuadraticIrrational",
+    # natural quadrics and the components of their intersection
     "Sphere",
     "Cylinder",
     "Cone",
+    "Conic",
+    "Plane",
+    "Line",
+    "Point",
+    "Curve",
+    "SingularPoint",
+    "CurveBranch",
+    # results
     "TangentResult",
     "NaturalResult",
     "RootsResult",
     "ResultantResult",
+    # errors
     "QuadsectError",
     "InputError",
     "BudgetError",
@@ -86,14 +129,9 @@ __all__ = [
     "DEFAULT_TIME_LIMIT",
 ]
 
-Number = Union[int, Fraction, float, str, Any]
-"""A number input: int, Fraction, str (engine syntax), float or Decimal (exact value)."""
-
-Vector = Tuple[Fraction, Fraction, Fraction]
-
 # ---------------------------------------------------------------- helpers
 
-_RATIONAL = re.compile(r"-?[0-9]+(?:/[0-9]+)?\Z")
+_RATIONAL = _re.compile(r"-?[0-9]+(?:/[0-9]+)?\Z")
 
 
 def _decode(value: Any, key: Optional[str] = None) -> Any:
@@ -105,7 +143,7 @@ def _decode(value: Any, key: Optional[str] = None) -> Any:
     if isinstance(value, str):
         if key is not None and (key == "approx" or key.endswith("poly")):
             return value
-        return Fraction(value) if _RATIONAL.match(value) else value
+        return _Fraction(value) if _RATIONAL.match(value) else value
     if isinstance(value, list):
         return [_decode(v, key) for v in value]
     if isinstance(value, dict):
@@ -118,10 +156,11 @@ def _text(q: Fraction) -> str:
     return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
 
 
-def _vector(v: Sequence[Number], name: str) -> Vector:
+def _vector(v: Sequence[Number], name: str) -> Tuple[Number, Number, Number]:
+    """Three numbers (converted by the compiled half)."""
     if isinstance(v, (str, bytes)) or len(v) != 3:
         raise InputError(f"{name} must be three numbers, got {v!r}", "bad-quadric")
-    x, y, z = (exact(c) for c in v)
+    x, y, z = v
     return (x, y, z)
 
 
@@ -131,7 +170,7 @@ def _json_numbers(value: Any) -> Any:
         return value
     if isinstance(value, (list, tuple)):
         return [_json_numbers(v) for v in value]
-    if isinstance(value, Mapping):
+    if isinstance(value, _Mapping):
         return {k: (v if k == "kind" else _json_numbers(v)) for k, v in value.items()}
     return _text(exact(value))
 
@@ -140,9 +179,11 @@ def _json_numbers(value: Any) -> Any:
 
 
 class _NaturalBase:
-    """Shared behaviour of the typed natural quadrics."""
+    """Shared behaviour of the typed natural quadrics: each holds its
+    checked engine form (``_native``), so :func:`natural` reads no text."""
 
     kind: str = ""
+    _native: _quadsect.NativeNatural
 
     def to_dict(self) -> Dict[str, Any]:
         """The JSON object form (numbers as exact strings), as the batch
@@ -151,18 +192,14 @@ class _NaturalBase:
 
     def to_json(self) -> str:
         """The JSON object form as text."""
-        return json.dumps(self.to_dict(), separators=(",", ":"))
+        return _json.dumps(self.to_dict(), separators=(",", ":"))
 
     def __str__(self) -> str:
         """The short syntax (``sphere center=0,0,0 radius2=1``)."""
-        return _quadsect.natural_input(self.to_json())[0]
-
-    def _check(self) -> Dict[str, Any]:
-        """Validates with the engine; returns its canonical JSON form."""
-        return json.loads(_quadsect.natural_input(self.to_json())[1])
+        return str(self._native)
 
 
-@dataclass(frozen=True)
+@_dataclass(frozen=True)
 class Sphere(_NaturalBase):
     """A sphere ``|P - center|² = radius2`` (``radius2 > 0``).
 
@@ -177,9 +214,12 @@ class Sphere(_NaturalBase):
     kind = "sphere"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "center", _vector(self.center, "center"))
-        object.__setattr__(self, "radius2", exact(self.radius2))
-        self._check()
+        native, center, _, radius2 = _quadsect.natural_from_parts(
+            "sphere", _vector(self.center, "center"), None, "radius2", self.radius2
+        )
+        object.__setattr__(self, "center", center)
+        object.__setattr__(self, "radius2", radius2)
+        object.__setattr__(self, "_native", native)
 
     def to_dict(self) -> Dict[str, Any]:
         return {
@@ -189,7 +229,7 @@ class Sphere(_NaturalBase):
         }
 
 
-@dataclass(frozen=True)
+@_dataclass(frozen=True)
 class Cylinder(_NaturalBase):
     """A circular cylinder of squared radius ``radius2`` around the line
     through ``point`` with direction ``axis`` (non-zero, any length).
@@ -204,10 +244,17 @@ class Cylinder(_NaturalBase):
     kind = "cylinder"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "point", _vector(self.point, "point"))
-        object.__setattr__(self, "axis", _vector(self.axis, "axis"))
-        object.__setattr__(self, "radius2", exact(self.radius2))
-        self._check()
+        native, point, axis, radius2 = _quadsect.natural_from_parts(
+            "cylinder",
+            _vector(self.point, "point"),
+            _vector(self.axis, "axis"),
+            "radius2",
+            self.radius2,
+        )
+        object.__setattr__(self, "point", point)
+        object.__setattr__(self, "axis", axis)
+        object.__setattr__(self, "radius2", radius2)
+        object.__setattr__(self, "_native", native)
 
     def to_dict(self) -> Dict[str, Any]:
         return {
@@ -218,7 +265,7 @@ class Cylinder(_NaturalBase):
         }
 
 
-@dataclass(frozen=True, init=False)
+@_dataclass(frozen=True, init=False)
 class Cone(_NaturalBase):
     """A right circular double cone with vertex ``vertex``, axis direction
     ``axis`` and half-angle α given by exactly one of ``tan2 = tan²α``,
@@ -251,16 +298,13 @@ class Cone(_NaturalBase):
                 "a cone needs exactly one of tan2, tan, cos2, sin2", "bad-quadric"
             )
         ((name, value),) = given.items()
-        object.__setattr__(self, "vertex", _vector(vertex, "vertex"))
-        object.__setattr__(self, "axis", _vector(axis, "axis"))
-        spec = {
-            "kind": "cone",
-            "vertex": [_text(c) for c in self.vertex],
-            "axis": [_text(c) for c in self.axis],
-            name: _text(exact(value)),
-        }
-        canonical = json.loads(_quadsect.natural_input(json.dumps(spec))[1])
-        object.__setattr__(self, "tan2", Fraction(canonical["tan2"]))
+        native, v, a, tan2 = _quadsect.natural_from_parts(
+            "cone", _vector(vertex, "vertex"), _vector(axis, "axis"), name, value
+        )
+        object.__setattr__(self, "vertex", v)
+        object.__setattr__(self, "axis", a)
+        object.__setattr__(self, "tan2", tan2)
+        object.__setattr__(self, "_native", native)
 
     def to_dict(self) -> Dict[str, Any]:
         return {
@@ -271,17 +315,15 @@ class Cone(_NaturalBase):
         }
 
 
-NaturalLike = Union[str, Mapping[str, Any], Sphere, Cylinder, Cone]
-"""A natural quadric: short syntax, JSON text, a dict, or Sphere/Cylinder/Cone."""
-
-
-def _natural_text(q: NaturalLike, which: str) -> str:
+def _natural_arg(q: NaturalLike, which: str) -> Union[str, _quadsect.NativeNatural]:
+    """What the compiled ``natural`` takes: a typed quadric's engine form,
+    or text."""
     if isinstance(q, _NaturalBase):
-        return q.to_json()
+        return q._native
     if isinstance(q, str):
         return q
-    if isinstance(q, Mapping):
-        return json.dumps(_json_numbers(q))
+    if isinstance(q, _Mapping):
+        return _json.dumps(_json_numbers(q))
     raise TypeError(
         f"{which} must be a str (short syntax or JSON), a dict, or a "
         f"Sphere/Cylinder/Cone, got {type(q).__name__}"
@@ -295,12 +337,12 @@ class _Result:
     """Shared behaviour: the CLI's JSON and human text."""
 
     def __init__(self, json_text: str, text: str) -> None:
-        self._json: Dict[str, Any] = json.loads(json_text)
+        self._json: Dict[str, Any] = _json.loads(json_text)
         self._text = text
 
     def to_json(self) -> Dict[str, Any]:
         """The CLI's ``--json`` object (exact numbers as strings), a fresh copy."""
-        return json.loads(json.dumps(self._json))
+        return _json.loads(_json.dumps(self._json))
 
     @property
     def summary(self) -> str:
@@ -397,7 +439,7 @@ class TangentResult(_Result):
         return f"TangentResult(verdict={self.verdict!r}, min={self.min!r}, max={self.max!r})"
 
     def __reduce__(self):
-        return (_rebuild_tangent, (json.dumps(self._json), self._text, self.min, self.max,
+        return (_rebuild_tangent, (_json.dumps(self._json), self._text, self.min, self.max,
                                    self.critical_values, self.nonreal_point_values,
                                    (self.undecided_kind, self.reason) if self.reason else None))
 
@@ -406,85 +448,142 @@ def _rebuild_tangent(*args: Any) -> TangentResult:
     return TangentResult(*args)
 
 
-class NaturalResult(_Result):
+class NaturalResult:
     """The answer of :func:`natural`: the class of the intersection, the
     counts of real affine conics, lines and isolated points, and each
-    component with exact data.
+    component, typed, with exact data (:attr:`components`).
 
     Running out of budget is an answer, not an error: ``classification ==
     "undecided"``, the counts are ``None``, :attr:`undecided_kind` is
-    ``"budget"`` and :attr:`reason` says which limit ran out."""
+    ``"budget"`` and :attr:`reason` says which limit ran out.
+
+    The parts are read from the engine's answer when first asked for: the
+    components, the JSON (:meth:`to_json`) and the :attr:`summary` cost
+    nothing until then."""
+
+    __slots__ = ("_report", "_head", "_json_text", "_text", "_components")
+
+    def __init__(
+        self,
+        report: Optional[_quadsect.NativeReport],
+        head: tuple,
+        json_text: Optional[str] = None,
+        text: Optional[str] = None,
+        components: Optional[Tuple[Component, ...]] = None,
+    ) -> None:
+        # the engine's report, or None for a result rebuilt by pickle (then
+        # json_text, text and components are given)
+        self._report = report
+        # (class, conics, lines, points, axes, thm8, method, reason)
+        self._head = head
+        self._json_text = json_text
+        self._text = text
+        self._components = components
+
+    def _json_str(self) -> str:
+        if self._json_text is None:
+            self._json_text = self._report.json()  # type: ignore[union-attr]
+        return self._json_text
+
+    def _components_tuple(self) -> Tuple[Component, ...]:
+        if self._components is None:
+            self._components = tuple(_component(t) for t in self._report.components())  # type: ignore[union-attr]
+        return self._components
+
+    def to_json(self) -> Dict[str, Any]:
+        """The CLI's ``--json`` object (exact numbers as strings), a fresh copy."""
+        return _json.loads(self._json_str())
+
+    @property
+    def summary(self) -> str:
+        """The human summary, as the CLI prints it without ``--json``."""
+        if self._text is None:
+            self._text = self._report.text()  # type: ignore[union-attr]
+        return self._text
+
+    def __str__(self) -> str:
+        """The human summary (:attr:`summary`)."""
+        return self.summary
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and other.to_json() == self.to_json()  # type: ignore[attr-defined]
+
+    __hash__ = None  # type: ignore[assignment]
 
     @property
     def classification(self) -> str:
         """``"same-surface"``, ``"conics"``, ``"conic-and-line"``, ``"lines"``,
         ``"points"``, ``"empty"``, ``"curve"``, or ``"undecided"`` (the
         budget ran out)."""
-        return self._json["class"]
+        return self._head[0]
 
     @property
     def undecided_kind(self) -> Optional[str]:
         """For an undecided answer, why: ``"budget"``; else ``None``."""
-        r = self._json.get("reason")
-        return r["kind"] if r is not None else None
+        r = self._head[7]
+        return r[0] if r is not None else None
 
     @property
     def reason(self) -> Optional[str]:
         """For an undecided answer, the reason in words (which limit ran
         out); else ``None``."""
-        r = self._json.get("reason")
-        return r["message"] if r is not None else None
+        r = self._head[7]
+        return r[1] if r is not None else None
 
     @property
     def conics(self) -> Optional[int]:
         """Real affine conics (a double conic counts once); ``None`` when undecided."""
-        return self._json["conics"]
+        return self._head[1]
 
     @property
     def lines(self) -> Optional[int]:
         """Real affine lines (a double line counts once); ``None`` when undecided."""
-        return self._json["lines"]
+        return self._head[2]
 
     @property
     def points(self) -> Optional[int]:
-        """Isolated real points on no other component; ``None`` when undecided."""
-        return self._json["points"]
+        """Isolated real points on no other component (acnodes of a curve
+        included); ``None`` when undecided."""
+        return self._head[3]
 
     @property
     def axes(self) -> Optional[str]:
         """``"coplanar-intersecting"``, ``"parallel"``, ``"coincident"``,
         ``"skew"``, or ``None`` when a sphere is involved."""
-        return self._json["axes"]
+        return self._head[4]
 
     @property
     def thm8(self) -> Optional[bool]:
         """The closed-form test of Theorems 8.1/8.2 where it applies."""
-        return self._json["thm8"]
+        return self._head[5]
 
     @property
-    def components(self) -> List[Dict[str, Any]]:
-        """The components (conics, lines, points, curves) as dicts, exact
-        rationals as ``Fraction``; a number a + b√d is ``{"a", "b", "d",
-        "approx"}``.  Empty when undecided or asked for without
+    def components(self) -> List[Component]:
+        """The components: :class:`Conic`, :class:`Line`, :class:`Point` and
+        :class:`Curve` objects with exact numbers (``Fraction``,
+        :class:`QuadraticIrrational`, :class:`RealAlgebraic`) and, beside
+        each numeric field ``x``, its certified doubles ``x_f64`` (pairs
+        ``(value, bound)`` with ``|exact − value| ≤ bound``).  Built when
+        first asked for.  Empty when undecided or asked for without
         components (``natural(a, b, components=False)``)."""
-        return _decode(self._json.get("components", []))
+        return list(self._components_tuple())
 
     @property
     def route(self) -> Optional[str]:
         """``"fast"`` or ``"complete"`` for an answer without components
         (the complete route answers where the fast one cannot decide),
         else ``None``."""
-        return self._json.get("route")
+        return self.to_json().get("route")
 
     @property
     def method(self) -> str:
         """How the class was decided, in words."""
-        return self._json["method"]
+        return self._head[6]
 
     @property
     def notes(self) -> List[str]:
         """Remarks."""
-        return list(self._json.get("notes", []))
+        return list(self.to_json().get("notes", []))
 
     def __repr__(self) -> str:
         return (
@@ -493,10 +592,19 @@ class NaturalResult(_Result):
         )
 
     def __reduce__(self):
-        return (NaturalResult, (json.dumps(self._json), self._text))
+        return (
+            _rebuild_natural,
+            (self._head, self._json_str(), self.summary, self._components_tuple()),
+        )
 
 
-class RootsResult(_Result, Sequence[RealAlgebraic]):
+def _rebuild_natural(
+    head: tuple, json_text: str, text: str, components: Tuple[Component, ...]
+) -> NaturalResult:
+    return NaturalResult(None, head, json_text, text, components)
+
+
+class RootsResult(_Result, _Sequence[RealAlgebraic]):
     """The answer of :func:`roots`: a sequence of the distinct real roots
     (increasing, as :class:`RealAlgebraic`), with counts and multiplicities."""
 
@@ -506,9 +614,9 @@ class RootsResult(_Result, Sequence[RealAlgebraic]):
         #: The multiplicity of each root, in order.
         self.multiplicities: List[int] = [m for _, m in roots]
 
-    @overload
+    @_overload
     def __getitem__(self, i: int) -> RealAlgebraic: ...
-    @overload
+    @_overload
     def __getitem__(self, i: slice) -> List[RealAlgebraic]: ...
     def __getitem__(self, i):  # type: ignore[no-untyped-def]
         return self._roots[i]
@@ -558,13 +666,13 @@ class RootsResult(_Result, Sequence[RealAlgebraic]):
     def intervals(self) -> List[Tuple[Fraction, Fraction]]:
         """One isolating interval per distinct real root (``lo == hi`` for
         an exact rational root)."""
-        return [(Fraction(lo), Fraction(hi)) for lo, hi in self._json["intervals"]]
+        return [(_Fraction(lo), _Fraction(hi)) for lo, hi in self._json["intervals"]]
 
     def __repr__(self) -> str:
         return f"RootsResult({self._roots!r})"
 
     def __reduce__(self):
-        return (RootsResult, (json.dumps(self._json), self._text,
+        return (RootsResult, (_json.dumps(self._json), self._text,
                               list(zip(self._roots, self.multiplicities))))
 
 
@@ -590,7 +698,7 @@ class ResultantResult(_Result):
         return f"ResultantResult({self.resultant!r})"
 
     def __reduce__(self):
-        return (ResultantResult, (json.dumps(self._json), self._text))
+        return (ResultantResult, (_json.dumps(self._json), self._text))
 
 
 # --------------------------------------------------------------- jobs
@@ -638,25 +746,33 @@ def natural(
 ) -> NaturalResult:
     """How two natural quadrics meet, exactly.
 
-    ``a`` and ``b`` are each the short syntax (``"cone vertex=0,0,0
-    axis=1,0,0 tan2=1/3"``), JSON text, a dict of the JSON object form
-    (numbers may be int/Fraction/float/str), or a :class:`Sphere`,
-    :class:`Cylinder` or :class:`Cone`.  ``components=False`` asks for the
-    class and counts only (the fast route: same class and counts, much
-    quicker).  ``time_limit`` is in seconds as for :func:`tangent`; running
-    out is an answer: ``classification == "undecided"`` with the
+    ``a`` and ``b`` are each a :class:`Sphere`, :class:`Cylinder` or
+    :class:`Cone` (the fastest: their checked form is passed as is), the
+    short syntax (``"cone vertex=0,0,0 axis=1,0,0 tan2=1/3"``), JSON text,
+    or a dict of the JSON object form (numbers may be
+    int/Fraction/float/str).  ``components=False`` asks for the class and
+    counts only (the fast route: same class and counts, much quicker).
+    ``time_limit`` is in seconds as for :func:`tangent`; running out is an
+    answer: ``classification == "undecided"`` with the
     :attr:`~NaturalResult.reason`.
 
     >>> r = quadsect.natural(Cylinder((0, 0, 0), (1, 0, 0), 1),
     ...                      "cylinder point=0,0,0 axis=0,1,0 radius2=1")
-    >>> r.classification, r.conics, r.components[0]["conic"]
-    ('conics', 2, 'ellipse')
-    >>> r.components[0]["semi_axes2"]
-    [Fraction(2, 1), Fraction(1, 1)]
+    >>> r.classification, r.conics
+    ('conics', 2)
+    >>> e = r.components[0]
+    >>> e
+    Conic('ellipse', center=(0, 0, 0), semi_axes2=(2, 1), plane=Plane(normal=(1, -1, 0), offset=0))
+    >>> e.semi_axes2, e.axis_directions
+    ((Fraction(2, 1), Fraction(1, 1)), ((Fraction(1, 1), Fraction(1, 1), Fraction(0, 1)), (Fraction(0, 1), Fraction(0, 1), Fraction(1, 1))))
+    >>> value, bound = e.semi_axes2_f64[0]   # a double and a proven error bound
+    >>> value, abs(value - e.semi_axes2[0]) <= bound
+    (2.0, True)
     """
-    return NaturalResult(
-        *_quadsect.natural(_natural_text(a, "a"), _natural_text(b, "b"), time_limit, components)
+    report, head = _quadsect.natural(
+        _natural_arg(a, "a"), _natural_arg(b, "b"), time_limit, components
     )
+    return NaturalResult(report, head)
 
 
 def roots(poly: str, *, time_limit: Optional[float] = None) -> RootsResult:

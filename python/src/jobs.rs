@@ -1,13 +1,12 @@
-//! The four jobs.  Each runs the engine with the GIL released and returns
+//! Three of the four jobs (`natural` is in `natural.rs`).  Each runs the engine with the GIL released and returns
 //! the CLI's `--json` text (the Python half decodes it into a result
 //! class), the human text, and the exact numbers as `RealAlgebraic`.
 
 use crate::guard;
 use crate::numbers::RealAlgebraic;
 use pyo3::prelude::*;
-use quadsect::natural::ClassifyOptions;
 use quadsect::tangent::{TangentOptions, Undecided};
-use quadsect::{Ellipsoid, Error, Natural, Polynomial, RealAlg, Var};
+use quadsect::{Ellipsoid, Error, Polynomial, RealAlg, Var};
 
 fn json_text<T: serde::Serialize>(report: &T) -> Result<String, Error> {
     serde_json::to_string(report).map_err(|e| Error::internal(format!("JSON output: {e}")))
@@ -73,43 +72,6 @@ pub(crate) fn tangent(
             algebraic(c.nonreal_point_values()),
             undecided,
         ))
-    })
-}
-
-/// natural_input(text) -> (short, json)
-///
-/// A natural quadric in the short syntax or the JSON object form, checked,
-/// in its two canonical forms.
-#[pyfunction]
-pub(crate) fn natural_input(py: Python<'_>, text: &str) -> PyResult<(String, String)> {
-    guard::run(py, || {
-        let q: Natural = text.parse()?;
-        Ok((q.to_string(), json_text(&q)?))
-    })
-}
-
-/// natural(a, b, time_limit, components) -> (json, text)
-///
-/// `a`, `b` in the short syntax or the JSON object form; `components =
-/// false` asks for the class and counts only (the fast route).
-#[pyfunction]
-#[pyo3(signature = (a, b, time_limit = None, components = true))]
-pub(crate) fn natural(
-    py: Python<'_>,
-    a: &str,
-    b: &str,
-    time_limit: Option<f64>,
-    components: bool,
-) -> PyResult<(String, String)> {
-    let mut options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
-    if !components {
-        options = options.without_components();
-    }
-    guard::run(py, || {
-        let qa: Natural = parse(a, "in the first quadric")?;
-        let qb: Natural = parse(b, "in the second quadric")?;
-        let r = quadsect::natural::classify_with(&qa, &qb, &options)?;
-        Ok((json_text(&r)?, r.to_string()))
     })
 }
 

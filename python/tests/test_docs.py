@@ -10,6 +10,7 @@ from fractions import Fraction
 import pytest
 
 import quadsect
+import quadsect._components
 import quadsect._errors
 import quadsect.dask
 
@@ -17,10 +18,12 @@ README = pathlib.Path(__file__).resolve().parents[1] / "README.md"
 ROOT_README = pathlib.Path(__file__).resolve().parents[2] / "README.md"
 GLOBS = {"quadsect": quadsect, "Fraction": Fraction, "json": json,
          "RealAlgebraic": quadsect.RealAlgebraic, "Sphere": quadsect.Sphere,
+         "QuadraticIrrational": quadsect.QuadraticIrrational,
          "Cylinder": quadsect.Cylinder, "Cone": quadsect.Cone}
 
 
-@pytest.mark.parametrize("module", [quadsect, quadsect._errors, quadsect.dask], ids=lambda m: m.__name__)
+@pytest.mark.parametrize("module", [quadsect, quadsect._components, quadsect._errors, quadsect.dask],
+                         ids=lambda m: m.__name__)
 def test_docstring_examples_of_the_python_half(module):
     result = doctest.testmod(module, extraglobs=GLOBS, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.attempted > 0 and result.failed == 0
@@ -28,9 +31,10 @@ def test_docstring_examples_of_the_python_half(module):
 
 def compiled_docstrings():
     """The docstrings of the compiled half (the Rust doc comments)."""
-    ra = quadsect.RealAlgebraic
-    objects = [quadsect.exact, quadsect.answer_line, ra, quadsect._quadsect.Batch]
+    ra, qi = quadsect.RealAlgebraic, quadsect.QuadraticIrrational
+    objects = [quadsect.exact, quadsect.answer_line, ra, qi, quadsect._quadsect.Batch]
     objects += [getattr(ra, name) for name in dir(ra) if not name.startswith("_")]
+    objects += [getattr(qi, name) for name in dir(qi) if not name.startswith("_")]
     return [(getattr(o, "__qualname__", getattr(o, "__name__", repr(o))), o.__doc__ or "") for o in objects]
 
 

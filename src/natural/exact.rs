@@ -53,7 +53,8 @@ impl Exact {
 
     /// The value as a double with a proven bound on its error:
     /// `|self − v| ≤ b` for `(v, b)`, with `b` a few units in the last place
-    /// of `v` (`(±∞, ∞)` beyond the range of doubles).
+    /// of `v` (at most `2^-46·|v|`; 0 for a rational that is a double;
+    /// `(±∞, ∞)` beyond the range of doubles).
     ///
     /// ```
     /// use quadsect::natural::{classify_str, Component};

@@ -266,10 +266,10 @@ impl QSqrt {
 
     /// The value as a double with a proven bound on its error:
     /// `|self − v| ≤ b` for `(v, b)`, the bound within a few units in the
-    /// last place of `v` however close to 0 the value is (`(±∞, ∞)` beyond
-    /// the range of doubles; bound 0 for a rational that is a double).
-    /// Cancellation in `a + b√d` is met by the conjugate: `(a² − b²d)/(a −
-    /// b√d)`.
+    /// last place of `v` (at most `2^-46·|v|`) however close to 0 the value
+    /// is (`(±∞, ∞)` beyond the range of doubles; bound 0 for a rational
+    /// that is a double).  Cancellation in `a + b√d` is met by the
+    /// conjugate: `(a² − b²d)/(a − b√d)`.
     pub fn to_f64_bounded(&self) -> (f64, f64) {
         use super::xball::XBall;
         let ball = if self.b.is_zero() {
@@ -289,7 +289,11 @@ impl QSqrt {
             match rb {
                 Some(rb) => {
                     let fast = a.add(&rb);
-                    if fast.r * 1_099_511_627_776.0 < fast.m.abs() {
+                    // tight when the radius is below 2^-47 of the midpoint:
+                    // a ball of √d is about 2^-50 wide (relative) and the
+                    // conversions of a, b add a few 2^-53, so the sum passes
+                    // unless it cancels more than a few bits
+                    if fast.r * 140_737_488_355_328.0 < fast.m.abs() {
                         fast
                     } else {
                         // cancellation: a + b√d = (a² − b²d)/(a − b√d), an
@@ -567,6 +571,51 @@ mod tests {
         let inv = s2.inv().unwrap();
         assert_eq!(inv.mul(&s2), QSqrt::rational(qi(1)));
         assert_eq!(s2.approx(10), "1.414213562");
+    }
+
+    #[test]
+    fn f64_bounded_encloses_and_is_tight_under_cancellation() {
+        // (a, b, d): no cancellation, mild (3 − 1.5·√3 ≈ 0.40), strong
+        // (99/70 − √2 ≈ −7.2e-5, 665857/470832 − √2 ≈ 1.6e-12)
+        let cases = [
+            (qi(1), qi(1), qi(2)),
+            (qi(3), q(-3, 2), qi(3)),
+            (qi(-3), q(3, 2), qi(3)),
+            (q(99, 70), qi(-1), qi(2)),
+            (q(665857, 470832), qi(-1), qi(2)),
+            (q(1, 3), q(-7, 5), qi(11)),
+            // a tiny coefficient of a huge radicand (a curve branch's ruling)
+            (
+                qi(0),
+                Q::new(
+                    BigInt::from(-1),
+                    "1772303994379887832075638086516255403".parse().unwrap(),
+                ),
+                Q::from_integer(
+                    "2724436517094913528924234705567029378355482133044366905"
+                        .parse()
+                        .unwrap(),
+                ),
+            ),
+        ];
+        for (a, b, d) in cases {
+            let x = QSqrt::new(a, b, d);
+            let (v, bound) = x.to_f64_bounded();
+            let (vq, bq) = (Q::from_float(v).unwrap(), Q::from_float(bound).unwrap());
+            assert!(
+                QSqrt::rational(&vq - &bq).cmp_exact(&x) != Ordering::Greater,
+                "{x:?}"
+            );
+            assert!(
+                QSqrt::rational(&vq + &bq).cmp_exact(&x) != Ordering::Less,
+                "{x:?}"
+            );
+            // at most 2^-46·|v| (64 units in the last place at worst)
+            assert!(
+                bound <= v.abs() / 70_368_744_177_664.0,
+                "{x:?}: {v} ± {bound}"
+            );
+        }
     }
 
     #[test]

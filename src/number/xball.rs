@@ -276,6 +276,11 @@ impl XBall {
         }
         let s = pow2(self.e);
         let v = self.m * s;
+        if self.r == 0.0 && (self.m == 0.0 || v.is_normal()) {
+            // an exact ball (a dyadic rational of at most 53 bits): scaling
+            // by a power of two into the normal range is exact
+            return v.is_finite().then_some((v, 0.0));
+        }
         // rounding of the product (subnormal results: absolute 2^-1074)
         let b = (self.r * s + U * v.abs() + 5e-324) * INFL;
         (v.is_finite() && b.is_finite()).then_some((v, b))
@@ -303,6 +308,23 @@ mod tests {
         assert!(holds(&p, &(&big * &small)));
         let s = XBall::from_q(&big).add(&XBall::from_q(&small));
         assert!(holds(&s, &(&big + &small)));
+    }
+
+    #[test]
+    fn exact_doubles_have_bound_zero() {
+        for (x, v) in [
+            (qi(0), 0.0),
+            (qi(1), 1.0),
+            (q(-3, 4), -0.75),
+            (q(5, 1024), 5.0 / 1024.0),
+        ] {
+            assert_eq!(XBall::from_q(&x).to_f64(), Some((v, 0.0)), "{x}");
+        }
+        let third = q(1, 3);
+        let (v, b) = XBall::from_q(&third).to_f64().unwrap();
+        assert!(b > 0.0 && b < 1e-15);
+        let (vq, bq) = (Q::from_float(v).unwrap(), Q::from_float(b).unwrap());
+        assert!(&vq - &bq <= third && third <= &vq + &bq);
     }
 
     #[test]
