@@ -350,6 +350,27 @@ fn fuzzer_slow_inputs_end_within_the_budget() {
     }
 }
 
+/// Found by libFuzzer (`fuzz/`, batch_line): a tangent surface of degree
+/// 788 reached the Poisson route, whose F4 monomials pack exponents and
+/// degree in bytes: `zmpoly_mod` built monomials that overflowed their
+/// fields (an overflow panic in `f4::rank` with debug assertions; in a
+/// release build, silently other monomials).  `SquareSystem::new` now
+/// declines degrees beyond `f4::MAX_DEGREE`, and `zmpoly_mod` panics
+/// instead of packing a degree of 128 or more.
+#[test]
+fn fuzzer_tangent_of_degree_beyond_f4_answers() {
+    let line = r#"{"id":3,"op":"tangent","ellipsoid":"x^2+y^2+z^2-25","surface":"(x-9)^1/8+y^788+z^2/-16-1"}"#;
+    let v = answer_line(line);
+    assert_eq!(v["id"], json!(3), "{v}");
+    let deg = |d: &str| crate::poly::parse_poly(d).unwrap().to_primitive_z().0;
+    let sys =
+        crate::elim::poisson::SquareSystem::new([deg("x^121 - 1"), deg("y - 1"), deg("z - 1")]);
+    assert!(sys.is_none(), "degree 121 is beyond F4");
+    let sys =
+        crate::elim::poisson::SquareSystem::new([deg("x^120 - 1"), deg("y - 1"), deg("z - 1")]);
+    assert!(sys.is_some(), "degree 120 is within F4");
+}
+
 /// Found by libFuzzer (`fuzz/`, parse_poly: the first input ran 1.5 s
 /// under a 0.5 s budget): a product of polynomials with large coefficients
 /// read the clock every 64 rows, and ran up to 64 rows past its deadline
