@@ -800,12 +800,25 @@ fn degree_bound(basis: &[Mono]) -> u32 {
 
 /// An integer polynomial in x, y, z (slots `X, Y, Z` of an
 /// [`crate::poly::ZMPoly`]) modulo p.
+///
+/// # Panics
+///
+/// When a term's degree is 128 or more: its monomial does not fit [`Mono`]
+/// (callers decline such degrees first, see [`MAX_DEGREE`]; a packed
+/// monomial would silently be another one).
 pub fn zmpoly_mod(fp: &Fp, p: &crate::poly::ZMPoly) -> ModPoly {
     use crate::poly::mpoly::{X, Y, Z};
     let mut out: ModPoly = p
         .terms()
         .iter()
-        .map(|(e, c)| (mono(e[X], e[Y], e[Z]), fp.reduce_big(c) as u32))
+        .map(|(e, c)| {
+            let d = e[X] + e[Y] + e[Z];
+            assert!(
+                d < 128,
+                "a monomial of degree {d} does not fit the F4 packing"
+            );
+            (mono(e[X], e[Y], e[Z]), fp.reduce_big(c) as u32)
+        })
         .collect();
     normalize(&mut out);
     out
@@ -817,6 +830,15 @@ mod tests {
     use crate::elim::groebner::{GPoly, MonoOrder, groebner};
     use crate::number::reconstruct::prime31;
     use crate::poly::parse_poly;
+
+    /// A degree that does not fit the packing panics instead of packing
+    /// another monomial (fuzzing found `y^788` reaching here).
+    #[test]
+    #[should_panic(expected = "does not fit the F4 packing")]
+    fn zmpoly_mod_refuses_degrees_beyond_the_packing() {
+        let p = parse_poly("y^788 + x - 1").unwrap().to_primitive_z().0;
+        let _ = zmpoly_mod(&Fp::new(prime31(0)), &p);
+    }
 
     #[test]
     fn rank_is_the_grevlex_order() {

@@ -81,11 +81,15 @@ pub fn leading_form(p: &ZMPoly) -> ZMPoly {
 }
 
 impl SquareSystem {
-    /// The system, or `None` when a polynomial is zero or constant.
+    /// The system, or `None` when a polynomial is zero or constant, or of
+    /// a degree beyond the F4 limit [`MAX_DEGREE`](super::f4::MAX_DEGREE)
+    /// (its monomials do not fit [`Mono`]).
     pub fn new(gens: [ZMPoly; 3]) -> Option<SquareSystem> {
         let mut degs = [0u32; 3];
         for (d, g) in degs.iter_mut().zip(&gens) {
-            *d = g.total_degree().filter(|&d| d > 0)?;
+            *d = g
+                .total_degree()
+                .filter(|&d| d > 0 && d <= super::f4::MAX_DEGREE)?;
         }
         let forms = std::array::from_fn(|i| leading_form(&gens[i]));
         Some(SquareSystem {

@@ -289,7 +289,12 @@ fn scan_decimal(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
     let value = if e >= 0 {
         Q::from_integer(mantissa * num_traits::pow(ten, e as usize))
     } else {
-        Q::new(mantissa, num_traits::pow(ten, (-e) as usize))
+        // reduced with the fast gcd (num-rational's `Q::new` uses
+        // num-bigint's binary gcd, quadratic in the bits of 10^-e even
+        // when the mantissa is small)
+        let den = num_traits::pow(ten, (-e) as usize);
+        let g = super::gcd_z(&mantissa, &den);
+        Q::new_raw(mantissa / &g, den / g)
     };
     Ok((value, i))
 }

@@ -16,9 +16,10 @@
 
 use crate::budget::Budget;
 use crate::natural::{ClassifyOptions, Natural};
-use crate::number::{NumberMode, parse_rational};
+use crate::number::{NumberMode, Q, parse_rational};
 use crate::poly::parse_poly;
 use crate::{IntPoly, Polynomial};
+use num_bigint::BigInt;
 use proptest::prelude::*;
 use serde_json::{Value, json};
 use std::time::{Duration, Instant};
@@ -349,6 +350,27 @@ fn fuzzer_slow_inputs_end_within_the_budget() {
     }
 }
 
+/// Found by libFuzzer (`fuzz/`, batch_line): a tangent surface of degree
+/// 788 reached the Poisson route, whose F4 monomials pack exponents and
+/// degree in bytes: `zmpoly_mod` built monomials that overflowed their
+/// fields (an overflow panic in `f4::rank` with debug assertions; in a
+/// release build, silently other monomials).  `SquareSystem::new` now
+/// declines degrees beyond `f4::MAX_DEGREE`, and `zmpoly_mod` panics
+/// instead of packing a degree of 128 or more.
+#[test]
+fn fuzzer_tangent_of_degree_beyond_f4_answers() {
+    let line = r#"{"id":3,"op":"tangent","ellipsoid":"x^2+y^2+z^2-25","surface":"(x-9)^1/8+y^788+z^2/-16-1"}"#;
+    let v = answer_line(line);
+    assert_eq!(v["id"], json!(3), "{v}");
+    let deg = |d: &str| crate::poly::parse_poly(d).unwrap().to_primitive_z().0;
+    let sys =
+        crate::elim::poisson::SquareSystem::new([deg("x^121 - 1"), deg("y - 1"), deg("z - 1")]);
+    assert!(sys.is_none(), "degree 121 is beyond F4");
+    let sys =
+        crate::elim::poisson::SquareSystem::new([deg("x^120 - 1"), deg("y - 1"), deg("z - 1")]);
+    assert!(sys.is_some(), "degree 120 is within F4");
+}
+
 /// Found by libFuzzer (`fuzz/`, parse_poly: the first input ran 1.5 s
 /// under a 0.5 s budget): a product of polynomials with large coefficients
 /// read the clock every 64 rows, and ran up to 64 rows past its deadline
@@ -368,30 +390,93 @@ fn fuzzer_slow_parses_end_within_the_budget() {
 
 /// Found by libFuzzer (`fuzz/`, parse_poly: `(2^3)^77773 -0-1_…` ran
 /// 1.2–1.6 s under a 0.5 s budget in the sanitizer build): one step of a
-/// sum of huge integers is a gcd (num-bigint's binary gcd, quadratic in the
-/// bits even against 1: about 0.15 s natively for 233 000 bits, five times
-/// that under AddressSanitizer).  That is the budget's documented
-/// granularity, one arithmetic operation, and not a missed check: the sum
-/// reads the clock before each large step (`poly::ring`), so a run stops
-/// after the step running at its deadline, not several steps later.
+/// sum of huge integers was a gcd (num-bigint's binary gcd, quadratic in
+/// the bits even against 1).  Sums and products of large rationals now
+/// reduce with `number::gcd_z` and integers with no gcd at all
+/// (`poly::ring`), so a step is cheap; and the sum still reads the clock
+/// before each large step, so a run stops a step or so after its deadline.
 #[test]
 fn a_sum_of_huge_integers_stops_a_step_after_its_deadline() {
     let one = "8^77773 - 1";
     let t0 = Instant::now();
     let _ = parse_poly(one).unwrap();
     let step = t0.elapsed();
-    let six = [one; 6].join(" + ");
+    let many = [one; 200].join(" + ");
     let limit = Duration::from_millis(1);
     let t0 = Instant::now();
     let r = crate::budget::run(&Budget::default().with_time_limit(Some(limit)), || {
-        parse_poly(&six).map(|p| p.len())
+        parse_poly(&many).map(|p| p.len())
     });
     let took = t0.elapsed();
-    assert!(r.is_err(), "six steps end after the deadline: {r:?}");
+    assert!(r.is_err(), "200 steps end after the deadline: {r:?}");
     assert!(
         took <= limit + 3 * step + Duration::from_millis(20),
         "{took:?} with a limit of {limit:?} and steps of {step:?}"
     );
+}
+
+/// Found by libFuzzer (`fuzz/`, parse_poly: 2.3–3.3 s under a 0.5 s
+/// budget in the sanitizer build): a power of a constant was
+/// num-rational's `pow`, which reduces every square with num-bigint's
+/// binary gcd (quadratic in the bits even against 1), and a scientific
+/// literal with a large negative exponent was reduced the same way.  A
+/// constant power is now `numer^e / denom^e` (coprime, no gcd) and a
+/// literal is reduced with `number::gcd_z`: each input parses, exactly,
+/// in a fraction of the budget.
+#[test]
+fn fuzzer_constant_powers_take_no_binary_gcd() {
+    for s in [
+        "(2-488)^22384",
+        "3-8888188^8888(6x^629/366",
+        "(x-9(x-1e-4298^22I1)^22.1",
+        "1388881e-88881e1e-24",
+    ] {
+        parse_everything(s);
+    }
+    let ten = || BigInt::from(10);
+    for (s, value) in [
+        (
+            "(2-488)^22384",
+            Q::from_integer(num_traits::pow(BigInt::from(-486), 22_384)),
+        ),
+        (
+            "8888188^8888",
+            Q::from_integer(num_traits::pow(BigInt::from(8_888_188), 8_888)),
+        ),
+        (
+            "(1e-4298)^22",
+            Q::new(BigInt::from(1), num_traits::pow(ten(), 94_556)),
+        ),
+        (
+            "(-6/35)^9001",
+            Q::new(BigInt::from(-6), BigInt::from(35)).pow(9001),
+        ),
+        (
+            "1388881e-88881",
+            Q::new(BigInt::from(1_388_881), num_traits::pow(ten(), 88_881)),
+        ),
+        ("25e-3", Q::new(BigInt::from(1), BigInt::from(40))),
+        ("0e-5", Q::from_integer(BigInt::from(0))),
+        ("1/(-7/3)", Q::new(BigInt::from(-3), BigInt::from(7))),
+    ] {
+        let budget = Budget::default().with_time_limit(Some(LIMIT));
+        let t0 = Instant::now();
+        let r = crate::budget::run(&budget, || parse_poly(s));
+        let took = t0.elapsed();
+        let p = r
+            .unwrap_or_else(|e| panic!("{s:?} ran out of its budget after {took:?}: {e}"))
+            .unwrap_or_else(|e| panic!("{s:?}: {e}"));
+        assert!(p.is_constant(), "{s:?}");
+        let c = p.constant_term();
+        assert_eq!(c, value, "{s:?}");
+        // in lowest terms with a positive denominator
+        let fresh = Q::new(c.numer().clone(), c.denom().clone());
+        assert_eq!(
+            (c.numer(), c.denom()),
+            (fresh.numer(), fresh.denom()),
+            "{s:?}"
+        );
+    }
 }
 
 /// Inputs found by libFuzzer (`fuzz/`): huge constants must either be
