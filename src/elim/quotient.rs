@@ -179,8 +179,12 @@ fn krylov_mod(
     let n = v.len();
     let mut cols: Vec<Vec<u64>> = Vec::with_capacity(cap);
     cols.push(v);
+    // a step is n² products: the clock is read every step when that is
+    // much work (amortised over 64 steps, a tangent line found by fuzzing
+    // ran 75 ms natively, 1.7 s under the sanitizer, past its deadline)
+    let step = (n as u64).saturating_mul(n as u64);
     for _ in 0..n {
-        crate::budget::check();
+        crate::budget::check_for(step);
         let cur = cols.last().expect("non-empty");
         let mut out = vec![0u64; n];
         for (cj, col) in cur.iter().zip(mp) {
@@ -363,8 +367,10 @@ fn gauss_jordan_mod(
     let rows = a.len();
     let mut used = vec![false; rows];
     let mut pivots = Vec::new();
+    // a column is up to rows × width products (see `krylov_mod`)
+    let step = (rows as u64).saturating_mul(a.first().map_or(0, |r| r.len()) as u64);
     for c in 0..stop {
-        crate::budget::check();
+        crate::budget::check_for(step);
         let Some(r) = (0..rows).find(|&i| !used[i] && a[i][c] != 0) else {
             return (pivots, c);
         };

@@ -371,6 +371,74 @@ fn fuzzer_tangent_of_degree_beyond_f4_answers() {
     assert!(sys.is_some(), "degree 120 is within F4");
 }
 
+/// Found by libFuzzer (`fuzz/`, natural_parse, on the merge of main at
+/// 4b51eda: 1.7 s, 1.5 s of CPU, under a 0.5 s budget in the sanitizer
+/// build): two cones, one of half-angle ~10^-415, took 0.1 s natively in
+/// `curve::zf_ball`'s loop of rational bounds on √D (reduced with
+/// num-bigint's binary gcd, no budget check inside).  Main's conjugate
+/// route (a419730) replaced that loop; this pins the pair within the budget.
+#[test]
+fn fuzzer_thin_cone_pair_classifies_within_the_budget() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/src/tests/data/fuzz_thin_cones.txt"
+    ))
+    .unwrap();
+    let (a, b) = text.split_once('\n').unwrap();
+    let (x, y) = (parse_natural(a).unwrap(), parse_natural(b).unwrap());
+    for components in [true, false] {
+        classify_within_budget(&x, &y, components);
+    }
+    let mut options = ClassifyOptions::with_budget(Budget::default().with_time_limit(Some(LIMIT)));
+    options.components = true;
+    let t0 = Instant::now();
+    assert!(crate::natural::classify_with(&x, &y, &options).is_ok());
+    assert!(t0.elapsed() <= LIMIT, "{:?}", t0.elapsed());
+}
+
+/// Found by libFuzzer (`fuzz/`, batch_line: 2.3 s, 2.2 s of CPU, under a
+/// 0.5 s budget in the sanitizer build): the exact route of a tangent line
+/// reduced its radical shape with `QPoly::divrem`, which read the clock
+/// every 64 rows of large rational products (75 ms past a 20 ms deadline
+/// natively); the modular Krylov steps likewise.  A division now reads it
+/// every row when rows are large and stops within a row or so.
+#[test]
+fn fuzzer_tangent_line_and_large_divisions_stop_near_their_deadline() {
+    let line = r#"{"id":3,"op":"tangent","ellipsoid":"x^2+y^2+z^2-25","surface":"(x-1)^2/91y^2/4+z^5/162-1"}"#;
+    let v = answer_line(line);
+    assert_eq!(v["id"], json!(3), "{v}");
+    use crate::poly::zpoly::QPoly;
+    // rows of 60 products of 20 000-bit rationals (> budget::LARGE_BITS)
+    let big = |n: usize, base: u32| -> QPoly {
+        QPoly::new(
+            (0..n)
+                .map(|i| {
+                    Q::new(
+                        num_traits::pow(BigInt::from(base), 8_000 + i),
+                        num_traits::pow(BigInt::from(7), 7_000 + i),
+                    )
+                })
+                .collect(),
+        )
+    };
+    let b = big(60, 5);
+    let t0 = Instant::now();
+    let _ = big(62, 3).divrem(&b);
+    let row = t0.elapsed() / 3;
+    let a = big(400, 3);
+    let limit = Duration::from_millis(5);
+    let t0 = Instant::now();
+    let r = crate::budget::run(&Budget::unlimited().with_time_limit(Some(limit)), || {
+        a.divrem(&b)
+    });
+    let took = t0.elapsed();
+    assert!(r.is_err(), "340 rows end after the deadline");
+    assert!(
+        took <= limit + 8 * row + Duration::from_millis(20),
+        "{took:?} with a limit of {limit:?} and rows of {row:?}"
+    );
+}
+
 /// Found by libFuzzer (`fuzz/`, parse_poly: the first input ran 1.5 s
 /// under a 0.5 s budget): a product of polynomials with large coefficients
 /// read the clock every 64 rows, and ran up to 64 rows past its deadline
