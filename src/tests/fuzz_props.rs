@@ -439,6 +439,37 @@ fn fuzzer_tangent_line_and_large_divisions_stop_near_their_deadline() {
     );
 }
 
+/// Found by libFuzzer (`fuzz/`, batch_line: 3.85 s, 3.8 s of CPU, under
+/// a 0.5 s budget in the sanitizer build): a tangent surface of degree 2391
+/// spent its time in `roots::enclose::eval_q`, Horner's rule over Q with
+/// no budget check (0.15 s natively under a 0.02 s limit).  It now reads
+/// the clock at every large step.
+#[test]
+fn fuzzer_high_degree_evaluation_stops_at_its_deadline() {
+    let line = r#"{"id":3,"op":"tangent","ellipsoid":"x^2+y^2+z^2-25","surface":"(x-0)^2391+z^2/16^2/16-1"}"#;
+    let v = answer_line(line);
+    assert_eq!(v["id"], json!(3), "{v}");
+    use crate::poly::zpoly::QPoly;
+    let mut c = vec![Q::from_integer(BigInt::from(1)); 2392];
+    c[7] = Q::new(BigInt::from(3), BigInt::from(5));
+    let p = QPoly::new(c);
+    let x = Q::new(
+        BigInt::from(1_234_567_891_011u64),
+        BigInt::from(998_877_665_544u64),
+    );
+    let limit = Duration::from_millis(1);
+    let t0 = Instant::now();
+    let r = crate::budget::run(&Budget::unlimited().with_time_limit(Some(limit)), || {
+        crate::roots::eval_q(&p, &x)
+    });
+    let took = t0.elapsed();
+    assert!(
+        r.is_err(),
+        "2391 steps on 100 000-bit numbers end after 1 ms"
+    );
+    assert!(took <= Duration::from_millis(200), "{took:?}");
+}
+
 /// Found by libFuzzer (`fuzz/`, parse_poly: the first input ran 1.5 s
 /// under a 0.5 s budget): a product of polynomials with large coefficients
 /// read the clock every 64 rows, and ran up to 64 rows past its deadline
