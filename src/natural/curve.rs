@@ -698,18 +698,14 @@ impl CurvePoint {
 /// whose denominator adds two terms of one sign.
 fn zf_ball(x: &Zf, sqrt_d: &XBall, d: &Z) -> XBall {
     let q = |n: &Z| XBall::from_q(&Q::new_raw(n.clone(), x.den.clone()));
-    let fast = q(&x.u).add(&q(&x.v).mul(sqrt_d));
-    if x.v.is_zero() || x.is_zero() || tight(&fast) {
-        return fast;
+    let (a, b) = (q(&x.u), q(&x.v).mul(sqrt_d));
+    if x.v.is_zero() || x.is_zero() {
+        return a.add(&b);
     }
-    let z = |n: &Z| XBall::from_q(&Q::from_integer(n.clone()));
-    let norm = &x.u * &x.u - &x.v * &x.v * d;
-    let conj = z(&x.u).sub(&z(&x.v).mul(sqrt_d));
-    match conj.recip() {
-        Some(inv) => q(&norm).mul(&inv),
-        // u − v√D has no cancellation when u + v√D has: not reached
-        None => fast,
-    }
+    // (u/den)² − (v√D/den)² = (u² − v²D)/den²
+    a.add_by_conjugate(&b, 40, || {
+        XBall::from_q(&Q::new_raw(&x.u * &x.u - &x.v * &x.v * d, &x.den * &x.den))
+    })
 }
 
 /// A ball away from 0 with a relative radius below 2^-40.

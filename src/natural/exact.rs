@@ -14,7 +14,7 @@ use crate::number::{Q, QSqrt};
 use crate::poly::{QPoly, ZPoly};
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 /// An exact real number of the output: an element `a + b√d` of a
 /// quadratic field (rationals included), or a real algebraic number of
@@ -163,30 +163,24 @@ pub fn epoint(v: &[QSqrt; 3]) -> EPoint {
 /// A direction with rational components scaled to a primitive integer
 /// vector (first non-zero component positive); other directions unchanged.
 pub fn normalize_direction(d: &EPoint) -> EPoint {
-    let mut rat: Vec<Q> = Vec::new();
-    for c in d {
-        match c {
-            Exact::Quad(x) if x.is_rational() => rat.push(x.a.clone()),
-            _ => return d.clone(),
-        }
-    }
-    let l = crate::number::denom_lcm(rat.iter());
-    let ints: Vec<BigInt> = rat.iter().map(|q| q.numer() * (&l / q.denom())).collect();
-    let mut g = BigInt::zero();
-    for i in &ints {
-        g = num_integer::Integer::gcd(&g, i);
-    }
-    if g.is_zero() {
+    if !d
+        .iter()
+        .all(|c| matches!(c, Exact::Quad(x) if x.is_rational()))
+    {
         return d.clone();
     }
-    if ints
-        .iter()
-        .find(|x| !x.is_zero())
-        .is_some_and(|x| x.is_negative())
+    let p = primitive_direction(d);
+    if p.iter()
+        .find(|c| c.signum() != 0)
+        .is_some_and(|c| c.signum() < 0)
     {
-        g = -g;
+        std::array::from_fn(|i| match &p[i] {
+            Exact::Quad(x) => Exact::Quad(x.neg()),
+            other => other.clone(),
+        })
+    } else {
+        p
     }
-    std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)))
 }
 
 /// A direction scaled by a positive rational so that its coordinates,
@@ -549,6 +543,7 @@ pub fn exact_of(x: &RealAlg) -> Exact {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_traits::Signed;
     use crate::number::{q, qi};
 
     #[test]

@@ -287,24 +287,14 @@ impl QSqrt {
                 .sqrt()
                 .map(|r| XBall::from_q(&self.b).mul(&r));
             match rb {
-                Some(rb) => {
-                    let fast = a.add(&rb);
-                    // tight when the radius is below 2^-47 of the midpoint:
-                    // a ball of √d is about 2^-50 wide (relative) and the
-                    // conversions of a, b add a few 2^-53, so the sum passes
-                    // unless it cancels more than a few bits
-                    if fast.r * 140_737_488_355_328.0 < fast.m.abs() {
-                        fast
-                    } else {
-                        // cancellation: a + b√d = (a² − b²d)/(a − b√d), an
-                        // exact numerator over two terms of one sign
-                        let norm = &self.a * &self.a - &self.b * &self.b * &self.d;
-                        match a.sub(&rb).recip() {
-                            Some(inv) => XBall::from_q(&norm).mul(&inv),
-                            None => fast,
-                        }
-                    }
-                }
+                // tight when the radius is below 2^-47 of the midpoint:
+                // a ball of √d is about 2^-50 wide (relative) and the
+                // conversions of a, b add a few 2^-53, so the sum passes
+                // unless it cancels more than a few bits; under
+                // cancellation a + b√d = (a² − b²d)/(a − b√d)
+                Some(rb) => a.add_by_conjugate(&rb, 47, || {
+                    XBall::from_q(&(&self.a * &self.a - &self.b * &self.b * &self.d))
+                }),
                 // √d of a positive d always has a ball: not reached, and
                 // an infinite bound is still true
                 None => return (0.0, f64::INFINITY),

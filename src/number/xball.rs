@@ -263,6 +263,23 @@ impl XBall {
         Some((scale(lo)?, scale(hi)?))
     }
 
+    /// `self + y` for balls whose `self² − y²` is known exactly (`norm`,
+    /// computed only when needed): the sum when it is tight (radius below
+    /// `2^-bits` of the midpoint), else — the two cancel, so `self` and
+    /// `−y` have one sign — `norm/(self − y)`, whose denominator adds
+    /// without cancellation (`a + b√d = (a² − b²d)/(a − b√d)`).
+    pub fn add_by_conjugate(&self, y: &XBall, bits: i32, norm: impl FnOnce() -> XBall) -> XBall {
+        let fast = self.add(y);
+        if fast.r * 2f64.powi(bits) < fast.m.abs() {
+            return fast;
+        }
+        match self.sub(y).recip() {
+            Some(inv) => norm().mul(&inv),
+            // self − y contains 0 only when both are near 0: keep the sum
+            None => fast,
+        }
+    }
+
     /// A double approximation of the midpoint and a bound on the distance
     /// from it to any point of the ball (`None` outside the range of
     /// doubles).
