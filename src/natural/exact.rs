@@ -543,8 +543,8 @@ pub fn exact_of(x: &RealAlg) -> Exact {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use num_traits::Signed;
     use crate::number::{q, qi};
+    use num_traits::Signed;
 
     #[test]
     fn recognizes_quadratics_inside_larger_polynomials() {
