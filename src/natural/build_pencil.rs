@@ -204,7 +204,7 @@ pub(crate) fn branches_by(p: &QIn<Z>, q: &QIn<Z>) -> Result<(Vec<CurveBranch>, u
         .branches
         .iter()
         .map(|b| {
-            let start: CurvePoint = r.realize(p, q, &b.at)?;
+            let start: CurvePoint = r.realize(p, &b.at)?;
             Ok(CurveBranch {
                 bounded: b.bounded,
                 start,

@@ -56,6 +56,15 @@ impl Quad2 {
     fn is_zero(&self) -> bool {
         self.c.iter().all(Zero::is_zero)
     }
+
+    /// The value at `(x, y)` over `Z[√d]`:
+    /// `c0 + x(c1 + c3x) + y(c2 + c4x) + c5y²`.
+    fn eval(&self, x: &Zf, y: &Zf, d: &Z) -> Zf {
+        let c = |i: usize| Zf::int(self.c[i].clone());
+        let xpart = x.mul(&c(1).add(&x.scale(&self.c[3])), d);
+        let ypart = y.mul(&c(2).add(&x.scale(&self.c[4])).add(&y.scale(&self.c[5])), d);
+        c(0).add(&xpart).add(&ypart)
+    }
 }
 
 /// The conic `Γ: g1·x² + g2·y² = g0` (`g0, g1, g2 > 0`).
@@ -196,7 +205,7 @@ fn zeros(g: &Gamma, r: &Reduced) -> Result<Vec<GPoint>, Error> {
     for mut x in RealAlg::roots_of(&r.w) {
         crate::budget::check();
         // narrow once, so that the signs at x below are decided by balls
-        x.refine_relative(60);
+        x.refine_relative(40);
         match x.sign_of(&edge) {
             1 => continue, // no real point of Γ there
             0 => out.push(GPoint { x, ys: 0 }),
@@ -221,7 +230,21 @@ fn zeros(g: &Gamma, r: &Reduced) -> Result<Vec<GPoint>, Error> {
 
 /// A rational strictly between two real algebraic numbers `lo < hi`.
 fn between(lo: &RealAlg, hi: &RealAlg) -> Q {
+    let gap = |a: &RealAlg, b: &RealAlg| {
+        let (x, y) = (a.interval().1, b.interval().0);
+        (x < y).then(|| simplest_rational_in(&x, &y))
+    };
+    if let Some(q) = gap(lo, hi) {
+        return q;
+    }
+    // narrowed by Newton steps first (the ends ±xm come wide), then bisected
     let mut v = [lo.clone(), hi.clone()];
+    for x in v.iter_mut() {
+        x.refine_relative(40);
+    }
+    if let Some(q) = gap(&v[0], &v[1]) {
+        return q;
+    }
     crate::roots::separate(&mut v);
     simplest_rational_in(&v[0].interval().1, &v[1].interval().0)
 }
@@ -713,25 +736,11 @@ fn tight(b: &XBall) -> bool {
     b.r * 1_099_511_627_776.0 < b.m.abs()
 }
 
-/// `xᵀ M y` for homogeneous vectors over `Z[√D]`.
-fn zform(m: &M4<Z>, x: &[Zf; 4], y: &[Zf; 4], d: &Z) -> Zf {
-    let mut acc = Zf::zero();
-    for i in 0..4 {
-        for j in 0..4 {
-            if m[i][j].is_zero() {
-                continue;
-            }
-            acc = acc.add(&x[i].mul(&y[j], d).scale(&m[i][j]));
-        }
-    }
-    acc
-}
-
 impl Rulings {
     /// The point of `X` at a ruling point of a branch (module docs; the
     /// rational `x`, the sign of `y`, the sheet), with `q` the other
     /// quadric and `p` the cylinder or cone.
-    pub fn realize(&self, p: &QIn<Z>, q: &QIn<Z>, at: &RulingPoint) -> Result<CurvePoint, Error> {
+    pub fn realize(&self, p: &QIn<Z>, at: &RulingPoint) -> Result<CurvePoint, Error> {
         let g = &self.gamma;
         // y = ys·√E, E = En/Ed: y = ys·√D/Ed with D = En·Ed
         let e = g.y2(&at.x);
@@ -764,19 +773,20 @@ impl Rulings {
         } else {
             (std::array::from_fn(|i| c3[i].add(&xy[i])), az)
         };
-        let m: M4<Z> = matrix(q);
-        let h = |v: &[Zf; 3], w: i64| -> [Zf; 4] {
-            [
-                v[0].clone(),
-                v[1].clone(),
-                v[2].clone(),
-                Zf::int(Z::from(w)),
-            ]
+        // Q along the ruling, from the restrictions already computed
+        // (module docs): for a cylinder the ruling is s·(a, 0) + r·q·(P0, 1),
+        // so A = σ, B = β(z)/q, C = ρ(z)/q²; for a cone it is
+        // s·q·(P0, 1) + r·(d, 0), so A = ρ(z), B = β(z)/q, C = σ/q² —
+        // the values of xᵀMy on the homogeneous (P0, 1) and (d, 0)
+        let (bz, rz) = (self.beta.eval(&xq, &y, &d), self.rho.eval(&xq, &y, &d));
+        let sig = Zf::int(self.sigma.clone());
+        let q2 = &p.q * &p.q;
+        let qb = bz.div_z(&p.q);
+        let (qa, qc) = if self.cone {
+            (rz, sig.div_z(&q2))
+        } else {
+            (sig, rz.div_z(&q2))
         };
-        let (ph, dh) = (h(&p0, 1), h(&dir, 0));
-        let qa = zform(&m, &dh, &dh, &d);
-        let qb = zform(&m, &dh, &ph, &d);
-        let qc = zform(&m, &ph, &ph, &d);
         let sd = if d.is_one() {
             XBall::from_q(&Q::one())
         } else {
