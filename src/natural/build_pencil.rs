@@ -186,7 +186,7 @@ fn nodal_point(
 
 /// The quadric whose rulings parameterise the curve: a cylinder first, a
 /// cone otherwise; and the other.
-fn ruling_choice<'a>(x: &'a QIn<Z>, y: &'a QIn<Z>) -> (&'a QIn<Z>, &'a QIn<Z>) {
+pub(crate) fn ruling_choice<'a>(x: &'a QIn<Z>, y: &'a QIn<Z>) -> (&'a QIn<Z>, &'a QIn<Z>) {
     match (x.kind, y.kind) {
         (Kind::Cylinder, _) => (x, y),
         (_, Kind::Cylinder) => (y, x),

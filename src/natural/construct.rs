@@ -44,7 +44,26 @@ pub(crate) fn components(
             super::build_pencil::pencil_components(&x, &y, case)?
         }
         Case::Rulings => {
-            return super::topology::classify_nonplanar(na, nb);
+            // the common lines and the crossing points from the exact
+            // algebra of the reference route; the branches of the rest of
+            // the curve by the rulings (σ = 0: both vertices lie on the line)
+            let (mut comps, mut notes) = super::topology::classify_nonplanar(na, nb)?;
+            let (x, y) = (a.prep.tier::<BigInt>(), b.prep.tier::<BigInt>());
+            let (p, q) = super::build_pencil::ruling_choice(&x, &y);
+            match super::build_pencil::branches_by(p, q) {
+                Ok((traced, _)) if !traced.is_empty() => {
+                    for c in comps.iter_mut() {
+                        if let Component::Curve { branches, .. } = c {
+                            *branches = traced.clone();
+                        }
+                    }
+                }
+                Ok(_) => {
+                    notes.push("the branches of the cubic were not traced (none found)".into())
+                }
+                Err(e) => notes.push(format!("the branches of the cubic were not traced ({e})")),
+            }
+            return Ok((comps.into_iter().map(small_directions).collect(), notes));
         }
     };
     Ok((

@@ -101,6 +101,22 @@ impl Gamma {
         Reduced { a, b, w }
     }
 
+    /// The derivative of `f` along `Γ`, `∇f · (−g2·y, g1·x)` (the tangent
+    /// of `g1x² + g2y² = g0`, non-zero on it): a quadratic function again.
+    fn tangential(&self, f: &Quad2) -> Quad2 {
+        let (c, g1, g2) = (&f.c, &self.g1, &self.g2);
+        Quad2 {
+            c: [
+                Z::zero(),
+                g1 * &c[2],
+                -(g2 * &c[1]),
+                g1 * &c[4],
+                (g1 * &c[5] - g2 * &c[3]) * 2,
+                -(g2 * &c[4]),
+            ],
+        }
+    }
+
     /// `g1·x² − g0` (negative inside `Γ`'s range of `x`).
     fn edge(&self) -> ZPoly {
         ZPoly::new(vec![-self.g0.clone(), Z::zero(), self.g1.clone()])
@@ -308,6 +324,16 @@ impl Dsu {
     }
 }
 
+/// Where the curve goes at a special point of `Γ` when `σ = 0`.
+enum End {
+    /// Through an affine point off `P`'s vertex: the arcs on both sides join.
+    Affine,
+    /// To infinity: both arcs are cut there.
+    Infinity,
+    /// Through the cone's apex, where all such arc ends meet.
+    Apex,
+}
+
 /// The parameterisation of `X` by the rulings of `P` (module docs).
 #[derive(Clone, Debug)]
 pub(crate) struct Rulings {
@@ -429,6 +455,31 @@ impl Rulings {
         }
     }
 
+    /// Where the rest of the curve meets a common ruling (`σ = 0`, `β` and
+    /// `ρ` both zero at `p`).  Along `Γ` near `p`, `β` and `ρ` vanish to
+    /// orders `mβ ∈ {1, 2}` and `mρ ≥ 1` (order ≥ 2 iff the derivative
+    /// along `Γ` vanishes too: [`Gamma::tangential`]).  The point is
+    /// `−ρ·S + 2β·R(z)`, whose affine weight is `∝ β` for a cylinder and
+    /// `∝ ρ` for a cone: a cylinder's curve stays affine iff `mρ ≥ mβ`; a
+    /// cone's iff `mρ ≤ mβ`, through the apex iff `mρ < mβ`.  (A cone with
+    /// `mβ = mρ = 2` would need the next order: not traced.)
+    fn common_ruling_end(&self, p: &GPoint) -> Result<End, Error> {
+        let g = &self.gamma;
+        let double = |f: &Quad2| sign_at_point(&g.reduce(&g.tangential(f)), p) == 0;
+        let (mb2, mr2) = (double(&self.beta), double(&self.rho));
+        Ok(match (self.cone, mb2, mr2) {
+            (false, true, false) => End::Infinity,
+            (false, _, _) | (true, false, false) => End::Affine,
+            (true, false, true) => End::Infinity,
+            (true, true, false) => End::Apex,
+            (true, true, true) => {
+                return Err(Error::internal(
+                    "a common ruling met to second order on both sides",
+                ));
+            }
+        })
+    }
+
     /// The real affine topology of `X` (module docs).
     pub fn topology(&self) -> Result<Topology, Error> {
         let g = &self.gamma;
@@ -506,6 +557,7 @@ impl Rulings {
         let mut unbounded = vec![false; na * ns];
         let mut isolated = 0;
         let mut apex: Option<usize> = None;
+        let mut common = false;
         for i in 0..n {
             let (p, f) = &pts[i];
             let left = (i + na - 1) % na;
@@ -552,18 +604,30 @@ impl Rulings {
                     _ => {}
                 }
             } else {
-                // σ = 0: one sheet; cylinder cuts at β = 0, cone cuts at
-                // ρ = 0 and passes through the apex at β = 0
-                let cut = if self.cone { f[1] } else { f[2] };
-                if cut {
-                    if self.cone && f[2] {
-                        return Err(Error::internal("a common ruling in a nodal case"));
-                    }
-                    unbounded[piece(left, 0)] = true;
-                    unbounded[piece(right, 0)] = true;
+                // σ = 0: one sheet, the point [−ρ : 2β] on the ruling over
+                // z: where only β vanishes it is at infinity (cylinder) or
+                // the apex (cone), where only ρ vanishes (cone) at infinity;
+                // where both vanish the ruling is a common line, reached
+                // at the limit of [−ρ : 2β] ([`Self::common_ruling_end`])
+                let both = f[2] && (f[1] || sign_at_point(&rr, p) == 0);
+                let end = if both {
+                    common = true;
+                    self.common_ruling_end(p)?
+                } else if self.cone && f[1] {
+                    End::Infinity
+                } else if f[2] {
+                    if self.cone { End::Apex } else { End::Infinity }
                 } else {
-                    dsu.join(piece(left, 0), piece(right, 0));
-                    if self.cone && f[2] {
+                    End::Affine
+                };
+                match end {
+                    End::Infinity => {
+                        unbounded[piece(left, 0)] = true;
+                        unbounded[piece(right, 0)] = true;
+                    }
+                    End::Affine => dsu.join(piece(left, 0), piece(right, 0)),
+                    End::Apex => {
+                        dsu.join(piece(left, 0), piece(right, 0));
                         match apex {
                             Some(j) => dsu.join(j, piece(right, 0)),
                             None => apex = Some(piece(right, 0)),
@@ -572,8 +636,9 @@ impl Rulings {
                 }
             }
         }
-        if sigma0 && self.cone && apex.is_none() {
-            // no real ruling of the apex's tangent cone: an isolated apex
+        if sigma0 && self.cone && apex.is_none() && !common {
+            // no real ruling of the apex's tangent cone (and no common
+            // line through it): an isolated apex
             isolated += 1;
         }
         // the components

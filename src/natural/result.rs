@@ -115,7 +115,9 @@ pub enum Component {
         /// Its real affine connected components (branches), each with
         /// whether it is bounded and a point on it (where a marcher
         /// starts).  Empty only in the reference route's answers
-        /// ([`super::ClassifyOptions::deciders`]), which do not trace branches.
+        /// ([`super::ClassifyOptions::deciders`]), which do not trace
+        /// branches, and for a cubic beside a common ruling met to second
+        /// order by a cone on both sides (a note says so).
         branches: Vec<CurveBranch>,
     },
 }
