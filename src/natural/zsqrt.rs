@@ -150,16 +150,11 @@ impl Zf {
 
     /// The value as an element of Q(√d) (reduced: one gcd per part).
     pub fn to_qsqrt(&self, d: &Z) -> QSqrt {
-        let a = Q::new(self.u.clone(), self.den.clone());
+        let q = |n: &Z| crate::number::q_new(n.clone(), self.den.clone());
         if self.v.is_zero() || d.is_one() {
-            let b = Q::new(self.v.clone(), self.den.clone());
-            return QSqrt::rational(a + b);
+            return QSqrt::rational(q(&(&self.u + &self.v)));
         }
-        QSqrt::from_parts_nonsquare(
-            a,
-            Q::new(self.v.clone(), self.den.clone()),
-            Q::from_integer(d.clone()),
-        )
+        QSqrt::from_parts_nonsquare(q(&self.u), q(&self.v), Q::from_integer(d.clone()))
     }
 }
 

@@ -201,6 +201,32 @@ pub fn dyadic_floor(n: &Z, d: &Z, k: usize) -> Q {
     dyadic((n << k).div_floor(d), k)
 }
 
+/// `n/d` in lowest terms (`d ≠ 0`): `Ratio::new` with [`gcd_z`] (Lehmer)
+/// instead of num-bigint's binary gcd, which dominates the reduction of
+/// the constructions' large integers.
+pub fn q_new(n: Z, d: Z) -> Q {
+    debug_assert!(!d.is_zero());
+    let g = gcd_z(&n, &d);
+    let (mut n, mut d) = if g.is_one() { (n, d) } else { (n / &g, d / &g) };
+    if d.is_negative() {
+        n = -n;
+        d = -d;
+    }
+    Q::new_raw(n, d)
+}
+
+/// `a·b` in lowest terms, cross-reducing with [`gcd_z`] (as `Ratio`'s
+/// product does with num-bigint's gcd).
+pub fn q_mul(a: &Q, b: &Q) -> Q {
+    let g1 = gcd_z(a.numer(), b.denom());
+    let g2 = gcd_z(b.numer(), a.denom());
+    let div = |x: &Z, g: &Z| if g.is_one() { x.clone() } else { x / g };
+    Q::new_raw(
+        div(a.numer(), &g1) * div(b.numer(), &g2),
+        div(a.denom(), &g2) * div(b.denom(), &g1),
+    )
+}
+
 /// `gcd(|a|, |b|)`, fast when the sizes differ or a value fits a word.
 ///
 /// num-bigint's gcd is binary (Stein): every step shifts the whole

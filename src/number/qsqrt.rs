@@ -398,12 +398,12 @@ impl QSqrt {
                 s
             }
         };
-        let coef = Q::new(split.out, self.d.denom().clone());
+        let coef = super::q_new(split.out, self.d.denom().clone());
         match split.root {
-            Some(r) => QSqrt::rational(&self.a + &self.b * coef * Q::from_integer(r)),
+            Some(r) => QSqrt::rational(&self.a + super::q_mul(&self.b, &(coef * Q::from_integer(r)))),
             None => QSqrt {
                 a: self.a.clone(),
-                b: &self.b * coef,
+                b: super::q_mul(&self.b, &coef),
                 d: Q::from_integer(split.rad),
             },
         }
