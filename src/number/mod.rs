@@ -218,6 +218,9 @@ pub fn q_new(n: Z, d: Z) -> Q {
 /// `a·b` in lowest terms, cross-reducing with [`gcd_z`] (as `Ratio`'s
 /// product does with num-bigint's gcd).
 pub fn q_mul(a: &Q, b: &Q) -> Q {
+    if a.is_zero() || b.is_zero() {
+        return Q::zero();
+    }
     let g1 = gcd_z(a.numer(), b.denom());
     let g2 = gcd_z(b.numer(), a.denom());
     let div = |x: &Z, g: &Z| if g.is_one() { x.clone() } else { x / g };

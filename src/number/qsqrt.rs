@@ -400,7 +400,9 @@ impl QSqrt {
         };
         let coef = super::q_new(split.out, self.d.denom().clone());
         match split.root {
-            Some(r) => QSqrt::rational(&self.a + super::q_mul(&self.b, &(coef * Q::from_integer(r)))),
+            Some(r) => {
+                QSqrt::rational(&self.a + super::q_mul(&self.b, &(coef * Q::from_integer(r))))
+            }
             None => QSqrt {
                 a: self.a.clone(),
                 b: super::q_mul(&self.b, &coef),
