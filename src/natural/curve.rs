@@ -124,8 +124,10 @@ impl Gamma {
 
     /// `(g0 − g1x²)/g2 = y²` at a rational `x`.
     fn y2(&self, x: &Q) -> Q {
-        (Q::from_integer(self.g0.clone()) - Q::from_integer(self.g1.clone()) * x * x)
-            / Q::from_integer(self.g2.clone())
+        // (g0·q² − g1·p²)/(g2·q²) for x = p/q, reduced once (Lehmer's gcd)
+        let (p, q) = (x.numer(), x.denom());
+        let q2 = q * q;
+        crate::number::q_new(&self.g0 * &q2 - &self.g1 * p * p, &self.g2 * q2)
     }
 
     /// `xm = √(g0/g1)` and `−xm` as real algebraic numbers.

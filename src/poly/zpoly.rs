@@ -26,12 +26,19 @@ pub type QPoly = UPoly<Q>;
 impl UPoly<BigInt> {
     /// The content: the non-negative gcd of the coefficients (0 for zero).
     pub fn content(&self) -> BigInt {
-        let mut g = BigInt::zero();
-        for c in self.coeffs().iter().rev() {
-            g = crate::number::gcd_z(&g, c);
+        // from the shortest non-zero coefficient: every later gcd is then
+        // unbalanced or small (one division, then word-size steps), where
+        // starting from the leading one pays a full gcd of two long ones
+        let cs = self.coeffs();
+        let Some(start) = cs.iter().filter(|c| !c.is_zero()).min_by_key(|c| c.bits()) else {
+            return BigInt::zero();
+        };
+        let mut g = num_traits::Signed::abs(start);
+        for c in cs.iter().rev() {
             if g.is_one() {
                 break;
             }
+            g = crate::number::gcd_z(&g, c);
         }
         g
     }
