@@ -106,7 +106,15 @@ pub fn answer_line_within(line: &str, budget: &Budget) -> Value {
         ),
     };
     match result {
-        Ok(v) => json!({"id": id, "ok": true, "result": v}),
+        Ok(v) => {
+            // built by hand: json! would serialize the result again (a
+            // deep copy of the whole answer)
+            let mut m = serde_json::Map::new();
+            m.insert("id".into(), id);
+            m.insert("ok".into(), Value::Bool(true));
+            m.insert("result".into(), v);
+            Value::Object(m)
+        }
         Err(e) => {
             json!({"id": id, "ok": false, "error": {"kind": e.kind().as_str(), "message": e.message()}})
         }

@@ -326,7 +326,12 @@ impl QSqrt {
         }
         // in integers: x = (N1 + N2·√R)/D with a = an/ad, b = bn/bd,
         // d = dn/dd: N1 = an·bd·dd, N2 = bn·ad, R = dn·dd, D = ad·bd·dd;
-        // m = N1·2^k + sgn(N2)·⌊√(N2²·R·4^k)⌋ is within 1 of x·D·2^k
+        // m = N1·2^k + sgn(N2)·r with r within e of √T, T = N2²·R·4^k, so
+        // that m is within e of x·D·2^k.  The square root of the leading
+        // bits only: M = ⌊N2²R/4^t⌋ with ≥ 2k + 16 bits, r = ⌊√M·2^k⌋·2^t;
+        // √T − r ∈ [0, 2^t·(2^k(√(M+1) − √M) + 1)) and
+        // 2^k(√(M+1) − √M) ≤ 2^k/(2√M) < 1, so e = 2^(t+1) + 1 (1 when
+        // t = 0: the whole root, as before)
         let (an, ad) = (self.a.numer(), self.a.denom());
         let (bn, bd) = (self.b.numer(), self.b.denom());
         let (dn, dd) = (self.d.numer(), self.d.denom());
@@ -336,14 +341,24 @@ impl QSqrt {
         let den = ad * bd * dd;
         let mut k = 4 * digits + 64;
         loop {
-            let root = (&n2sq_r << (2 * k)).sqrt();
+            let t = ((n2sq_r.bits() as i64 - 2 * k as i64 - 16) / 2).max(0) as usize;
+            let root = if t == 0 {
+                (&n2sq_r << (2 * k)).sqrt()
+            } else {
+                ((&n2sq_r >> (2 * t)) << (2 * k)).sqrt() << t
+            };
+            let e = if t == 0 {
+                BigInt::one()
+            } else {
+                (BigInt::one() << (t + 1)) + 1
+            };
             let m = if bn.is_negative() {
                 (&n1 << k) - root
             } else {
                 (&n1 << k) + root
             };
             let d2 = &den << k;
-            let (lo, hi): (BigInt, BigInt) = (&m - 1, &m + 1);
+            let (lo, hi): (BigInt, BigInt) = (&m - &e, &m + &e);
             if lo.is_positive() || hi.is_negative() {
                 let a = super::approx_decimal_ratio(&lo, &d2, digits);
                 if a == super::approx_decimal_ratio(&hi, &d2, digits) {

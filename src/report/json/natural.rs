@@ -7,13 +7,14 @@ use crate::natural::result::Plane;
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
+
 use serde_json::{Value, json};
 
 /// `[value, bound]`: the double nearest the exact value's enclosure and a
 /// proven bound on its error (`|x − value| ≤ bound`).
 fn f64_json(x: &Exact) -> Value {
     let (v, b) = x.to_f64_bounded();
-    json!([v, b])
+    Value::from(vec![v, b])
 }
 
 fn f64_point(p: &EPoint) -> Value {
@@ -34,22 +35,22 @@ fn component_f64_json(c: &Component) -> Value {
             ..
         } => {
             let (n, o) = normalize_plane(plane);
-            json!({
-                "plane": {"normal": f64_point(&n), "offset": f64_json(&o)},
-                "center": center.as_ref().map(f64_point),
-                "vertex": vertex.as_ref().map(f64_point),
-                "semi_axes2": axes2.iter().map(f64_json).collect::<Vec<_>>(),
-                "axis_directions": axis_dirs.iter().map(|d| f64_point(&normalize_direction(d))).collect::<Vec<_>>(),
-                "focal_length2": focal2.as_ref().map(f64_json),
-            })
+            obj! {
+                "plane" => obj! {"normal" => f64_point(&n), "offset" => f64_json(&o)},
+                "center" => center.as_ref().map(f64_point),
+                "vertex" => vertex.as_ref().map(f64_point),
+                "semi_axes2" => axes2.iter().map(f64_json).collect::<Vec<_>>(),
+                "axis_directions" => axis_dirs.iter().map(|d| f64_point(&normalize_direction(d))).collect::<Vec<_>>(),
+                "focal_length2" => focal2.as_ref().map(f64_json),
+            }
         }
         Component::Line {
             point, direction, ..
-        } => json!({"point": f64_point(point), "direction": f64_point(direction)}),
-        Component::Point { point, .. } => json!({"point": f64_point(point)}),
-        Component::Curve { singular, .. } => json!({
-            "singular_points": singular.iter().map(|p| f64_point(&p.point)).collect::<Vec<_>>(),
-        }),
+        } => obj! {"point" => f64_point(point), "direction" => f64_point(direction)},
+        Component::Point { point, .. } => obj! {"point" => f64_point(point)},
+        Component::Curve { singular, .. } => obj! {
+            "singular_points" => singular.iter().map(|p| f64_point(&p.point)).collect::<Vec<_>>(),
+        },
     }
 }
 
@@ -72,38 +73,38 @@ fn component_exact_json(c: &Component) -> Value {
             axis_dirs,
             focal2,
             double,
-        } => json!({
-            "type": "conic",
-            "conic": kind.as_str(),
-            "plane": plane_json(plane),
-            "center": center.as_ref().map(epoint_json),
-            "vertex": vertex.as_ref().map(epoint_json),
-            "semi_axes2": axes2.iter().map(exact_json).collect::<Vec<_>>(),
-            "axis_directions": axis_dirs.iter().map(|d| epoint_json(&normalize_direction(d))).collect::<Vec<_>>(),
-            "focal_length2": focal2.as_ref().map(exact_json),
-            "double": double,
-        }),
+        } => obj! {
+            "type" => "conic",
+            "conic" => kind.as_str(),
+            "plane" => plane_json(plane),
+            "center" => center.as_ref().map(epoint_json),
+            "vertex" => vertex.as_ref().map(epoint_json),
+            "semi_axes2" => axes2.iter().map(exact_json).collect::<Vec<_>>(),
+            "axis_directions" => axis_dirs.iter().map(|d| epoint_json(&normalize_direction(d))).collect::<Vec<_>>(),
+            "focal_length2" => focal2.as_ref().map(exact_json),
+            "double" => *double,
+        },
         Component::Line {
             point,
             direction,
             double,
-        } => json!({
-            "type": "line", "point": epoint_json(point), "direction": epoint_json(direction), "double": double,
-        }),
-        Component::Point { point, kind } => json!({
-            "type": "point", "point": epoint_json(point), "kind": kind.as_str(),
-        }),
+        } => obj! {
+            "type" => "line", "point" => epoint_json(point), "direction" => epoint_json(direction), "double" => *double,
+        },
+        Component::Point { point, kind } => obj! {
+            "type" => "point", "point" => epoint_json(point), "kind" => kind.as_str(),
+        },
         Component::Curve {
             degree,
             singular,
             branches,
-        } => json!({
-            "type": "curve",
-            "degree": degree,
-            "singular_points": singular.iter().map(|p| json!({"point": epoint_json(&p.point), "kind": p.kind.as_str(), "isolated": p.is_isolated()})).collect::<Vec<_>>(),
-            "real_components": branches.len(),
-            "branches": branches.iter().map(branch_json).collect::<Vec<_>>(),
-        }),
+        } => obj! {
+            "type" => "curve",
+            "degree" => *degree,
+            "singular_points" => singular.iter().map(|p| obj! {"point" => epoint_json(&p.point), "kind" => p.kind.as_str(), "isolated" => p.is_isolated()}).collect::<Vec<_>>(),
+            "real_components" => branches.len(),
+            "branches" => branches.iter().map(branch_json).collect::<Vec<_>>(),
+        },
     }
 }
 
@@ -117,18 +118,18 @@ fn branch_json(b: &crate::natural::CurveBranch) -> Value {
     let (rp, rd) = p.ruling();
     let q = p.quadratic();
     let e = |x: &crate::number::QSqrt| exact_json(&Exact::Quad(x.clone()));
-    json!({
-        "bounded": b.bounded,
-        "point": p.approx().iter().map(|(v, err)| json!([v, err])).collect::<Vec<_>>(),
-        "ruling": {"point": rp.iter().map(e).collect::<Vec<_>>(), "direction": rd.iter().map(e).collect::<Vec<_>>()},
-        "along_ruling": {"a": e(&q[0]), "b": e(&q[1]), "c": e(&q[2]), "root": p.root(), "t": p.parameter().map(e)},
-    })
+    obj! {
+        "bounded" => b.bounded,
+        "point" => p.approx().iter().map(|&(v, err)| Value::from(vec![v, err])).collect::<Vec<_>>(),
+        "ruling" => obj! {"point" => rp.iter().map(e).collect::<Vec<_>>(), "direction" => rd.iter().map(e).collect::<Vec<_>>()},
+        "along_ruling" => obj! {"a" => e(&q[0]), "b" => e(&q[1]), "c" => e(&q[2]), "root" => p.root(), "t" => p.parameter().map(e)},
+    }
 }
 
 /// A plane with rational coefficients is scaled to primitive integers.
 fn plane_json(p: &Plane) -> Value {
     let (n, o) = normalize_plane(p);
-    json!({"normal": epoint_json(&n), "offset": exact_json(&o)})
+    obj! {"normal" => epoint_json(&n), "offset" => exact_json(&o)}
 }
 
 fn q3(v: &[crate::number::Q; 3]) -> Value {
@@ -223,15 +224,15 @@ fn class_and_counts(r: &NaturalReport) -> serde_json::Map<String, Value> {
 
 fn complete_json(r: &NaturalReport) -> Value {
     let mut m = class_and_counts(r);
-    let rest = json!({
-        "components": r.components.iter().map(component_json).collect::<Vec<_>>(),
-        "method": r.method,
-        "deciders": r.deciders.as_ref().map(deciders_json),
-        "section7": r.section7.as_ref().map(section7_json),
-        "a": natural_input_json(&r.a),
-        "b": natural_input_json(&r.b),
-        "notes": r.notes,
-    });
+    let rest = obj! {
+        "components" => r.components.iter().map(component_json).collect::<Vec<_>>(),
+        "method" => r.method,
+        "deciders" => r.deciders.as_ref().map(deciders_json),
+        "section7" => r.section7.as_ref().map(section7_json),
+        "a" => natural_input_json(&r.a),
+        "b" => natural_input_json(&r.b),
+        "notes" => r.notes.clone(),
+    };
     if let Value::Object(rest) = rest {
         m.extend(rest);
     }
@@ -242,10 +243,10 @@ fn complete_json(r: &NaturalReport) -> Value {
 /// quadratic irrational, `{"poly","interval","approx"}` otherwise.
 pub fn exact_json(x: &Exact) -> Value {
     match x {
-        Exact::Quad(x) if x.is_rational() => json!(fmt_q(&x.a)),
+        Exact::Quad(x) if x.is_rational() => Value::from(fmt_q(&x.a)),
         Exact::Quad(x) => {
             let x = x.normalized();
-            json!({"a": fmt_q(&x.a), "b": fmt_q(&x.b), "d": fmt_q(&x.d), "approx": x.approx(20)})
+            obj! {"a" => fmt_q(&x.a), "b" => fmt_q(&x.b), "d" => fmt_q(&x.d), "approx" => x.approx(20)}
         }
         Exact::Alg(a) => super::kernel::alg_json(a),
     }
