@@ -255,13 +255,18 @@ fn between(lo: &RealAlg, hi: &RealAlg) -> Q {
     if let Some(q) = gap(lo, hi) {
         return q;
     }
-    // narrowed by Newton steps first (the ends ±xm come wide), then bisected
+    // narrowed by Newton steps (the ends ±xm come wide; close values need
+    // many bits: doubled each round), then bisected
     let mut v = [lo.clone(), hi.clone()];
-    for x in v.iter_mut() {
-        x.refine_relative(40);
-    }
-    if let Some(q) = gap(&v[0], &v[1]) {
-        return q;
+    let mut bits = 40;
+    while bits <= 4096 {
+        for x in v.iter_mut() {
+            x.refine_relative(bits);
+        }
+        if let Some(q) = gap(&v[0], &v[1]) {
+            return q;
+        }
+        bits *= 2;
     }
     crate::roots::separate(&mut v);
     simplest_rational_in(&v[0].interval().1, &v[1].interval().0)

@@ -504,11 +504,22 @@ impl RealAlg {
                     lo: lo.clone(),
                     hi: hi.clone(),
                 };
+                // narrowed by 1, 2, 4, … 64 bits per round (the Newton
+                // steps of `refine` make the long rounds cheap): a root of q
+                // near this one is passed in O(log) Descartes tests, not one
+                // per bit
+                let mut step = 1usize;
                 loop {
                     if q.sign_at(&iv.lo) != 0 && !has_root_in_open(q, &iv.lo, &iv.hi) {
                         return q.sign_at(&iv.lo);
                     }
-                    bisect_once(poly, &mut iv);
+                    if step == 1 {
+                        bisect_once(poly, &mut iv);
+                    } else {
+                        let w = (&iv.hi - &iv.lo) / Q::from_integer(BigInt::one() << step);
+                        refine(poly, &mut iv, &w);
+                    }
+                    step = (step * 2).min(64);
                     if iv.is_exact() {
                         return q.sign_at(&iv.lo);
                     }
