@@ -11,6 +11,9 @@ use super::types::Natural;
 use crate::error::Error;
 use num_bigint::BigInt;
 
+/// The note of a line and a twisted cubic (the reference route's words).
+pub(crate) const TWISTED_CUBIC_NOTE: &str = "the surfaces share a ruling: the rest of the intersection is a twisted cubic (missing from the paper's Table 1)";
+
 /// The components of the intersection of `a` and `b` in the decided
 /// `case`, and remarks.
 pub(crate) fn components(
@@ -44,12 +47,40 @@ pub(crate) fn components(
             super::build_pencil::pencil_components(&x, &y, case)?
         }
         Case::Rulings => {
-            // the common lines and the crossing points from the exact
-            // algebra of the reference route; the branches of the rest of
-            // the curve by the rulings (σ = 0: both vertices lie on the line)
-            let (mut comps, mut notes) = super::topology::classify_nonplanar(na, nb)?;
+            // a common ruling: both vertices lie on it (σ = 0 for either
+            // quadric's rulings); the line and the points where the rest of
+            // the curve crosses it from the rulings of P, the branches of
+            // the rest by them too ([`super::curve::common_ruling`]); the
+            // rarer shapes (two common lines, β = 0 tangent to Γ, a line of
+            // singular points) from the exact algebra of the reference route
             let (x, y) = (a.prep.tier::<BigInt>(), b.prep.tier::<BigInt>());
             let (p, q) = super::build_pencil::ruling_choice(&x, &y);
+            let rulings = super::curve::Rulings::new(p, q);
+            let built = super::curve::common_ruling(p, q, &rulings);
+            let (mut comps, mut notes) = match built {
+                Some((point, direction, crossings)) => (
+                    vec![
+                        Component::Line {
+                            point,
+                            direction,
+                            double: false,
+                        },
+                        Component::Curve {
+                            degree: 3,
+                            singular: crossings
+                                .into_iter()
+                                .map(|point| super::result::SingularPoint {
+                                    point,
+                                    kind: super::result::SingularKind::Crossing,
+                                })
+                                .collect(),
+                            branches: vec![],
+                        },
+                    ],
+                    vec![TWISTED_CUBIC_NOTE.to_string()],
+                ),
+                None => super::topology::classify_nonplanar(na, nb)?,
+            };
             match super::build_pencil::branches_by(p, q) {
                 Ok((traced, _)) if !traced.is_empty() => {
                     for c in comps.iter_mut() {

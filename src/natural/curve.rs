@@ -968,3 +968,170 @@ impl Rulings {
         })
     }
 }
+
+// ------------------------------------------------- a common ruling (σ = 0)
+
+/// The lines of `X` that are rulings of `P` (the common rulings: `β` and
+/// `ρ` both zero over `z0`) and the points where the rest of the curve
+/// crosses them, exactly; `None` when this case is not the simple one (σ ≠
+/// 0, no or several common rulings, `β` constant, or `X` singular along a
+/// whole line), which the caller leaves to the reference route.
+///
+/// `z0` lies on the line `β = 0`, so it is one of the two points of that
+/// line on `Γ`, in one Q(√e); it is the one where `ρ` vanishes too.  A
+/// point of the line `L: X0 + λ·d` is singular on `P ∩ Q` iff the normals
+/// there are parallel; both are perpendicular to `d`, so iff
+/// `f(λ) = (∇P × ∇Q)·d = 0`, a quadratic in `λ` (the apex of a cone,
+/// where `∇P = 0`, among its roots).
+pub(crate) fn common_ruling(
+    p: &QIn<Z>,
+    q: &QIn<Z>,
+    r: &Rulings,
+) -> Option<(EPoint, EPoint, Vec<EPoint>)> {
+    if !r.sigma.is_zero() {
+        return None;
+    }
+    let g = &r.gamma;
+    let [b0, b1, b2] = [&r.beta.c[0], &r.beta.c[1], &r.beta.c[2]];
+    let qz = |z: &Z| Q::from_integer(z.clone());
+    let rat = |x: Q| QSqrt::rational(x);
+    // the points of β = 0 on Γ: (x, y) over Q(√e)
+    let cands: Vec<(QSqrt, QSqrt)> = if b2.is_zero() {
+        if b1.is_zero() {
+            return None;
+        }
+        let x = -qz(b0) / qz(b1);
+        let y2 = (qz(&g.g0) - qz(&g.g1) * &x * &x) / qz(&g.g2);
+        if y2 < Q::zero() {
+            return None;
+        }
+        [1, -1]
+            .iter()
+            .map(|&s| {
+                (
+                    rat(x.clone()),
+                    QSqrt::new(Q::zero(), Q::from_integer(s.into()), y2.clone()),
+                )
+            })
+            .collect()
+    } else {
+        // (g1·b2² + g2·b1²)x² + 2·g2·b0·b1·x + g2·b0² − g0·b2² = 0
+        let a = qz(&(&g.g1 * b2 * b2 + &g.g2 * b1 * b1));
+        let b = qz(&(&g.g2 * b0 * b1 * 2));
+        let c = qz(&(&g.g2 * b0 * b0 - &g.g0 * b2 * b2));
+        let disc = &b * &b - Q::from_integer(4.into()) * &a * &c;
+        if disc < Q::zero() {
+            return None;
+        }
+        let two_a = Q::from_integer(2.into()) * &a;
+        [1, -1]
+            .iter()
+            .map(|&s| {
+                let x = QSqrt::new(
+                    -&b / &two_a,
+                    Q::from_integer(s.into()) / &two_a,
+                    disc.clone(),
+                );
+                // y = −(b0 + b1·x)/b2
+                let y = x
+                    .scale(&qz(b1))
+                    .add(&rat(qz(b0)))
+                    .scale(&(-Q::one() / qz(b2)));
+                (x, y)
+            })
+            .collect()
+    };
+    let quad_at = |f: &Quad2, x: &QSqrt, y: &QSqrt| -> QSqrt {
+        let c = |i: usize| rat(qz(&f.c[i]));
+        c(0).add(&x.mul(&c(1).add(&x.mul(&c(3))).add(&y.mul(&c(4)))))
+            .add(&y.mul(&c(2).add(&y.mul(&c(5)))))
+    };
+    let common: Vec<&(QSqrt, QSqrt)> = cands
+        .iter()
+        .filter(|(x, y)| quad_at(&r.rho, x, y).is_zero())
+        .collect();
+    let [(x0, y0)] = common[..] else {
+        return None;
+    };
+    if cands.len() == 2 && cands[0].0 == cands[1].0 && cands[0].1 == cands[1].1 {
+        return None; // β = 0 tangent to Γ: both candidates one point
+    }
+    // the line: the ruling of P over z0 (as in `realize`)
+    let u = cross(
+        &p.a,
+        &if p.a[0].is_zero() && p.a[1].is_zero() {
+            [Z::one(), Z::zero(), Z::zero()]
+        } else {
+            [Z::zero(), Z::zero(), Z::one()]
+        },
+    );
+    let v = cross(&p.a, &u);
+    let c3: [QSqrt; 3] = std::array::from_fn(|i| rat(Q::new(p.c[i].clone(), p.q.clone())));
+    let xy: [QSqrt; 3] = std::array::from_fn(|i| x0.scale(&qz(&u[i])).add(&y0.scale(&qz(&v[i]))));
+    let a3: [QSqrt; 3] = std::array::from_fn(|i| rat(qz(&p.a[i])));
+    let (x_0, d): ([QSqrt; 3], [QSqrt; 3]) = if r.cone {
+        (c3, std::array::from_fn(|i| a3[i].add(&xy[i])))
+    } else {
+        (std::array::from_fn(|i| c3[i].add(&xy[i])), a3)
+    };
+    // f(λ) = ((nP0 + λ nP1) × (nQ0 + λ nQ1))·d, with nF = M_F·(X, 1)
+    let grad = |f: &QIn<Z>, h: &[QSqrt; 3], w: i64| -> [QSqrt; 3] {
+        let m: M4<Z> = matrix(f);
+        std::array::from_fn(|i| {
+            (0..3).fold(rat(Q::from_integer(&m[i][3] * w)), |acc, j| {
+                acc.add(&h[j].scale(&qz(&m[i][j])))
+            })
+        })
+    };
+    let (np0, np1) = (grad(p, &x_0, 1), grad(p, &d, 0));
+    let (nq0, nq1) = (grad(q, &x_0, 1), grad(q, &d, 0));
+    let cr = |a: &[QSqrt; 3], b: &[QSqrt; 3]| -> [QSqrt; 3] {
+        std::array::from_fn(|i| {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            a[j].mul(&b[k]).sub(&a[k].mul(&b[j]))
+        })
+    };
+    let dotq = |a: &[QSqrt; 3]| a[0].mul(&d[0]).add(&a[1].mul(&d[1])).add(&a[2].mul(&d[2]));
+    let f0 = dotq(&cr(&np0, &nq0));
+    let f1 = dotq(&cr(&np0, &nq1)).add(&dotq(&cr(&np1, &nq0)));
+    let f2 = dotq(&cr(&np1, &nq1));
+    let e = [x0, y0]
+        .iter()
+        .find(|t| !t.is_rational())
+        .map(|t| t.d.clone())
+        .unwrap_or_else(Q::one);
+    let at = |lam: &QSqrt| -> EPoint {
+        std::array::from_fn(|i| Exact::Quad(x_0[i].add(&lam.mul(&d[i]))))
+    };
+    let mut points = Vec::new();
+    if f2.is_zero() {
+        if f1.is_zero() {
+            return None; // singular along the whole line
+        }
+        points.push(at(&f0.neg().div(&f1)?));
+    } else {
+        // λ = (−f1 ± √Δ)/(2 f2), Δ = f1² − 4 f0 f2 in Q(√e)
+        let delta = f1
+            .mul(&f1)
+            .sub(&f0.mul(&f2).scale(&Q::from_integer(4.into())));
+        match delta.signum() {
+            -1 => {}
+            0 => points.push(at(&f1.neg().div(&f2.scale(&Q::from_integer(2.into())))?)),
+            _ => {
+                let inv = f2.scale(&Q::from_integer(2.into())).inv()?;
+                let mid = f1.neg().mul(&inv);
+                for sign in [1, -1] {
+                    // Xᵢ = (X0ᵢ + mid·dᵢ) + sign·kᵢ·√Δ with kᵢ = dᵢ/(2 f2)
+                    points.push(std::array::from_fn(|i| {
+                        let base = x_0[i].add(&mid.mul(&d[i]));
+                        let k = d[i].mul(&inv);
+                        let inner = delta.mul(&k).mul(&k);
+                        let s = sign * k.signum();
+                        super::exact::nested(&base.a, &base.b, &e, &Q::one(), &inner.a, &inner.b, s)
+                    }));
+                }
+            }
+        }
+    }
+    Some((super::exact::epoint(&x_0), super::exact::epoint(&d), points))
+}

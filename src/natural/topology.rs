@@ -443,7 +443,7 @@ pub fn classify_nonplanar(
             singular,
             branches: vec![],
         });
-        notes.push("the surfaces share a ruling: the rest of the intersection is a twisted cubic (missing from the paper's Table 1)".into());
+        notes.push(super::construct::TWISTED_CUBIC_NOTE.into());
         return Ok((comps, notes));
     }
     if has_real_curve(&f1, &f2)? {

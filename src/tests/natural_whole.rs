@@ -346,5 +346,13 @@ proptest! {
         prop_assert!(traced > 0);
         bounds_hold(rep.components()).map_err(fail)?;
         rulings_agree(&a, &b).map_err(fail)?;
+        // the line and its crossing points built by the rulings (not the
+        // reference route), equal to the reference route's
+        let (pa, pb) = (crate::natural::Prepared::new(&a), crate::natural::Prepared::new(&b));
+        let (x, y) = (pa.prep.tier::<num_bigint::BigInt>(), pb.prep.tier::<num_bigint::BigInt>());
+        let (p, qq) = crate::natural::build_pencil::ruling_choice(&x, &y);
+        let r = crate::natural::curve::Rulings::new(p, qq);
+        prop_assert!(crate::natural::curve::common_ruling(p, qq, &r).is_some(), "{} | {}: not built by the rulings", sa, sb);
+        compare(&a, &b).map_err(fail)?;
     }
 }
