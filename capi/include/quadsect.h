@@ -452,8 +452,8 @@ typedef struct qs_curve {
     const struct qs_singular_point *singular;
     /**
      * The number of its real affine connected components (at least 1
-     * for a real curve); 0 when they were not traced (so far: the twisted
-     * cubic beside a common line; the JSON has no more then).
+     * for a real curve); 0 only when they were not traced (a rare shape of
+     * the twisted cubic beside a common line, with a note in the JSON).
      */
     size_t n_branches;
     /**

@@ -301,8 +301,8 @@ pub struct qs_curve {
     /// Its singular points (NULL when `n_singular` is 0).
     pub singular: *const qs_singular_point,
     /// The number of its real affine connected components (at least 1
-    /// for a real curve); 0 when they were not traced (so far: the twisted
-    /// cubic beside a common line; the JSON has no more then).
+    /// for a real curve); 0 only when they were not traced (a rare shape of
+    /// the twisted cubic beside a common line, with a note in the JSON).
     pub n_branches: usize,
     /// Its connected components (NULL when `n_branches` is 0).
     pub branches: *const qs_curve_branch,
@@ -1078,8 +1078,10 @@ mod tests {
         let l = o.list();
         let curve = l.iter().find(|c| c.tag == QS_COMPONENT_CURVE).unwrap();
         let k = unsafe { curve.data.curve };
-        // not traced: no branches, a NULL array
-        assert_eq!((k.degree, k.n_branches, k.branches), (3, 0, ptr::null()));
+        // traced by the rulings: one unbounded branch
+        assert_eq!((k.degree, k.n_branches), (3, 1));
+        let b = unsafe { std::slice::from_raw_parts(k.branches, k.n_branches) };
+        assert_eq!(b[0].bounded, 0);
     }
 
     #[test]
