@@ -204,16 +204,27 @@ pub(crate) fn primitive_direction(v: &EPoint) -> EPoint {
         parts.push(&x.b);
     }
     let l = crate::number::denom_lcm(parts.iter().copied());
+    // (Lehmer's gcd and cross-reduced products: num-bigint's binary gcd
+    // was most of this on long decimals)
     let mut g = BigInt::zero();
     for q in &parts {
-        g = num_integer::Integer::gcd(&g, &(q.numer() * (&l / q.denom())));
+        if g.is_one() {
+            break;
+        }
+        g = crate::number::gcd_z(&g, &(q.numer() * (&l / q.denom())));
     }
     if g.is_zero() {
         return v.clone();
     }
-    let k = Q::new(l, g);
+    let k = crate::number::q_new(l, g);
+    let mul = crate::number::q_mul;
     std::array::from_fn(|i| match &v[i] {
-        Exact::Quad(x) => Exact::Quad(QSqrt::new(&x.a * &k, &x.b * &k, x.d.clone())),
+        Exact::Quad(x) if x.is_rational() => Exact::Quad(QSqrt::rational(mul(&x.a, &k))),
+        Exact::Quad(x) => Exact::Quad(QSqrt::from_parts_nonsquare(
+            mul(&x.a, &k),
+            mul(&x.b, &k),
+            x.d.clone(),
+        )),
         other => other.clone(),
     })
 }

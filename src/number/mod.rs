@@ -230,6 +230,42 @@ pub fn q_mul(a: &Q, b: &Q) -> Q {
     )
 }
 
+/// `a + b` in lowest terms (Henrici: with `g = gcd(da, db)` the sum is
+/// `(na·(db/g) + nb·(da/g)) / (da·(db/g))`, and only `gcd(numerator, g)`
+/// can remain), with [`gcd_z`].
+pub fn q_add(a: &Q, b: &Q) -> Q {
+    if a.is_zero() {
+        return b.clone();
+    }
+    if b.is_zero() {
+        return a.clone();
+    }
+    let (da, db) = (a.denom(), b.denom());
+    if da.is_one() && db.is_one() {
+        return Q::from_integer(a.numer() + b.numer());
+    }
+    let g = gcd_z(da, db);
+    let (da_g, db_g) = if g.is_one() {
+        (da.clone(), db.clone())
+    } else {
+        (da / &g, db / &g)
+    };
+    let n = a.numer() * &db_g + b.numer() * &da_g;
+    if n.is_zero() {
+        return Q::zero();
+    }
+    let den = da * &db_g;
+    if g.is_one() {
+        return Q::new_raw(n, den);
+    }
+    let g2 = gcd_z(&n, &g);
+    if g2.is_one() {
+        Q::new_raw(n, den)
+    } else {
+        Q::new_raw(n / &g2, den / &g2)
+    }
+}
+
 /// `gcd(|a|, |b|)`, fast when the sizes differ or a value fits a word.
 ///
 /// num-bigint's gcd is binary (Stein): every step shifts the whole
@@ -459,6 +495,35 @@ mod tests {
             // near-equal operands: long runs of quotient 1
             let z = &x + &g;
             proptest::prop_assert_eq!(gcd_z(&x, &z), x.gcd(&z));
+        }
+
+        /// `q_new`, `q_mul`, `q_add` give num-rational's canonical values
+        /// (lowest terms, positive denominator, 0 as 0/1) on multi-word
+        /// operands with common factors, zeros and signs.
+        #[test]
+        fn lehmer_rationals_agree(
+            a in proptest::collection::vec(proptest::num::u64::ANY, 0..4),
+            b in proptest::collection::vec(proptest::num::u64::ANY, 1..4),
+            c in proptest::collection::vec(proptest::num::u64::ANY, 0..4),
+            d in proptest::collection::vec(proptest::num::u64::ANY, 1..4),
+            g in proptest::collection::vec(proptest::num::u64::ANY, 0..2),
+            signs in (proptest::bool::ANY, proptest::bool::ANY, proptest::bool::ANY),
+        ) {
+            let make = |v: &[u64]| -> BigInt {
+                v.iter().fold(BigInt::zero(), |acc, &w| (acc << 64usize) + w)
+            };
+            let g = make(&g) + 1;
+            let sg = |s: bool, x: BigInt| if s { -x } else { x };
+            let (an, ad): (BigInt, BigInt) = (sg(signs.0, make(&a) * &g), sg(signs.1, (make(&b) + 1u32) * &g));
+            let (cn, cd): (BigInt, BigInt) = (sg(signs.2, make(&c) * &g), (make(&d) + 1u32) * &g);
+            let x = q_new(an.clone(), ad.clone());
+            let y = q_new(cn.clone(), cd.clone());
+            let (rx, ry) = (Q::new(an, ad), Q::new(cn, cd));
+            let canon = |v: &Q, r: &Q| v.numer() == r.numer() && v.denom() == r.denom();
+            proptest::prop_assert!(canon(&x, &rx) && canon(&y, &ry));
+            proptest::prop_assert!(canon(&q_mul(&x, &y), &(&rx * &ry)));
+            proptest::prop_assert!(canon(&q_add(&x, &y), &(&rx + &ry)));
+            proptest::prop_assert!(canon(&q_add(&x, &-&x), &Q::zero()));
         }
     }
 

@@ -8,7 +8,7 @@
 //! `sign(a + b√d)` is the sign of `a` and `b` when they agree, otherwise the
 //! sign of whichever of `a²` and `b²d` is larger.
 
-use super::{Q, approx_decimal, exact_sqrt_q, fmt_q, sign_q};
+use super::{Q, approx_decimal, exact_sqrt_q, fmt_q, q_add, q_mul, sign_q};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
@@ -193,28 +193,30 @@ impl QSqrt {
     }
 
     /// Sum (both operands must live in the same field Q(√d)).
+    // (the field operations reduce with Lehmer's gcd — `super::q_add`,
+    // `super::q_mul` — not num-rational's binary one: the same values)
     pub(crate) fn add(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
-        QSqrt::from_parts(&self.a + &o.a, &self.b + &o.b, d)
+        QSqrt::from_parts(q_add(&self.a, &o.a), q_add(&self.b, &o.b), d)
     }
 
     /// Difference.
     pub(crate) fn sub(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
-        QSqrt::from_parts(&self.a - &o.a, &self.b - &o.b, d)
+        QSqrt::from_parts(q_add(&self.a, &-&o.a), q_add(&self.b, &-&o.b), d)
     }
 
     /// Product.
     pub(crate) fn mul(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
-        let a = &self.a * &o.a + &self.b * &o.b * &d;
-        let b = &self.a * &o.b + &self.b * &o.a;
+        let a = q_add(&q_mul(&self.a, &o.a), &q_mul(&q_mul(&self.b, &o.b), &d));
+        let b = q_add(&q_mul(&self.a, &o.b), &q_mul(&self.b, &o.a));
         QSqrt::from_parts(a, b, d)
     }
 
     /// Product with a rational.
     pub(crate) fn scale(&self, k: &Q) -> QSqrt {
-        QSqrt::from_parts(&self.a * k, &self.b * k, self.d.clone())
+        QSqrt::from_parts(q_mul(&self.a, k), q_mul(&self.b, k), self.d.clone())
     }
 
     /// Negation.
