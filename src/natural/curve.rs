@@ -383,14 +383,7 @@ impl Rulings {
     /// The rulings of `p` (a cylinder or a cone) and `q`'s restriction.
     pub fn new(p: &QIn<Z>, q: &QIn<Z>) -> Rulings {
         let a = &p.a;
-        // u ⊥ a (integer), v = a × u
-        let e: [Z; 3] = if a[0].is_zero() && a[1].is_zero() {
-            [Z::one(), Z::zero(), Z::zero()]
-        } else {
-            [Z::zero(), Z::zero(), Z::one()]
-        };
-        let u = cross(a, &e);
-        let v = cross(a, &u);
+        let (u, v) = frame(a);
         let nu: Z = dot(&u, &u);
         let na: Z = dot(a, a);
         let cone = p.kind == Kind::Cone;
@@ -678,6 +671,18 @@ impl Rulings {
     }
 }
 
+/// The integer frame of the rulings' cross-section: `u ⊥ a`, `v = a × u`.
+fn frame(a: &[Z; 3]) -> ([Z; 3], [Z; 3]) {
+    let e: [Z; 3] = if a[0].is_zero() && a[1].is_zero() {
+        [Z::one(), Z::zero(), Z::zero()]
+    } else {
+        [Z::zero(), Z::zero(), Z::one()]
+    };
+    let u = cross(a, &e);
+    let v = cross(a, &u);
+    (u, v)
+}
+
 fn cross(a: &[Z; 3], b: &[Z; 3]) -> [Z; 3] {
     [
         &a[1] * &b[2] - &a[2] * &b[1],
@@ -827,15 +832,7 @@ impl Rulings {
         };
         let xq = Zf::int(xn).div_z(&xd);
         let a3 = |w: &[Z; 3]| -> [Zf; 3] { std::array::from_fn(|i| Zf::int(w[i].clone())) };
-        let u = cross(
-            &p.a,
-            &if p.a[0].is_zero() && p.a[1].is_zero() {
-                [Z::one(), Z::zero(), Z::zero()]
-            } else {
-                [Z::zero(), Z::zero(), Z::one()]
-            },
-        );
-        let v = cross(&p.a, &u);
+        let (u, v) = frame(&p.a);
         let (uz, vz, az) = (a3(&u), a3(&v), a3(&p.a));
         let c3: [Zf; 3] = std::array::from_fn(|i| Zf::int(p.c[i].clone()).div_z(&p.q));
         // x·u + y·v
@@ -1057,15 +1054,7 @@ pub(crate) fn common_ruling(
         return None; // β = 0 tangent to Γ: both candidates one point
     }
     // the line: the ruling of P over z0 (as in `realize`)
-    let u = cross(
-        &p.a,
-        &if p.a[0].is_zero() && p.a[1].is_zero() {
-            [Z::one(), Z::zero(), Z::zero()]
-        } else {
-            [Z::zero(), Z::zero(), Z::one()]
-        },
-    );
-    let v = cross(&p.a, &u);
+    let (u, v) = frame(&p.a);
     let c3: [QSqrt; 3] = std::array::from_fn(|i| rat(Q::new(p.c[i].clone(), p.q.clone())));
     let xy: [QSqrt; 3] = std::array::from_fn(|i| x0.scale(&qz(&u[i])).add(&y0.scale(&qz(&v[i]))));
     let a3: [QSqrt; 3] = std::array::from_fn(|i| rat(qz(&p.a[i])));
