@@ -17,15 +17,17 @@ pub trait Scalar<R = Self>: Sized {
     fn minus(&self, o: &Self) -> Self;
 }
 
+// (rationals reduced with Lehmer's gcd: `number::q_mul`, `q_add` give
+// num-rational's canonical values, without its binary gcd)
 impl Scalar for Q {
     fn times(&self, r: &Q) -> Q {
-        self * r
+        crate::number::q_mul(self, r)
     }
     fn plus(&self, o: &Q) -> Q {
-        self + o
+        crate::number::q_add(self, o)
     }
     fn minus(&self, o: &Q) -> Q {
-        self - o
+        crate::number::q_add(self, &-o)
     }
 }
 
@@ -72,17 +74,17 @@ pub type SV3 = [QSqrt; 3];
 
 /// `u + v`.
 pub fn add(u: &V3, v: &V3) -> V3 {
-    std::array::from_fn(|i| &u[i] + &v[i])
+    std::array::from_fn(|i| u[i].plus(&v[i]))
 }
 
 /// `u − v`.
 pub fn sub(u: &V3, v: &V3) -> V3 {
-    std::array::from_fn(|i| &u[i] - &v[i])
+    std::array::from_fn(|i| u[i].minus(&v[i]))
 }
 
 /// `k u`.
 pub fn scale(u: &V3, k: &Q) -> V3 {
-    std::array::from_fn(|i| &u[i] * k)
+    std::array::from_fn(|i| u[i].times(k))
 }
 
 /// `u · v` over any ring (the second factor may be of a subring, e.g. a
