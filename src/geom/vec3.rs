@@ -27,7 +27,7 @@ impl Scalar for Q {
         crate::number::q_add(self, o)
     }
     fn minus(&self, o: &Q) -> Q {
-        crate::number::q_add(self, &-o)
+        crate::number::q_sub(self, o)
     }
 }
 

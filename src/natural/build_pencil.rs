@@ -198,7 +198,11 @@ pub(crate) fn ruling_choice<'a>(x: &'a QIn<Z>, y: &'a QIn<Z>) -> (&'a QIn<Z>, &'
 /// The real components of a curve by the rulings of `p`, with their
 /// points, and the number of isolated points found.
 pub(crate) fn branches_by(p: &QIn<Z>, q: &QIn<Z>) -> Result<(Vec<CurveBranch>, usize), Error> {
-    let r = Rulings::new(p, q);
+    branches_on(&Rulings::new(p, q), p)
+}
+
+/// [`branches_by`] on rulings already built (`r` of `p`).
+pub(crate) fn branches_on(r: &Rulings, p: &QIn<Z>) -> Result<(Vec<CurveBranch>, usize), Error> {
     let t = r.topology()?;
     let branches = t
         .branches

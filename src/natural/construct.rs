@@ -81,7 +81,7 @@ pub(crate) fn components(
                 ),
                 None => super::topology::classify_nonplanar(na, nb)?,
             };
-            match super::build_pencil::branches_by(p, q) {
+            match super::build_pencil::branches_on(&rulings, p) {
                 Ok((traced, _)) if !traced.is_empty() => {
                     for c in comps.iter_mut() {
                         if let Component::Curve { branches, .. } = c {

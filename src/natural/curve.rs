@@ -1047,12 +1047,11 @@ pub(crate) fn common_ruling(
         .iter()
         .filter(|(x, y)| quad_at(&r.rho, x, y).is_zero())
         .collect();
+    // (β = 0 tangent to Γ gives two equal candidates: both or neither
+    // pass, and the case is left to the caller)
     let [(x0, y0)] = common[..] else {
         return None;
     };
-    if cands.len() == 2 && cands[0].0 == cands[1].0 && cands[0].1 == cands[1].1 {
-        return None; // β = 0 tangent to Γ: both candidates one point
-    }
     // the line: the ruling of P over z0 (as in `realize`)
     let (u, v) = frame(&p.a);
     let c3: [QSqrt; 3] = std::array::from_fn(|i| rat(Q::new(p.c[i].clone(), p.q.clone())));

@@ -221,6 +221,9 @@ pub fn q_mul(a: &Q, b: &Q) -> Q {
     if a.is_zero() || b.is_zero() {
         return Q::zero();
     }
+    if a.denom().is_one() && b.denom().is_one() {
+        return Q::from_integer(a.numer() * b.numer());
+    }
     let g1 = gcd_z(a.numer(), b.denom());
     let g2 = gcd_z(b.numer(), a.denom());
     let div = |x: &Z, g: &Z| if g.is_one() { x.clone() } else { x / g };
@@ -230,40 +233,42 @@ pub fn q_mul(a: &Q, b: &Q) -> Q {
     )
 }
 
-/// `a + b` in lowest terms (Henrici: with `g = gcd(da, db)` the sum is
-/// `(na·(db/g) + nb·(da/g)) / (da·(db/g))`, and only `gcd(numerator, g)`
-/// can remain), with [`gcd_z`].
+/// `a + b` in lowest terms (Knuth, TAOCP vol. 2, §4.5.1 — Henrici's sum:
+/// with `g = gcd(da, db)` the sum is `(na·(db/g) + nb·(da/g)) / (da·(db/g))`
+/// and only `gcd(numerator, g)` can remain), with [`gcd_z`]; integers add
+/// without any gcd.  num-rational reduces every result with num-bigint's
+/// binary gcd, quadratic in the bits even against 1.
 pub fn q_add(a: &Q, b: &Q) -> Q {
-    if a.is_zero() {
-        return b.clone();
-    }
-    if b.is_zero() {
-        return a.clone();
-    }
-    let (da, db) = (a.denom(), b.denom());
-    if da.is_one() && db.is_one() {
-        return Q::from_integer(a.numer() + b.numer());
-    }
-    let g = gcd_z(da, db);
-    let (da_g, db_g) = if g.is_one() {
-        (da.clone(), db.clone())
+    add_signed(a, b, false)
+}
+
+/// `a − b` in lowest terms (as [`q_add`]).
+pub fn q_sub(a: &Q, b: &Q) -> Q {
+    add_signed(a, b, true)
+}
+
+fn add_signed(a: &Q, b: &Q, negate: bool) -> Q {
+    let c = if negate {
+        -b.numer()
     } else {
-        (da / &g, db / &g)
+        b.numer().clone()
     };
-    let n = a.numer() * &db_g + b.numer() * &da_g;
-    if n.is_zero() {
+    let (an, ad, bd) = (a.numer(), a.denom(), b.denom());
+    if ad.is_one() && bd.is_one() {
+        return Q::from_integer(an + c);
+    }
+    let g = gcd_z(ad, bd);
+    let (ad_g, bd_g) = (ad / &g, bd / &g);
+    let t = an * &bd_g + c * &ad_g;
+    if t.is_zero() {
         return Q::zero();
     }
-    let den = da * &db_g;
     if g.is_one() {
-        return Q::new_raw(n, den);
+        // gcd(t, ad·bd) = 1 when gcd(ad, bd) = 1
+        return Q::new_raw(t, ad * bd);
     }
-    let g2 = gcd_z(&n, &g);
-    if g2.is_one() {
-        Q::new_raw(n, den)
-    } else {
-        Q::new_raw(n / &g2, den / &g2)
-    }
+    let g2 = gcd_z(&t, &g);
+    Q::new_raw(t / &g2, ad_g * (bd / g2))
 }
 
 /// `gcd(|a|, |b|)`, fast when the sizes differ or a value fits a word.
@@ -524,6 +529,7 @@ mod tests {
             proptest::prop_assert!(canon(&q_mul(&x, &y), &(&rx * &ry)));
             proptest::prop_assert!(canon(&q_add(&x, &y), &(&rx + &ry)));
             proptest::prop_assert!(canon(&q_add(&x, &-&x), &Q::zero()));
+            proptest::prop_assert!(canon(&q_sub(&x, &y), &(&rx - &ry)));
         }
     }
 

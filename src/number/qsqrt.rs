@@ -8,7 +8,7 @@
 //! `sign(a + b√d)` is the sign of `a` and `b` when they agree, otherwise the
 //! sign of whichever of `a²` and `b²d` is larger.
 
-use super::{Q, approx_decimal, exact_sqrt_q, fmt_q, q_add, q_mul, sign_q};
+use super::{Q, approx_decimal, exact_sqrt_q, fmt_q, q_add, q_mul, q_sub, sign_q};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
@@ -203,7 +203,7 @@ impl QSqrt {
     /// Difference.
     pub(crate) fn sub(&self, o: &QSqrt) -> QSqrt {
         let d = self.radicand_with(o);
-        QSqrt::from_parts(q_add(&self.a, &-&o.a), q_add(&self.b, &-&o.b), d)
+        QSqrt::from_parts(q_sub(&self.a, &o.a), q_sub(&self.b, &o.b), d)
     }
 
     /// Product.

@@ -118,7 +118,8 @@ impl Ring for BigInt {
 /// one computes a gcd, whose cost grows quadratically with their size);
 /// operations on small numbers leave the checks to the loops around them.
 /// `true` when the operands are large: the caller then reduces with
-/// [`gcd_z`](crate::number::gcd_z) instead of num-rational's operators.
+/// [`crate::number::q_add`] / [`crate::number::q_mul`] (Lehmer's gcd)
+/// instead of num-rational's operators.
 #[inline]
 fn check_pair(a: &BigRational, b: &BigRational) -> bool {
     let bits = a.numer().bits().max(a.denom().bits());
@@ -129,56 +130,6 @@ fn check_pair(a: &BigRational, b: &BigRational) -> bool {
     } else {
         false
     }
-}
-
-/// `a + b` (`a - b` when `negate`) in lowest terms, for large operands.
-///
-/// num-rational reduces every result with num-bigint's binary gcd, whose
-/// cost is quadratic in the bits even against 1 (a sum of two 300 000-bit
-/// integers spent a second in `gcd(sum, 1)` under the fuzzer's sanitizer).
-/// Here integers add without any gcd, and fractions follow Knuth (TAOCP
-/// vol. 2, §4.5.1) with [`gcd_z`](crate::number::gcd_z), which is fast
-/// on unbalanced operands.
-fn add_large(a: &BigRational, b: &BigRational, negate: bool) -> BigRational {
-    use crate::number::gcd_z;
-    let c = if negate {
-        -b.numer()
-    } else {
-        b.numer().clone()
-    };
-    let (an, ad, bd) = (a.numer(), a.denom(), b.denom());
-    if ad.is_one() && bd.is_one() {
-        return BigRational::from_integer(an + c);
-    }
-    let g = gcd_z(ad, bd);
-    let (ad_g, bd_g) = (ad / &g, bd / &g);
-    let t = an * &bd_g + c * &ad_g;
-    if t.is_zero() {
-        return BigRational::zero();
-    }
-    if g.is_one() {
-        // gcd(t, ad·bd) = 1 when gcd(ad, bd) = 1
-        return BigRational::new_raw(t, ad * bd);
-    }
-    let g2 = gcd_z(&t, &g);
-    BigRational::new_raw(t / &g2, ad_g * (bd / g2))
-}
-
-/// `a · b` in lowest terms, for large operands (see [`add_large`]): the
-/// cross gcds `gcd(a.numer, b.denom)` and `gcd(b.numer, a.denom)` with
-/// [`gcd_z`](crate::number::gcd_z), none for integers.
-fn mul_large(a: &BigRational, b: &BigRational) -> BigRational {
-    use crate::number::gcd_z;
-    let (an, ad, bn, bd) = (a.numer(), a.denom(), b.numer(), b.denom());
-    if an.is_zero() || bn.is_zero() {
-        return BigRational::zero();
-    }
-    if ad.is_one() && bd.is_one() {
-        return BigRational::from_integer(an * bn);
-    }
-    let g1 = gcd_z(an, bd);
-    let g2 = gcd_z(bn, ad);
-    BigRational::new_raw((an / &g1) * (bn / &g2), (ad / g2) * (bd / g1))
 }
 
 impl Ring for BigRational {
@@ -196,21 +147,21 @@ impl Ring for BigRational {
     }
     fn radd(&self, o: &Self) -> Self {
         if check_pair(self, o) {
-            add_large(self, o, false)
+            crate::number::q_add(self, o)
         } else {
             self + o
         }
     }
     fn rsub(&self, o: &Self) -> Self {
         if check_pair(self, o) {
-            add_large(self, o, true)
+            crate::number::q_sub(self, o)
         } else {
             self - o
         }
     }
     fn rmul(&self, o: &Self) -> Self {
         if check_pair(self, o) {
-            mul_large(self, o)
+            crate::number::q_mul(self, o)
         } else {
             self * o
         }
@@ -220,14 +171,14 @@ impl Ring for BigRational {
     }
     fn radd_assign(&mut self, o: &Self) {
         if check_pair(self, o) {
-            *self = add_large(self, o, false);
+            *self = crate::number::q_add(self, o);
         } else {
             *self += o;
         }
     }
     fn rsub_assign(&mut self, o: &Self) {
         if check_pair(self, o) {
-            *self = add_large(self, o, true);
+            *self = crate::number::q_sub(self, o);
         } else {
             *self -= o;
         }
