@@ -947,9 +947,17 @@ impl Rulings {
                     }
                 }
             };
-            approx[i] = b
-                .to_f64()
-                .ok_or_else(|| Error::internal("a curve point out of the range of doubles"))?;
+            // beyond the range of doubles: ±∞ with an infinite bound, the
+            // sign that of the ball (relative radius < 2^-40), as for every
+            // other certified double (contract §4)
+            approx[i] = b.to_f64().unwrap_or((
+                if b.m < 0.0 {
+                    f64::NEG_INFINITY
+                } else {
+                    f64::INFINITY
+                },
+                f64::INFINITY,
+            ));
         }
         Ok(CurvePoint {
             raw: std::sync::Arc::new(RawPoint {

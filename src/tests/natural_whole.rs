@@ -356,3 +356,43 @@ proptest! {
         compare(&a, &b).map_err(fail)?;
     }
 }
+
+/// Curve points beyond the range of doubles (a 1 500-digit radius, a
+/// 600-digit apex on a common ruling): the branches are traced and their
+/// certified doubles are ±∞ with an infinite bound, holding the exact
+/// values (contract §4), not an internal error.
+#[test]
+fn branch_points_beyond_the_range_of_doubles() {
+    let big = "7".repeat(1500);
+    let far = format!("1{}7", "0".repeat(599));
+    for (sa, sb) in [
+        (
+            format!("cylinder point=0,0,0 axis=0,0,1 radius2={big}"),
+            format!("cone vertex=0,0,0 axis=1,2,3 tan2=1/{big}"),
+        ),
+        (
+            "cylinder point=0,0,0 axis=0,0,1 radius2=1".to_string(),
+            format!("cone vertex=1,0,{far} axis=0,1,1 tan2=1"),
+        ),
+    ] {
+        let (a, b) = (parse_natural(&sa).unwrap(), parse_natural(&sb).unwrap());
+        let rep = crate::natural::classify(&a, &b).unwrap();
+        let branches: Vec<_> = rep
+            .components()
+            .iter()
+            .filter_map(|c| match c {
+                Component::Curve { branches, .. } => Some(branches),
+                _ => None,
+            })
+            .flatten()
+            .collect();
+        assert!(!branches.is_empty(), "{sa} | {sb}: {:?}", rep.notes());
+        assert!(
+            branches
+                .iter()
+                .any(|b| b.start.approx().iter().any(|v| v.0.is_infinite())),
+            "{sa} | {sb}: no coordinate beyond doubles"
+        );
+        bounds_hold(rep.components()).unwrap();
+    }
+}
