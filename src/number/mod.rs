@@ -26,7 +26,6 @@ pub use qsqrt::QSqrt;
 pub use sign::Sign;
 
 use num_bigint::{BigInt, Sign as BigSign};
-use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
@@ -118,45 +117,54 @@ pub(crate) fn approx_decimal_ratio(n: &BigInt, d: &BigInt, digits: usize) -> Str
     }
     crate::budget::check_for(n.bits() + d.bits());
     let neg = n.is_negative();
-    let an = n.abs();
-    // e10 = floor(log10 |x|): estimate from log2, then correct exactly
-    let l2 = an.bits() as i64 - d.bits() as i64;
-    let mut e10 = ((l2 as f64) * std::f64::consts::LOG10_2).floor() as i64;
-    let ten = BigInt::from(10);
-    let p10 = |e: usize| -> BigInt { num_traits::pow(ten.clone(), e) };
-    // 10^e ≤ |n|/d  ⇔  10^e·d ≤ |n| (e ≥ 0), d ≤ |n|·10^-e (e < 0)
-    let ge = |e: i64| -> bool {
-        if e >= 0 {
-            d * p10(e as usize) <= an
+    let an = n.magnitude();
+    let dm = d.magnitude();
+    // 2^(l2−1) < |x| < 2^(l2+1): with sh = digits − ⌊(l2−1)·log10 2⌋,
+    // q = ⌊|x|·10^sh⌋ has digits + 1 or digits + 2 decimal digits (one
+    // more step if the estimate was off); one product, one division and
+    // one conversion to decimal, then the rounding on the digits
+    let l2 = an.bits() as i64 - dm.bits() as i64;
+    let mut sh = digits as i64 - (((l2 - 1) as f64) * std::f64::consts::LOG10_2).floor() as i64;
+    let q = loop {
+        let p = num_traits::pow(num_bigint::BigUint::from(10u32), sh.unsigned_abs() as usize);
+        let q = if sh >= 0 {
+            (an * p) / dm
         } else {
-            *d <= &an * p10((-e) as usize)
+            an / (dm * p)
+        };
+        let q = q.to_str_radix(10);
+        if q.len() > digits {
+            break q;
         }
+        sh += 1;
     };
-    while !ge(e10) {
-        e10 -= 1;
+    // |x| = (q + f)·10^-sh with 0 ≤ f < 1; rounding half up to `digits`
+    // digits adds 5 at the first dropped digit: the fraction f cannot
+    // carry across (⌊(N + f)/M⌋ = ⌊N/M⌋ for integers N, M), so the first
+    // dropped digit decides
+    let mut e10 = q.len() as i64 - 1 - sh;
+    let mut s: Vec<u8> = q.as_bytes()[..digits].to_vec();
+    if q.as_bytes()[digits] >= b'5' {
+        let mut i = digits;
+        loop {
+            if i == 0 {
+                // 9.99… → 10.0…: one more digit, shifted out again
+                s.insert(0, b'1');
+                s.truncate(digits);
+                e10 += 1;
+                break;
+            }
+            i -= 1;
+            if s[i] == b'9' {
+                s[i] = b'0';
+            } else {
+                s[i] += 1;
+                break;
+            }
+        }
     }
-    while ge(e10 + 1) {
-        e10 += 1;
-    }
-    // |x|·10^(digits−1−e10), rounded to an integer with `digits` digits
-    let sh = digits as i64 - 1 - e10;
-    let (num, den) = if sh >= 0 {
-        (&an * p10(sh as usize), d.clone())
-    } else {
-        (an.clone(), d * p10((-sh) as usize))
-    };
-    let (qt, r) = num.div_rem(&den);
-    let mut m = qt;
-    if (&r << 1usize) >= den {
-        m += 1;
-    }
-    if m.to_string().len() > digits {
-        // rounding carried into a new digit (e.g. 9.99 -> 10.0)
-        m /= 10;
-        e10 += 1;
-    }
-    let s = m.to_string();
-    let s = format!("{:0<width$}", s, width = digits);
+    let s = String::from_utf8(s).expect("decimal digits");
+
     let sign = if neg { "-" } else { "" };
     if (-6..=20).contains(&e10) {
         if e10 >= 0 {
@@ -448,6 +456,7 @@ pub fn exact_sqrt_q(x: &Q) -> Option<Q> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_integer::Integer;
 
     #[test]
     fn approx_rounds_and_carries() {
@@ -530,6 +539,91 @@ mod tests {
             proptest::prop_assert!(canon(&q_add(&x, &y), &(&rx + &ry)));
             proptest::prop_assert!(canon(&q_add(&x, &-&x), &Q::zero()));
             proptest::prop_assert!(canon(&q_sub(&x, &y), &(&rx - &ry)));
+        }
+    }
+
+    /// The exact value of a printed decimal (`-1.25e-7`, `0.001`, `120`).
+    fn parse_decimal(s: &str) -> Q {
+        let (m, e) = s
+            .split_once('e')
+            .map_or((s, 0), |(m, e)| (m, e.parse::<i64>().unwrap()));
+        let (neg, m) = m.strip_prefix('-').map_or((false, m), |m| (true, m));
+        let (int, frac) = m.split_once('.').unwrap_or((m, ""));
+        let digits: BigInt = format!("{int}{frac}").parse().unwrap();
+        let e = e - frac.len() as i64;
+        let p = num_traits::pow(BigInt::from(10), e.unsigned_abs() as usize);
+        let v = if e >= 0 {
+            Q::from_integer(digits * p)
+        } else {
+            Q::new(digits, p)
+        };
+        if neg { -v } else { v }
+    }
+
+    /// `⌊log10 |x|⌋` by comparison with powers of ten (the slow way).
+    fn floor_log10(x: &Q) -> i64 {
+        let ax = x.abs();
+        let p = |e: i64| {
+            let t = Q::from_integer(num_traits::pow(BigInt::from(10), e.unsigned_abs() as usize));
+            if e >= 0 { t } else { t.recip() }
+        };
+        let mut e = 0;
+        while p(e) > ax {
+            e -= 1;
+        }
+        while p(e + 1) <= ax {
+            e += 1;
+        }
+        e
+    }
+
+    proptest::proptest! {
+        /// `approx_decimal_ratio` is |x| rounded half up to `digits`
+        /// significant digits, with x's sign: the printed value r has at
+        /// most `digits` significant digits and |x| ∈ [|r| − u/2, |r| + u/2)
+        /// with u the unit of the last digit at |x|'s own magnitude (also
+        /// near powers of ten, where rounding carries into a new digit).
+        #[test]
+        fn approx_decimal_is_rounded_half_up(
+            a in proptest::collection::vec(proptest::num::u64::ANY, 0..4),
+            b in proptest::collection::vec(proptest::num::u64::ANY, 0..4),
+            near in 0usize..4,
+            k in 0usize..40,
+            neg in proptest::bool::ANY,
+            digits in 1usize..26,
+        ) {
+            let make = |v: &[u64]| -> BigInt {
+                v.iter().fold(BigInt::zero(), |acc, &w| (acc << 64usize) + w)
+            };
+            let ten_k = num_traits::pow(BigInt::from(10), k);
+            let (n, d) = match near {
+                // random
+                0 => (make(&a) + 1u32, make(&b) + 1u32),
+                // just below a power of ten: 0.999… and 9.99…·10^k
+                1 => (&ten_k - 1u32, BigInt::from(10u32).pow(1 + k as u32 / 2)),
+                // a power of ten times d, ± 1
+                2 => { let d = make(&b) + 1u32; (&ten_k * &d - 1u32, d) }
+                // an exact half at the rounding position
+                _ => (&ten_k * 10u32 + 5u32, BigInt::from(10u32).pow(k as u32 % 7)),
+            };
+            proptest::prop_assume!(!n.is_zero());
+            let n = if neg { -n } else { n };
+            let s = approx_decimal_ratio(&n, &d, digits);
+            let x = Q::new(n.clone(), d.clone());
+            let r = parse_decimal(&s);
+            proptest::prop_assert_eq!(r.is_negative(), x.is_negative(), "{}", s);
+            let mant = s.trim_start_matches('-').split('e').next().unwrap().replace('.', "");
+            let sig = mant.trim_start_matches('0').trim_end_matches('0').len();
+            proptest::prop_assert!(sig <= digits, "{} has more than {} digits", s, digits);
+            let e10 = floor_log10(&x);
+            let e = e10 - digits as i64 + 1;
+            let u = {
+                let t = Q::from_integer(num_traits::pow(BigInt::from(10), e.unsigned_abs() as usize));
+                if e >= 0 { t } else { t.recip() }
+            };
+            let half = &u / Q::from_integer(BigInt::from(2));
+            let (ax, ar) = (x.abs(), r.abs());
+            proptest::prop_assert!(&ar - &half <= ax && ax < &ar + &half, "{}/{} printed {}", n, d, s);
         }
     }
 
