@@ -355,5 +355,14 @@ mod json {
                 Answer::Resultant(r) => crate::report::resultant_json(r),
             }
         }
+
+        /// [`Answer::to_json`] as compact text (a natural pair's written
+        /// without a `Value` tree).
+        pub(crate) fn to_json_text(&self) -> String {
+            match self {
+                Answer::Natural(r) => crate::report::natural_json_text(r),
+                other => other.to_json().to_string(),
+            }
+        }
     }
 }

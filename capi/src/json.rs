@@ -183,7 +183,7 @@ pub unsafe extern "C" fn qs_batch_line(line: *const c_char, out: *mut *mut c_cha
                 return Err(input_error("line is NULL"));
             }
             let text = CStr::from_ptr(line).to_string_lossy();
-            let answer = engine::batch::answer_line(&text).to_string();
+            let answer = engine::batch::answer_line_text_within(&text, &engine::Budget::default());
             Ok((host_string(&answer), None))
         })
     }

@@ -43,7 +43,7 @@ pub(crate) fn answer_line(py: Python<'_>, line: &str, time_limit: Option<f64>) -
     let line = strip_newline(line);
     let budget = guard::budget(py, time_limit)?;
     guard::run(py, || {
-        Ok(quadsect::batch::answer_line_within(line, &budget).to_string())
+        Ok(quadsect::batch::answer_line_text_within(line, &budget))
     })
 }
 
@@ -218,7 +218,7 @@ fn worker(jobs: &Mutex<Receiver<(u64, String)>>, out: &Sender<(u64, String)>, bu
             Err(_) => return,
         };
         let Ok((i, line)) = job else { return };
-        let a = quadsect::batch::answer_line_within(&line, budget).to_string();
+        let a = quadsect::batch::answer_line_text_within(&line, budget);
         if out.send((i, a)).is_err() {
             return;
         }

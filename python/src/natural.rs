@@ -270,7 +270,7 @@ impl NativeReport {
 impl NativeReport {
     /// The CLI's `--json` text.
     fn json(&self, py: Python<'_>) -> PyResult<String> {
-        guard::run(py, || json_text(&self.r))
+        guard::run(py, || Ok(self.r.to_json_string()))
     }
 
     /// The human summary, as the CLI prints it.

@@ -388,6 +388,21 @@ impl NaturalReport {
         self.method
     }
 
+    /// The JSON of `quadsect natural --json` as compact text (what
+    /// `serde_json::to_string` of the report gives), written straight into
+    /// text without a `serde_json::Value` tree.
+    ///
+    /// ```
+    /// let a: quadsect::Natural = "sphere center=0,0,0 radius2=4".parse().unwrap();
+    /// let b: quadsect::Natural = "cylinder point=1,0,0 axis=0,0,1 radius2=1".parse().unwrap();
+    /// let r = quadsect::classify(&a, &b).unwrap();
+    /// assert_eq!(r.to_json_string(), serde_json::to_string(&r).unwrap());
+    /// ```
+    #[cfg(feature = "serde")]
+    pub fn to_json_string(&self) -> String {
+        crate::report::natural_json_text(self)
+    }
+
     /// Remarks.
     pub fn notes(&self) -> &[String] {
         &self.notes

@@ -3,66 +3,28 @@
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
 use crate::natural::exact::{EPoint, Exact, normalize_direction, normalize_plane};
-use crate::natural::result::Plane;
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 
-use serde_json::{Value, json};
+use super::write::{Json, W, arr, into_string, obj_w, to_value, wobj};
+use crate::number::QSqrt;
+use serde_json::Value;
 
 /// `[value, bound]`: the double nearest the exact value's enclosure and a
 /// proven bound on its error (`|x − value| ≤ bound`).
-fn f64_json(x: &Exact) -> Value {
-    let (v, b) = x.to_f64_bounded();
-    Value::from(vec![v, b])
+fn f64_w(x: &Exact) -> (f64, f64) {
+    x.to_f64_bounded()
 }
 
-fn f64_point(p: &EPoint) -> Value {
-    Value::Array(p.iter().map(f64_json).collect())
+fn f64_point(p: &EPoint) -> [(f64, f64); 3] {
+    [f64_w(&p[0]), f64_w(&p[1]), f64_w(&p[2])]
 }
 
-/// The certified doubles of a component's numeric fields (the same fields
-/// as printed exactly, `[value, bound]` each).
-fn component_f64_json(c: &Component) -> Value {
-    match c {
-        Component::Conic {
-            plane,
-            center,
-            vertex,
-            axes2,
-            axis_dirs,
-            focal2,
-            ..
-        } => {
-            let (n, o) = normalize_plane(plane);
-            obj! {
-                "plane" => obj! {"normal" => f64_point(&n), "offset" => f64_json(&o)},
-                "center" => center.as_ref().map(f64_point),
-                "vertex" => vertex.as_ref().map(f64_point),
-                "semi_axes2" => axes2.iter().map(f64_json).collect::<Vec<_>>(),
-                "axis_directions" => axis_dirs.iter().map(|d| f64_point(&normalize_direction(d))).collect::<Vec<_>>(),
-                "focal_length2" => focal2.as_ref().map(f64_json),
-            }
-        }
-        Component::Line {
-            point, direction, ..
-        } => obj! {"point" => f64_point(point), "direction" => f64_point(direction)},
-        Component::Point { point, .. } => obj! {"point" => f64_point(point)},
-        Component::Curve { singular, .. } => obj! {
-            "singular_points" => singular.iter().map(|p| f64_point(&p.point)).collect::<Vec<_>>(),
-        },
-    }
-}
-
-fn component_json(c: &Component) -> Value {
-    let mut v = component_exact_json(c);
-    if let Value::Object(m) = &mut v {
-        m.insert("f64".into(), component_f64_json(c));
-    }
-    v
-}
-
-fn component_exact_json(c: &Component) -> Value {
+/// One component: its exact fields, then `f64` with the certified doubles
+/// of the same numeric fields (`[value, bound]` each).  A plane and axis
+/// directions are normalized once for both.
+fn write_component(c: &Component, out: &mut Vec<u8>) {
     match c {
         Component::Conic {
             plane,
@@ -73,38 +35,53 @@ fn component_exact_json(c: &Component) -> Value {
             axis_dirs,
             focal2,
             double,
-        } => obj! {
-            "type" => "conic",
-            "conic" => kind.as_str(),
-            "plane" => plane_json(plane),
-            "center" => center.as_ref().map(epoint_json),
-            "vertex" => vertex.as_ref().map(epoint_json),
-            "semi_axes2" => axes2.iter().map(exact_json).collect::<Vec<_>>(),
-            "axis_directions" => axis_dirs.iter().map(|d| epoint_json(&normalize_direction(d))).collect::<Vec<_>>(),
-            "focal_length2" => focal2.as_ref().map(exact_json),
-            "double" => *double,
-        },
+        } => {
+            let (n, o) = normalize_plane(plane);
+            let dirs: Vec<EPoint> = axis_dirs.iter().map(normalize_direction).collect();
+            wobj!(out;
+                "type" => "conic",
+                "conic" => kind.as_str(),
+                "plane" => obj_w! {"normal" => epoint_w(&n), "offset" => exact_w(&o)},
+                "center" => center.as_ref().map(epoint_w),
+                "vertex" => vertex.as_ref().map(epoint_w),
+                "semi_axes2" => arr(axes2.iter().map(exact_w)),
+                "axis_directions" => arr(dirs.iter().map(epoint_w)),
+                "focal_length2" => focal2.as_ref().map(exact_w),
+                "double" => *double,
+                "f64" => obj_w! {
+                    "plane" => obj_w! {"normal" => f64_point(&n), "offset" => f64_w(&o)},
+                    "center" => center.as_ref().map(f64_point),
+                    "vertex" => vertex.as_ref().map(f64_point),
+                    "semi_axes2" => arr(axes2.iter().map(f64_w)),
+                    "axis_directions" => arr(dirs.iter().map(f64_point)),
+                    "focal_length2" => focal2.as_ref().map(f64_w),
+                },
+            )
+        }
         Component::Line {
             point,
             direction,
             double,
-        } => obj! {
-            "type" => "line", "point" => epoint_json(point), "direction" => epoint_json(direction), "double" => *double,
-        },
-        Component::Point { point, kind } => obj! {
-            "type" => "point", "point" => epoint_json(point), "kind" => kind.as_str(),
-        },
+        } => wobj!(out;
+            "type" => "line", "point" => epoint_w(point), "direction" => epoint_w(direction), "double" => *double,
+            "f64" => obj_w! {"point" => f64_point(point), "direction" => f64_point(direction)},
+        ),
+        Component::Point { point, kind } => wobj!(out;
+            "type" => "point", "point" => epoint_w(point), "kind" => kind.as_str(),
+            "f64" => obj_w! {"point" => f64_point(point)},
+        ),
         Component::Curve {
             degree,
             singular,
             branches,
-        } => obj! {
+        } => wobj!(out;
             "type" => "curve",
             "degree" => *degree,
-            "singular_points" => singular.iter().map(|p| obj! {"point" => epoint_json(&p.point), "kind" => p.kind.as_str(), "isolated" => p.is_isolated()}).collect::<Vec<_>>(),
+            "singular_points" => arr(singular.iter().map(|p| obj_w! {"point" => epoint_w(&p.point), "kind" => p.kind.as_str(), "isolated" => p.is_isolated()})),
             "real_components" => branches.len(),
-            "branches" => branches.iter().map(branch_json).collect::<Vec<_>>(),
-        },
+            "branches" => arr(branches.iter().map(branch_w)),
+            "f64" => obj_w! {"singular_points" => arr(singular.iter().map(|p| f64_point(&p.point)))},
+        ),
     }
 }
 
@@ -113,55 +90,52 @@ fn component_exact_json(c: &Component) -> Value {
 /// exactly, as a root of the other quadric along a ruling of the cylinder
 /// or cone (`point = ruling.point + t·ruling.direction`, `t` a root of
 /// `a·t² + 2b·t + c`: `t = (−b + root·√(b² − ac))/a`, or `t` itself).
-fn branch_json(b: &crate::natural::CurveBranch) -> Value {
-    let p = &b.start;
-    let (rp, rd) = p.ruling();
-    let q = p.quadratic();
-    let e = |x: &crate::number::QSqrt| exact_json(&Exact::Quad(x.clone()));
-    obj! {
-        "bounded" => b.bounded,
-        "point" => p.approx().iter().map(|&(v, err)| Value::from(vec![v, err])).collect::<Vec<_>>(),
-        "ruling" => obj! {"point" => rp.iter().map(e).collect::<Vec<_>>(), "direction" => rd.iter().map(e).collect::<Vec<_>>()},
-        "along_ruling" => obj! {"a" => e(&q[0]), "b" => e(&q[1]), "c" => e(&q[2]), "root" => p.root(), "t" => p.parameter().map(e)},
-    }
-}
-
-/// A plane with rational coefficients is scaled to primitive integers.
-fn plane_json(p: &Plane) -> Value {
-    let (n, o) = normalize_plane(p);
-    obj! {"normal" => epoint_json(&n), "offset" => exact_json(&o)}
-}
-
-fn q3(v: &[crate::number::Q; 3]) -> Value {
-    json!(v.iter().map(fmt_q).collect::<Vec<_>>())
-}
-
-fn deciders_json(d: &PlanarDeciders) -> Value {
-    json!({
-        "thm8": d.thm8,
-        "lemma81_discriminant": fmt_q(&d.discriminant),
-        "lemma81_factors": d.lemma81,
-        "pencil_rank2_member": d.pencil,
-        "projection_conic": d.projection,
-        "frame": {"origin": q3(&d.frame[0]), "e1": q3(&d.frame[1]), "e2": q3(&d.frame[2])},
-        "x_point": d.x_point.as_ref().map(q3),
-        "heights2_at_x": d.heights_at_x.as_ref().map(|(a, b)| json!([fmt_q(a), fmt_q(b)])),
-        "squared_heights_A_D": d.parallelogram.as_ref().map(|v| v.iter().map(exact_json).collect::<Vec<_>>()),
-        "skeletal_lines": d.skeletal.iter().map(|ls| ls.iter().map(|(p, w)| json!({"point": epoint_json(p), "direction": epoint_json(w)})).collect::<Vec<_>>()).collect::<Vec<_>>(),
+fn branch_w(b: &crate::natural::CurveBranch) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| {
+        let p = &b.start;
+        let (rp, rd) = p.ruling();
+        let q = p.quadratic();
+        wobj!(out;
+            "bounded" => b.bounded,
+            "point" => p.approx(),
+            "ruling" => obj_w! {"point" => arr(rp.iter().map(qsqrt_w)), "direction" => arr(rd.iter().map(qsqrt_w))},
+            "along_ruling" => obj_w! {"a" => qsqrt_w(&q[0]), "b" => qsqrt_w(&q[1]), "c" => qsqrt_w(&q[2]), "root" => p.root(), "t" => p.parameter().map(qsqrt_w)},
+        )
     })
 }
 
-fn section7_json(s: &Section7) -> Value {
-    match s {
-        Section7::NotApplicable(why) => json!({"applies": false, "reason": why}),
-        Section7::Disjoint => json!({"applies": true, "verdict": "disjoint"}),
-        Section7::Transversal => json!({"applies": true, "verdict": "transversal"}),
-        Section7::Tangent(p) => json!({
-            "applies": true,
-            "verdict": "tangent",
-            "points": p.iter().map(|x| epoint_json(&crate::natural::exact::epoint(x))).collect::<Vec<_>>(),
-        }),
-    }
+fn q3(v: &[crate::number::Q; 3]) -> [String; 3] {
+    [fmt_q(&v[0]), fmt_q(&v[1]), fmt_q(&v[2])]
+}
+
+fn deciders_w(d: &PlanarDeciders) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| {
+        wobj! {out;
+            "thm8" => d.thm8,
+            "lemma81_discriminant" => fmt_q(&d.discriminant),
+            "lemma81_factors" => d.lemma81,
+            "pencil_rank2_member" => d.pencil,
+            "projection_conic" => d.projection.as_str(),
+            "frame" => obj_w! {"origin" => q3(&d.frame[0]), "e1" => q3(&d.frame[1]), "e2" => q3(&d.frame[2])},
+            "x_point" => d.x_point.as_ref().map(q3),
+            "heights2_at_x" => d.heights_at_x.as_ref().map(|(a, b)| [fmt_q(a), fmt_q(b)]),
+            "squared_heights_A_D" => d.parallelogram.as_ref().map(|v| arr(v.iter().map(exact_w))),
+            "skeletal_lines" => arr(d.skeletal.iter().map(|ls| arr(ls.iter().map(|(p, w)| W(move |o: &mut Vec<u8>| wobj!(o; "point" => epoint_w(p), "direction" => epoint_w(w))))))),
+        }
+    })
+}
+
+fn section7_w(s: &Section7) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| match s {
+        Section7::NotApplicable(why) => wobj!(out; "applies" => false, "reason" => *why),
+        Section7::Disjoint => wobj!(out; "applies" => true, "verdict" => "disjoint"),
+        Section7::Transversal => wobj!(out; "applies" => true, "verdict" => "transversal"),
+        Section7::Tangent(p) => wobj!(out;
+            "applies" => true,
+            "verdict" => "tangent",
+            "points" => arr(p.iter().map(qpoint_w)),
+        ),
+    })
 }
 
 /// `quadsect natural --json`.
@@ -171,104 +145,135 @@ fn section7_json(s: &Section7) -> Value {
 /// (`fast`); when the complete route had to answer, its whole report
 /// follows with `route: "complete"` and the `fallback` reason.
 pub fn natural_json(r: &NaturalReport) -> Value {
+    to_value(&natural_bytes(r))
+}
+
+/// [`natural_json`] as compact JSON text, written without a `Value` tree
+/// (the batch protocol, the bindings).
+pub fn natural_json_text(r: &NaturalReport) -> String {
+    into_string(natural_bytes(r))
+}
+
+fn natural_bytes(r: &NaturalReport) -> Vec<u8> {
+    let mut out = Vec::with_capacity(1024);
+    write_natural(r, &mut out);
+    out
+}
+
+/// Writes the answer (see [`natural_json`]) into `out`.
+pub(crate) fn write_natural(r: &NaturalReport, out: &mut Vec<u8>) {
     if let Some(e) = &r.exhausted {
-        return json!({
-            "class": r.class.as_str(),
-            "conics": null,
-            "lines": null,
-            "points": null,
-            "axes": null,
-            "thm8": null,
-            "components": [],
-            "method": r.method,
-            "a": natural_input_json(&r.a),
-            "b": natural_input_json(&r.b),
-            "notes": r.notes,
-            "reason": {"kind": "budget", "limit": e.limit().as_str(), "message": e.to_string()},
-        });
+        wobj!(out;
+            "class" => r.class.as_str(),
+            "conics" => (),
+            "lines" => (),
+            "points" => (),
+            "axes" => (),
+            "thm8" => (),
+            "components" => [(); 0],
+            "method" => r.method,
+            "a" => natural_input_w(&r.a),
+            "b" => natural_input_w(&r.b),
+            "notes" => r.notes,
+            "reason" => obj_w! {"kind" => "budget", "limit" => e.limit().as_str(), "message" => e.to_string()},
+        );
+        return;
     }
+    let complete = |out: &mut Vec<u8>| {
+        wobj!(out;
+            "class" => r.class.as_str(),
+            "conics" => r.conics(),
+            "lines" => r.lines(),
+            "points" => r.points(),
+            "axes" => r.axes.as_ref().map(|a| a.as_str()),
+            "thm8" => r.thm8,
+            "components" => arr(r.components.iter().map(|c| W(move |o: &mut Vec<u8>| write_component(c, o)))),
+            "method" => r.method,
+            "deciders" => r.deciders.as_ref().map(deciders_w),
+            "section7" => r.section7.as_ref().map(section7_w),
+            "a" => natural_input_w(&r.a),
+            "b" => natural_input_w(&r.b),
+            "notes" => r.notes,
+        )
+    };
     match r.route {
-        Some(Route::Fast) => {
-            let mut m = class_and_counts(r);
-            m.insert("method".into(), json!(r.method));
-            m.insert("route".into(), json!("fast"));
-            return Value::Object(m);
-        }
+        Some(Route::Fast) => wobj!(out;
+            "class" => r.class.as_str(),
+            "conics" => r.conics(),
+            "lines" => r.lines(),
+            "points" => r.points(),
+            "axes" => r.axes.as_ref().map(|a| a.as_str()),
+            "thm8" => r.thm8,
+            "method" => r.method,
+            "route" => "fast",
+        ),
         Some(Route::Complete(why)) => {
-            let mut v = complete_json(r);
-            if let Value::Object(m) = &mut v {
-                m.insert("route".into(), json!("complete"));
-                m.insert("fallback".into(), json!(why));
-            }
-            return v;
+            complete(out);
+            // two more keys at the end of the object
+            out.pop();
+            out.extend_from_slice(b",\"route\":\"complete\",\"fallback\":");
+            why.write(out);
+            out.push(b'}');
         }
-        None => {}
+        None => complete(out),
     }
-    complete_json(r)
 }
 
-/// The keys both routes start with: class, counts, axes, thm8.
-fn class_and_counts(r: &NaturalReport) -> serde_json::Map<String, Value> {
-    let Value::Object(m) = json!({
-        "class": r.class.as_str(),
-        "conics": r.conics(),
-        "lines": r.lines(),
-        "points": r.points(),
-        "axes": r.axes.as_ref().map(|a| a.as_str()),
-        "thm8": r.thm8,
-    }) else {
-        unreachable!("json! of an object literal")
-    };
-    m
+/// A point with coordinates in Q(√d).
+fn qpoint_w(x: &[QSqrt; 3]) -> impl Json + '_ {
+    arr(x.iter().map(qsqrt_w))
 }
 
-fn complete_json(r: &NaturalReport) -> Value {
-    let mut m = class_and_counts(r);
-    let rest = obj! {
-        "components" => r.components.iter().map(component_json).collect::<Vec<_>>(),
-        "method" => r.method,
-        "deciders" => r.deciders.as_ref().map(deciders_json),
-        "section7" => r.section7.as_ref().map(section7_json),
-        "a" => natural_input_json(&r.a),
-        "b" => natural_input_json(&r.b),
-        "notes" => r.notes.clone(),
-    };
-    if let Value::Object(rest) = rest {
-        m.extend(rest);
-    }
-    Value::Object(m)
+/// An element of Q(√d): a string for a rational, `{"a","b","d","approx"}`
+/// for a quadratic irrational (radicand normalized).
+fn qsqrt_w(x: &QSqrt) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| {
+        if x.is_rational() {
+            fmt_q(&x.a).write(out)
+        } else {
+            let x = x.normalized();
+            wobj!(out; "a" => fmt_q(&x.a), "b" => fmt_q(&x.b), "d" => fmt_q(&x.d), "approx" => x.approx(20))
+        }
+    })
 }
 
 /// JSON: a string for a rational, `{"a","b","d","approx"}` for a
 /// quadratic irrational, `{"poly","interval","approx"}` otherwise.
-pub fn exact_json(x: &Exact) -> Value {
-    match x {
-        Exact::Quad(x) if x.is_rational() => Value::from(fmt_q(&x.a)),
-        Exact::Quad(x) => {
-            let x = x.normalized();
-            obj! {"a" => fmt_q(&x.a), "b" => fmt_q(&x.b), "d" => fmt_q(&x.d), "approx" => x.approx(20)}
+fn exact_w(x: &Exact) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| match x {
+        Exact::Quad(x) => qsqrt_w(x).write(out),
+        Exact::Alg(a) => {
+            let (poly, interval, approx) = a.describe();
+            wobj!(out; "poly" => poly, "interval" => interval, "approx" => approx)
         }
-        Exact::Alg(a) => super::kernel::alg_json(a),
-    }
+    })
 }
 
-/// JSON of a point.
-pub fn epoint_json(p: &EPoint) -> Value {
-    Value::Array(p.iter().map(exact_json).collect())
+fn epoint_w(p: &EPoint) -> impl Json + '_ {
+    arr(p.iter().map(exact_w))
+}
+
+fn natural_input_w(q: &Natural) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| match q {
+        Natural::Sphere(s) => {
+            wobj!(out; "kind" => "sphere", "center" => v3(&s.center), "radius2" => fmt_q(&s.r2))
+        }
+        Natural::Cylinder(c) => {
+            wobj!(out; "kind" => "cylinder", "point" => v3(&c.point), "axis" => v3(&c.axis), "radius2" => fmt_q(&c.r2))
+        }
+        Natural::Cone(c) => {
+            wobj!(out; "kind" => "cone", "vertex" => v3(&c.vertex), "axis" => v3(&c.axis), "tan2" => fmt_q(&c.t2))
+        }
+    })
+}
+
+fn v3(p: &V3) -> [String; 3] {
+    [fmt_q(&p[0]), fmt_q(&p[1]), fmt_q(&p[2])]
 }
 
 /// The JSON form of contract §2 (numbers as exact strings).
 pub fn natural_input_json(q: &Natural) -> Value {
-    let v = |p: &V3| -> Value { json!(p.iter().map(fmt_q).collect::<Vec<_>>()) };
-    match q {
-        Natural::Sphere(s) => {
-            json!({"kind": "sphere", "center": v(&s.center), "radius2": fmt_q(&s.r2)})
-        }
-        Natural::Cylinder(c) => {
-            json!({"kind": "cylinder", "point": v(&c.point), "axis": v(&c.axis), "radius2": fmt_q(&c.r2)})
-        }
-        Natural::Cone(c) => {
-            json!({"kind": "cone", "vertex": v(&c.vertex), "axis": v(&c.axis), "tan2": fmt_q(&c.t2)})
-        }
-    }
+    let mut out = Vec::new();
+    natural_input_w(q).write(&mut out);
+    to_value(&out)
 }
