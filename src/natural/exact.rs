@@ -72,14 +72,16 @@ impl Exact {
                 let (lo, hi) = c.interval();
                 crate::number::xball::XBall::from_interval(&lo, &hi)
                     .to_f64()
-                    .unwrap_or((
-                        if a.signum() < 0 {
-                            f64::NEG_INFINITY
-                        } else {
-                            f64::INFINITY
-                        },
-                        f64::INFINITY,
-                    ))
+                    .unwrap_or_else(|| {
+                        (
+                            if a.signum() < 0 {
+                                f64::NEG_INFINITY
+                            } else {
+                                f64::INFINITY
+                            },
+                            f64::INFINITY,
+                        )
+                    })
             }
         }
     }

@@ -302,14 +302,17 @@ impl QSqrt {
                 None => return (0.0, f64::INFINITY),
             }
         };
-        ball.to_f64().unwrap_or((
-            if self.signum() < 0 {
-                f64::NEG_INFINITY
-            } else {
-                f64::INFINITY
-            },
-            f64::INFINITY,
-        ))
+        // (lazily: the exact sign costs more than the ball)
+        ball.to_f64().unwrap_or_else(|| {
+            (
+                if self.signum() < 0 {
+                    f64::NEG_INFINITY
+                } else {
+                    f64::INFINITY
+                },
+                f64::INFINITY,
+            )
+        })
     }
 
     /// Decimal approximation with `digits` significant digits, correctly
