@@ -25,7 +25,7 @@
 
 use super::Q;
 use num_bigint::BigInt;
-use num_traits::{Num, Zero};
+use num_traits::{Num, One, Zero};
 use std::fmt;
 
 /// Longest run of digits accepted in one literal (a documented size limit:
@@ -289,14 +289,32 @@ fn scan_decimal(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
     let value = if e >= 0 {
         Q::from_integer(mantissa * num_traits::pow(ten, e as usize))
     } else {
-        // reduced with the fast gcd (num-rational's `Q::new` uses
-        // num-bigint's binary gcd, quadratic in the bits of 10^-e even
-        // when the mantissa is small)
-        let den = num_traits::pow(ten, (-e) as usize);
-        let g = super::gcd_z(&mantissa, &den);
-        Q::new_raw(mantissa / &g, den / g)
+        reduce_by_power_of_ten(mantissa, (-e) as usize)
     };
     Ok((value, i))
+}
+
+/// `m / 10^k` in lowest terms (`m ≥ 0`).  The common factor is
+/// `2^a·5^b`: the twos from the trailing zero bits, and the fives in one
+/// division when `5^k` divides the rest (every double written out in full
+/// decimal is `n/2^j`, so its mantissa is a multiple of `5^k`); otherwise
+/// Lehmer's gcd with `5^k` (num-rational's `Q::new` would use num-bigint's
+/// binary gcd, quadratic in the bits of `10^k` even for a small `m`).
+fn reduce_by_power_of_ten(m: BigInt, k: usize) -> Q {
+    use num_integer::Integer;
+    if m.is_zero() {
+        return Q::zero();
+    }
+    let twos = (m.trailing_zeros().unwrap_or(0) as usize).min(k);
+    let m = m >> twos;
+    let fives = num_traits::pow(BigInt::from(5), k);
+    let (q, r) = m.div_rem(&fives);
+    if r.is_zero() {
+        // q is odd when twos < k (m was): coprime to 2^(k − twos)
+        return Q::new_raw(q, BigInt::one() << (k - twos));
+    }
+    let g = super::gcd_z(&m, &fives);
+    Q::new_raw(m / &g, (fives / g) << (k - twos))
 }
 
 /// Parses a complete exact number: an optional sign, a literal (integer,
@@ -491,6 +509,33 @@ mod tests {
                 proptest::prop_assert_eq!(parse_rational(&t).unwrap(), crate::number::double_value(x).unwrap(), "{}", t);
                 proptest::prop_assert_eq!(parse_rational_with(&t, NumberMode::Float).unwrap(), crate::number::double_value(x).unwrap());
             }
+        }
+
+        /// `m/10^k` reduced through its twos and fives is num-rational's
+        /// canonical value: mantissas with and without the factor 5^k
+        /// (every double's full decimal expansion has it), zeros, and
+        /// finite doubles written out in full decimal.
+        #[test]
+        fn powers_of_ten_reduce_canonically(
+            w in proptest::collection::vec(proptest::num::u64::ANY, 0..4),
+            k in 0usize..60,
+            a in 0usize..70,
+            b in 0usize..70,
+            bits in proptest::num::u64::ANY,
+        ) {
+            let m = w.iter().fold(BigInt::zero(), |acc, &x| (acc << 64usize) + x);
+            let m = (m << a) * num_traits::pow(BigInt::from(5), b);
+            let want = Q::new(m.clone(), num_traits::pow(BigInt::from(10), k));
+            let got = reduce_by_power_of_ten(m, k);
+            proptest::prop_assert!(got.numer() == want.numer() && got.denom() == want.denom(), "{} vs {}", got, want);
+            // a dyadic n/2^j (a double's kind of value) in full decimal:
+            // the digits of n·5^j with the point j places from the right
+            let (n, j) = (BigInt::from(bits >> 11), a);
+            let digits = format!("{:0>width$}", (&n * num_traits::pow(BigInt::from(5), j)).to_string(), width = j + 1);
+            let text = format!("{}.{}", &digits[..digits.len() - j], &digits[digits.len() - j..]);
+            let text = text.trim_end_matches('.');
+            let exact = Q::new(n, BigInt::one() << j);
+            proptest::prop_assert_eq!(parse_rational(text).unwrap(), exact, "{}", text);
         }
     }
 
