@@ -25,7 +25,7 @@
 
 use super::Q;
 use num_bigint::BigInt;
-use num_traits::{Num, One, Zero};
+use num_traits::{Num, Zero};
 use std::fmt;
 
 /// Longest run of digits accepted in one literal (a documented size limit:
@@ -295,26 +295,29 @@ fn scan_decimal(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
 }
 
 /// `m / 10^k` in lowest terms (`m ≥ 0`).  The common factor is
-/// `2^a·5^b`: the twos from the trailing zero bits, and the fives in one
-/// division when `5^k` divides the rest (every double written out in full
-/// decimal is `n/2^j`, so its mantissa is a multiple of `5^k`); otherwise
-/// Lehmer's gcd with `5^k` (num-rational's `Q::new` would use num-bigint's
-/// binary gcd, quadratic in the bits of `10^k` even for a small `m`).
+/// `2^a·5^b`: the twos from the trailing zero bits, the fives by word-size
+/// divisions (5^13, then 5), at most k of each — no gcd (num-rational's
+/// `Q::new` would use num-bigint's binary gcd, quadratic in the bits of
+/// `10^k` even for a small `m`).
 fn reduce_by_power_of_ten(m: BigInt, k: usize) -> Q {
-    use num_integer::Integer;
     if m.is_zero() {
         return Q::zero();
     }
     let twos = (m.trailing_zeros().unwrap_or(0) as usize).min(k);
-    let m = m >> twos;
-    let fives = num_traits::pow(BigInt::from(5), k);
-    let (q, r) = m.div_rem(&fives);
-    if r.is_zero() {
-        // q is odd when twos < k (m was): coprime to 2^(k − twos)
-        return Q::new_raw(q, BigInt::one() << (k - twos));
+    let mut m = m >> twos;
+    let mut fives = 0;
+    const P13: u32 = 1_220_703_125; // 5^13
+    while fives + 13 <= k && (&m % P13).is_zero() {
+        m /= P13;
+        fives += 13;
     }
-    let g = super::gcd_z(&m, &fives);
-    Q::new_raw(m / &g, (fives / g) << (k - twos))
+    while fives < k && (&m % 5u32).is_zero() {
+        m /= 5u32;
+        fives += 1;
+    }
+    // what is left of 2^k (5^k) is coprime to m: all twos (fives) of m
+    // were removed unless 2^k (5^k) was used up
+    Q::new_raw(m, num_traits::pow(BigInt::from(5), k - fives) << (k - twos))
 }
 
 /// Parses a complete exact number: an optional sign, a literal (integer,
@@ -387,6 +390,7 @@ fn char_at(text: &str, byte: usize) -> char {
 mod tests {
     use super::*;
     use crate::number::q;
+    use num_traits::One;
 
     #[test]
     fn literals() {
