@@ -125,12 +125,17 @@ pub(crate) fn approx_decimal_ratio(n: &BigInt, d: &BigInt, digits: usize) -> Str
     // one conversion to decimal, then the rounding on the digits
     let l2 = an.bits() as i64 - dm.bits() as i64;
     let mut sh = digits as i64 - (((l2 - 1) as f64) * std::f64::consts::LOG10_2).floor() as i64;
+    // a power of two in d is shifted out of the dividend instead
+    // (⌊⌊a/2^t⌋/b⌋ = ⌊a/(2^t·b)⌋): a shorter division (QSqrt::approx
+    // divides by D·2^k)
+    let t = dm.trailing_zeros().unwrap_or(0) as usize;
+    let odd = dm >> t;
     let q = loop {
         let p = num_traits::pow(num_bigint::BigUint::from(10u32), sh.unsigned_abs() as usize);
         let q = if sh >= 0 {
-            (an * p) / dm
+            ((an * p) >> t) / &odd
         } else {
-            an / (dm * p)
+            (an >> t) / (&odd * p)
         };
         let q = q.to_str_radix(10);
         if q.len() > digits {

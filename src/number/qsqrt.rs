@@ -329,6 +329,13 @@ impl QSqrt {
         if let Some(r) = super::exact_sqrt_q(&self.d) {
             return approx_decimal(&(&self.a + &self.b * r), digits);
         }
+        self.approx_irrational(digits)
+    }
+
+    /// [`QSqrt::approx`] of a number known irrational (`b ≠ 0`, `d` not a
+    /// rational square: a [`QSqrt::normalized`] one with `b ≠ 0`).
+    pub(crate) fn approx_irrational(&self, digits: usize) -> String {
+        debug_assert!(!self.b.is_zero());
         // in integers: x = (N1 + N2·√R)/D with a = an/ad, b = bn/bd,
         // d = dn/dd: N1 = an·bd·dd, N2 = bn·ad, R = dn·dd, D = ad·bd·dd;
         // m = N1·2^k + sgn(N2)·r with r within e of √T, T = N2²·R·4^k, so

@@ -232,7 +232,7 @@ fn qsqrt_w(x: &QSqrt) -> impl Json + '_ {
             fmt_q(&x.a).write(out)
         } else {
             let x = x.normalized();
-            wobj!(out; "a" => fmt_q(&x.a), "b" => fmt_q(&x.b), "d" => fmt_q(&x.d), "approx" => x.approx(20))
+            wobj!(out; "a" => fmt_q(&x.a), "b" => fmt_q(&x.b), "d" => fmt_q(&x.d), "approx" => if num_traits::Zero::is_zero(&x.b) { x.approx(20) } else { x.approx_irrational(20) })
         }
     })
 }
