@@ -7,7 +7,7 @@ use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 
-use super::write::{Json, W, arr, into_string, obj_w, to_value, wobj};
+use super::write::{Json, Obj, W, arr, into_string, obj_w, to_value, wobj};
 use crate::number::QSqrt;
 use serde_json::Value;
 
@@ -36,27 +36,31 @@ fn write_component(c: &Component, out: &mut Vec<u8>) {
             focal2,
             double,
         } => {
-            let (n, o) = normalize_plane(plane);
-            let dirs: Vec<EPoint> = axis_dirs.iter().map(normalize_direction).collect();
-            wobj!(out;
-                "type" => "conic",
-                "conic" => kind.as_str(),
-                "plane" => obj_w! {"normal" => epoint_w(&n), "offset" => exact_w(&o)},
-                "center" => center.as_ref().map(epoint_w),
-                "vertex" => vertex.as_ref().map(epoint_w),
-                "semi_axes2" => arr(axes2.iter().map(exact_w)),
-                "axis_directions" => arr(dirs.iter().map(epoint_w)),
-                "focal_length2" => focal2.as_ref().map(exact_w),
-                "double" => *double,
-                "f64" => obj_w! {
-                    "plane" => obj_w! {"normal" => f64_point(&n), "offset" => f64_w(&o)},
-                    "center" => center.as_ref().map(f64_point),
-                    "vertex" => vertex.as_ref().map(f64_point),
-                    "semi_axes2" => arr(axes2.iter().map(f64_w)),
-                    "axis_directions" => arr(dirs.iter().map(f64_point)),
-                    "focal_length2" => focal2.as_ref().map(f64_w),
-                },
-            )
+            let (normal, offset) = normalize_plane(plane);
+            let c = ConicNumbers {
+                normal: &normal,
+                offset: &offset,
+                center: center.as_ref(),
+                vertex: vertex.as_ref(),
+                axes2,
+                dirs: &axis_dirs
+                    .iter()
+                    .map(normalize_direction)
+                    .collect::<Vec<_>>(),
+                focal2: focal2.as_ref(),
+            };
+            let mut obj = Obj::new(out);
+            obj.field("type", "conic").field("conic", kind.as_str());
+            c.write(&mut obj, true);
+            obj.field("double", *double).field(
+                "f64",
+                W(|o: &mut Vec<u8>| {
+                    let mut f = Obj::new(o);
+                    c.write(&mut f, false);
+                    f.end()
+                }),
+            );
+            obj.end()
         }
         Component::Line {
             point,
@@ -83,6 +87,45 @@ fn write_component(c: &Component, out: &mut Vec<u8>) {
             "f64" => obj_w! {"singular_points" => arr(singular.iter().map(|p| f64_point(&p.point)))},
         ),
     }
+}
+
+/// The numeric fields of a conic (plane normalized, axis directions
+/// normalized), written once exactly and once as certified doubles.
+struct ConicNumbers<'a> {
+    normal: &'a EPoint,
+    offset: &'a Exact,
+    center: Option<&'a EPoint>,
+    vertex: Option<&'a EPoint>,
+    axes2: &'a [Exact],
+    dirs: &'a [EPoint],
+    focal2: Option<&'a Exact>,
+}
+
+impl ConicNumbers<'_> {
+    fn write(&self, obj: &mut Obj, exact: bool) {
+        obj.field("plane", obj_w! {"normal" => point_in(self.normal, exact), "offset" => number_in(self.offset, exact)})
+            .field("center", self.center.map(|p| point_in(p, exact)))
+            .field("vertex", self.vertex.map(|p| point_in(p, exact)))
+            .field("semi_axes2", arr(self.axes2.iter().map(|x| number_in(x, exact))))
+            .field("axis_directions", arr(self.dirs.iter().map(|p| point_in(p, exact))))
+            .field("focal_length2", self.focal2.map(|x| number_in(x, exact)));
+    }
+}
+
+/// A number exactly or as a certified double `[value, bound]`.
+fn number_in(x: &Exact, exact: bool) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| {
+        if exact {
+            exact_w(x).write(out)
+        } else {
+            f64_w(x).write(out)
+        }
+    })
+}
+
+/// A point exactly or as certified doubles.
+fn point_in(p: &EPoint, exact: bool) -> impl Json + '_ {
+    arr(p.iter().map(move |x| number_in(x, exact)))
 }
 
 /// A real component of a curve: bounded or not, and a point on it — as
@@ -179,44 +222,35 @@ pub(crate) fn write_natural(r: &NaturalReport, out: &mut Vec<u8>) {
         );
         return;
     }
-    let complete = |out: &mut Vec<u8>| {
-        wobj!(out;
-            "class" => r.class.as_str(),
-            "conics" => r.conics(),
-            "lines" => r.lines(),
-            "points" => r.points(),
-            "axes" => r.axes.as_ref().map(|a| a.as_str()),
-            "thm8" => r.thm8,
-            "components" => arr(r.components.iter().map(|c| W(move |o: &mut Vec<u8>| write_component(c, o)))),
-            "method" => r.method,
-            "deciders" => r.deciders.as_ref().map(deciders_w),
-            "section7" => r.section7.as_ref().map(section7_w),
-            "a" => natural_input_w(&r.a),
-            "b" => natural_input_w(&r.b),
-            "notes" => r.notes,
-        )
-    };
-    match r.route {
-        Some(Route::Fast) => wobj!(out;
-            "class" => r.class.as_str(),
-            "conics" => r.conics(),
-            "lines" => r.lines(),
-            "points" => r.points(),
-            "axes" => r.axes.as_ref().map(|a| a.as_str()),
-            "thm8" => r.thm8,
-            "method" => r.method,
-            "route" => "fast",
-        ),
-        Some(Route::Complete(why)) => {
-            complete(out);
-            // two more keys at the end of the object
-            out.pop();
-            out.extend_from_slice(b",\"route\":\"complete\",\"fallback\":");
-            why.write(out);
-            out.push(b'}');
-        }
-        None => complete(out),
+    // the keys every answer starts with: class, counts, axes, thm8
+    let mut obj = Obj::new(out);
+    obj.field("class", r.class.as_str())
+        .field("conics", r.conics())
+        .field("lines", r.lines())
+        .field("points", r.points())
+        .field("axes", r.axes.as_ref().map(|a| a.as_str()))
+        .field("thm8", r.thm8);
+    if r.route == Some(Route::Fast) {
+        obj.field("method", r.method).field("route", "fast");
+        return obj.end();
     }
+    obj.field(
+        "components",
+        arr(r
+            .components
+            .iter()
+            .map(|c| W(move |o: &mut Vec<u8>| write_component(c, o)))),
+    )
+    .field("method", r.method)
+    .field("deciders", r.deciders.as_ref().map(deciders_w))
+    .field("section7", r.section7.as_ref().map(section7_w))
+    .field("a", natural_input_w(&r.a))
+    .field("b", natural_input_w(&r.b))
+    .field("notes", &r.notes);
+    if let Some(Route::Complete(why)) = r.route {
+        obj.field("route", "complete").field("fallback", why);
+    }
+    obj.end()
 }
 
 /// A point with coordinates in Q(√d).
@@ -276,4 +310,48 @@ pub fn natural_input_json(q: &Natural) -> Value {
     let mut out = Vec::new();
     natural_input_w(q).write(&mut out);
     to_value(&out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The three shapes of an answer keep the documented key order: the
+    /// complete route's answer to a request for counts only ends with
+    /// `route` and `fallback`, the fast one has no components, and the
+    /// text parses back to the same `Value`.
+    #[test]
+    fn key_order_of_each_route() {
+        let a: Natural = "sphere center=0,0,0 radius2=4".parse().unwrap();
+        let b: Natural = "cone vertex=0,0,3 axis=0,0,1 tan2=1".parse().unwrap();
+        let mut r = crate::natural::classify::classify_complete(&a, &b).unwrap();
+        let keys = |r: &NaturalReport| -> Vec<String> {
+            let v: Value = serde_json::from_str(&natural_json_text(r)).unwrap();
+            assert_eq!(v, natural_json(r));
+            v.as_object().unwrap().keys().cloned().collect()
+        };
+        let head = ["class", "conics", "lines", "points", "axes", "thm8"];
+        let complete: Vec<&str> = head
+            .iter()
+            .copied()
+            .chain([
+                "components",
+                "method",
+                "deciders",
+                "section7",
+                "a",
+                "b",
+                "notes",
+            ])
+            .collect();
+        assert_eq!(keys(&r), complete);
+        r.route = Some(Route::Complete("a reason"));
+        let mut with_fallback = complete.clone();
+        with_fallback.extend(["route", "fallback"]);
+        assert_eq!(keys(&r), with_fallback);
+        assert!(natural_json_text(&r).ends_with(r#","route":"complete","fallback":"a reason"}"#));
+        r.route = Some(Route::Fast);
+        let fast: Vec<&str> = head.iter().copied().chain(["method", "route"]).collect();
+        assert_eq!(keys(&r), fast);
+    }
 }

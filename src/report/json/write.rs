@@ -41,16 +41,21 @@ impl<T: Json> Json for Option<T> {
     }
 }
 
+/// `[a,b,…]` of the items.
+fn write_seq<T: Json>(items: impl Iterator<Item = T>, out: &mut Vec<u8>) {
+    out.push(b'[');
+    for (i, x) in items.enumerate() {
+        if i > 0 {
+            out.push(b',');
+        }
+        x.write(out);
+    }
+    out.push(b']');
+}
+
 impl<T: Json> Json for [T] {
     fn write(&self, out: &mut Vec<u8>) {
-        out.push(b'[');
-        for (i, x) in self.iter().enumerate() {
-            if i > 0 {
-                out.push(b',');
-            }
-            x.write(out);
-        }
-        out.push(b']');
+        write_seq(self.iter(), out)
     }
 }
 
@@ -101,16 +106,39 @@ where
     I: Iterator + Clone,
     I::Item: Json,
 {
-    W(move |out: &mut Vec<u8>| {
-        out.push(b'[');
-        for (i, x) in items.clone().enumerate() {
-            if i > 0 {
-                out.push(b',');
-            }
-            x.write(out);
+    W(move |out: &mut Vec<u8>| write_seq(items.clone(), out))
+}
+
+/// An object written field by field (when the fields are not one fixed
+/// list: shared runs of fields, optional ones): `{` at [`Obj::new`], `}`
+/// at [`Obj::end`].
+pub(crate) struct Obj<'a> {
+    out: &'a mut Vec<u8>,
+    first: bool,
+}
+
+impl<'a> Obj<'a> {
+    pub(crate) fn new(out: &'a mut Vec<u8>) -> Obj<'a> {
+        out.push(b'{');
+        Obj { out, first: true }
+    }
+
+    /// `"key":value` (the key is not escaped: a literal).
+    pub(crate) fn field(&mut self, key: &str, value: impl Json) -> &mut Self {
+        if !self.first {
+            self.out.push(b',');
         }
-        out.push(b']');
-    })
+        self.first = false;
+        self.out.push(b'"');
+        self.out.extend_from_slice(key.as_bytes());
+        self.out.extend_from_slice(b"\":");
+        value.write(self.out);
+        self
+    }
+
+    pub(crate) fn end(self) {
+        self.out.push(b'}');
+    }
 }
 
 /// Writes a JSON object `{"key": value, …}` into `out`, in the order given;
