@@ -678,7 +678,7 @@ impl RealAlg {
                 return a;
             }
             // the grid point just above lo lies in (lo, hi]
-            let g = Q::new(&a + BigInt::one(), BigInt::one() << k);
+            let g = crate::number::dyadic(&a + BigInt::one(), k as usize);
             if &g < hi && poly.sign_at(&g) == 0 {
                 return a + BigInt::one();
             }

@@ -622,10 +622,10 @@ impl DyadicBracket {
     }
 
     pub(crate) fn interval(self) -> RootInterval {
-        let den = BigInt::one() << self.k as usize;
+        // a/2^k in lowest terms by a shift (Q::new would run a gcd)
         RootInterval {
-            lo: Q::new(self.a, den.clone()),
-            hi: Q::new(self.b, den),
+            lo: crate::number::dyadic(self.a, self.k as usize),
+            hi: crate::number::dyadic(self.b, self.k as usize),
         }
     }
 }

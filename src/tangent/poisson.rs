@@ -1094,7 +1094,7 @@ fn round_relative(t: &Q, bits: u32) -> Q {
         return t.clone();
     }
     let m = (t.numer() << e as usize).div_floor(t.denom());
-    Q::new(m, BigInt::one() << e as usize)
+    crate::number::dyadic(m, e as usize)
 }
 
 /// The sign of S at every real critical point with an enclosure of the
