@@ -273,7 +273,8 @@ impl RealAlg {
         if e >= 0 {
             Q::from_integer(BigInt::one() << e as usize)
         } else {
-            Q::new(BigInt::one(), BigInt::one() << (-e) as usize)
+            // 1/2^k is in lowest terms
+            Q::new_raw(BigInt::one(), BigInt::one() << (-e) as usize)
         }
     }
 
