@@ -48,10 +48,19 @@ pub fn qi(n: i64) -> Q {
 pub fn fmt_q(x: &Q) -> String {
     // printing is quadratic in the size of the number
     crate::budget::check_for(x.numer().bits() + x.denom().bits());
+    use num_traits::ToPrimitive;
+    // word-size parts print without num-bigint's general conversion
+    let part = |z: &Z| match z.to_i64() {
+        Some(v) => v.to_string(),
+        None => z.to_str_radix(10),
+    };
     if x.denom().is_one() {
-        x.numer().to_string()
+        part(x.numer())
     } else {
-        format!("{}/{}", x.numer(), x.denom())
+        let mut s = part(x.numer());
+        s.push('/');
+        s.push_str(&part(x.denom()));
+        s
     }
 }
 

@@ -77,6 +77,10 @@ fn digits_to_int(d: &[u8]) -> BigInt {
     if d.is_empty() {
         return BigInt::zero();
     }
+    if d.len() <= 19 {
+        // fits in a u64 (the bytes are ASCII digits): no string conversion
+        return BigInt::from(d.iter().fold(0u64, |v, &c| v * 10 + u64::from(c - b'0')));
+    }
     // the bytes are ASCII digits, checked by the caller
     let s = std::str::from_utf8(d).unwrap_or("0");
     BigInt::from_str_radix(s, 10).unwrap_or_default()
@@ -286,7 +290,9 @@ fn scan_decimal(s: &[u8], pos: usize) -> Result<(Q, usize), NumberError> {
     let mantissa = digits_to_int(&all);
     let e = exp - frac_part.len() as i64;
     let ten = BigInt::from(10);
-    let value = if e >= 0 {
+    let value = if e == 0 {
+        Q::from_integer(mantissa)
+    } else if e > 0 {
         Q::from_integer(mantissa * num_traits::pow(ten, e as usize))
     } else {
         reduce_by_power_of_ten(mantissa, (-e) as usize)
