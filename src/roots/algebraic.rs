@@ -679,7 +679,7 @@ impl RealAlg {
                 return a;
             }
             // the grid point just above lo lies in (lo, hi]
-            let g = crate::number::dyadic(&a + BigInt::one(), k as usize);
+            let g = crate::number::dyadic(&a + BigInt::one(), k);
             if &g < hi && poly.sign_at(&g) == 0 {
                 return a + BigInt::one();
             }
