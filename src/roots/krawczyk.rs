@@ -656,7 +656,7 @@ pub(crate) mod tests {
                 } else {
                     &wide[i].lo
                 };
-                crate::number::dyadic(v.clone(), k as usize)
+                crate::number::dyadic(v.clone(), k)
             });
             let mut full: [Q; crate::poly::mpoly::NVARS] = std::array::from_fn(|_| Q::zero());
             full[..3].clone_from_slice(&pt);
