@@ -4,7 +4,8 @@
 //! `{"id", "ok": false, "error": {"kind", "message"}}` — never a panic,
 //! and never a run past its compute budget of 0.5 s by more than 1 s (an
 //! exhausted budget is an answer; a line's own `time_limit` can only make
-//! it shorter).
+//! it shorter); and the text answer (`answer_line_text_within`, what the
+//! CLI writes) is the `Value` answer's bytes.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 use quadsect::Budget;
@@ -38,6 +39,13 @@ fuzz_target!(|data: &[u8]| {
         took.min(cpu) <= LIMIT + SLACK,
         "took {took:?} ({cpu:?} of CPU time) with a budget of {LIMIT:?}"
     );
+    // the text path (what the CLI, Python and C write) gives the same bytes,
+    // unless one of the two runs ran out of its budget and the other not
+    let text = quadsect::batch::answer_line_text_within(&line, &budget);
+    let printed = v.to_string();
+    if !printed.contains(r#""kind":"budget""#) && !text.contains(r#""kind":"budget""#) {
+        assert_eq!(text, printed, "text and Value answers differ");
+    }
     let obj = v.as_object().expect("the answer is a JSON object");
     assert!(obj.contains_key("id"), "{v}");
     match obj.get("ok").and_then(|b| b.as_bool()) {

@@ -44,6 +44,13 @@ fn answer_line(line: &str) -> Value {
         took <= LIMIT + SLACK,
         "{line:?} took {took:?} with a budget of {LIMIT:?}"
     );
+    // the text path (what the CLI, Python and C write) gives the same bytes,
+    // unless one of the two runs ran out of its budget and the other not
+    let text = crate::batch::answer_line_text_within(line, &budget);
+    let printed = v.to_string();
+    if !printed.contains(r#""kind":"budget""#) && !text.contains(r#""kind":"budget""#) {
+        assert_eq!(text, printed, "{line:?}: text and Value answers differ");
+    }
     let obj = v.as_object().expect("the answer is a JSON object");
     assert!(obj.contains_key("id"), "{v}");
     match obj.get("ok").and_then(|b| b.as_bool()) {
