@@ -1,6 +1,7 @@
 //! JSON of the kernel operations (`roots`, `resultant`) and of real
 //! algebraic numbers.
 
+use super::write::{Json, W, wobj};
 use crate::kernel::{ResultantReport, RootsReport};
 use crate::number::fmt_q;
 use crate::roots::RealAlg;
@@ -9,8 +10,18 @@ use serde_json::{Value, json};
 /// A real algebraic number as the contract's ALG object:
 /// `{"poly", "interval": [lo, hi], "approx"}`.
 pub fn alg_json(a: &RealAlg) -> Value {
-    let (poly, interval, approx) = a.describe();
-    json!({"poly": poly, "interval": interval, "approx": approx})
+    let mut out = Vec::new();
+    alg_w(a).write(&mut out);
+    super::write::to_value(&out)
+}
+
+/// [`alg_json`] written into JSON text (the one place the ALG object's
+/// fields are spelled).
+pub(crate) fn alg_w(a: &RealAlg) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| {
+        let (poly, interval, approx) = a.describe();
+        wobj!(out; "poly" => poly, "interval" => interval, "approx" => approx)
+    })
 }
 
 /// `quadsect roots --json`.

@@ -147,10 +147,6 @@ fn branch_w(b: &crate::natural::CurveBranch) -> impl Json + '_ {
     })
 }
 
-fn q3(v: &[crate::number::Q; 3]) -> [String; 3] {
-    [fmt_q(&v[0]), fmt_q(&v[1]), fmt_q(&v[2])]
-}
-
 fn deciders_w(d: &PlanarDeciders) -> impl Json + '_ {
     W(move |out: &mut Vec<u8>| {
         wobj! {out;
@@ -159,8 +155,8 @@ fn deciders_w(d: &PlanarDeciders) -> impl Json + '_ {
             "lemma81_factors" => d.lemma81,
             "pencil_rank2_member" => d.pencil,
             "projection_conic" => d.projection.as_str(),
-            "frame" => obj_w! {"origin" => q3(&d.frame[0]), "e1" => q3(&d.frame[1]), "e2" => q3(&d.frame[2])},
-            "x_point" => d.x_point.as_ref().map(q3),
+            "frame" => obj_w! {"origin" => v3(&d.frame[0]), "e1" => v3(&d.frame[1]), "e2" => v3(&d.frame[2])},
+            "x_point" => d.x_point.as_ref().map(v3),
             "heights2_at_x" => d.heights_at_x.as_ref().map(|(a, b)| [fmt_q(a), fmt_q(b)]),
             "squared_heights_A_D" => d.parallelogram.as_ref().map(|v| arr(v.iter().map(exact_w))),
             "skeletal_lines" => arr(d.skeletal.iter().map(|ls| arr(ls.iter().map(|(p, w)| W(move |o: &mut Vec<u8>| wobj!(o; "point" => epoint_w(p), "direction" => epoint_w(w))))))),
@@ -276,10 +272,7 @@ fn qsqrt_w(x: &QSqrt) -> impl Json + '_ {
 fn exact_w(x: &Exact) -> impl Json + '_ {
     W(move |out: &mut Vec<u8>| match x {
         Exact::Quad(x) => qsqrt_w(x).write(out),
-        Exact::Alg(a) => {
-            let (poly, interval, approx) = a.describe();
-            wobj!(out; "poly" => poly, "interval" => interval, "approx" => approx)
-        }
+        Exact::Alg(a) => super::kernel::alg_w(a).write(out),
     })
 }
 
@@ -301,6 +294,7 @@ fn natural_input_w(q: &Natural) -> impl Json + '_ {
     })
 }
 
+/// A vector's three exact coordinates as strings.
 fn v3(p: &V3) -> [String; 3] {
     [fmt_q(&p[0]), fmt_q(&p[1]), fmt_q(&p[2])]
 }

@@ -98,7 +98,7 @@ macro_rules! json_via_serde {
     )*};
 }
 
-json_via_serde!(str, String, f64, bool, usize, u32, i32, Value);
+json_via_serde!(str, String, f64, bool, usize, u32, i32);
 
 /// An array of the items an iterator yields (it is cloned to be walked).
 pub(crate) fn arr<I>(items: I) -> W<impl Fn(&mut Vec<u8>)>
