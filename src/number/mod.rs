@@ -305,13 +305,32 @@ fn add_signed(a: &Q, b: &Q, negate: bool) -> Q {
 pub fn gcd_z(a: &Z, b: &Z) -> Z {
     use num_bigint::BigUint;
     use num_traits::ToPrimitive;
-    let (mut x, mut y): (BigUint, BigUint) = (a.magnitude().clone(), b.magnitude().clone());
+    if a.is_zero() {
+        return Z::from(b.magnitude().clone());
+    }
+    if b.is_zero() {
+        return Z::from(a.magnitude().clone());
+    }
+    if let (Some(u), Some(v)) = (a.magnitude().to_u64(), b.magnitude().to_u64()) {
+        return Z::from(gcd_u64(u, v));
+    }
+    // the twos apart (gcd(2^i·x, 2^j·y) = 2^min(i,j)·gcd(x, y) for odd x,
+    // y): the copies are shifted instead of cloned, so this is free, and
+    // the denominators of cleared doubles (powers of two times a small
+    // factor) shrink to words
+    let (ta, tb) = (
+        a.trailing_zeros().unwrap_or(0),
+        b.trailing_zeros().unwrap_or(0),
+    );
+    let (mut x, mut y): (BigUint, BigUint) = (a.magnitude() >> ta, b.magnitude() >> tb);
+    let t = ta.min(tb);
+    let twos = |g: BigUint| -> Z { Z::from(if t == 0 { g } else { g << t }) };
     loop {
         if y.is_zero() {
-            return Z::from(x);
+            return twos(x);
         }
         if x.is_zero() {
-            return Z::from(y);
+            return twos(y);
         }
         if let Some(v) = y.to_u64() {
             let u = if let Some(u) = x.to_u64() {
@@ -319,11 +338,11 @@ pub fn gcd_z(a: &Z, b: &Z) -> Z {
             } else {
                 (&x % v).to_u64().unwrap_or(0)
             };
-            return Z::from(gcd_u64(u, v));
+            return twos(BigUint::from(gcd_u64(u, v)));
         }
         if let Some(u) = x.to_u64() {
             let v = (&y % u).to_u64().unwrap_or(0);
-            return Z::from(gcd_u64(u, v));
+            return twos(BigUint::from(gcd_u64(u, v)));
         }
         if x < y {
             std::mem::swap(&mut x, &mut y);
@@ -513,6 +532,8 @@ mod tests {
             a in proptest::collection::vec(proptest::num::u64::ANY, 1..6),
             b in proptest::collection::vec(proptest::num::u64::ANY, 1..6),
             g in proptest::collection::vec(proptest::num::u64::ANY, 0..3),
+            s1 in 0usize..200,
+            s2 in 0usize..200,
         ) {
             let make = |v: &[u64]| -> BigInt {
                 v.iter().fold(BigInt::zero(), |acc, &w| (acc << 64usize) + w)
@@ -523,6 +544,10 @@ mod tests {
             // near-equal operands: long runs of quotient 1
             let z = &x + &g;
             proptest::prop_assert_eq!(gcd_z(&x, &z), x.gcd(&z));
+            // powers of two on either side (the twos are taken apart)
+            let (xs, ys) = (&x << s1, &y << s2);
+            proptest::prop_assert_eq!(gcd_z(&xs, &ys), xs.gcd(&ys));
+            proptest::prop_assert_eq!(gcd_z(&xs, &(&g << s2)), xs.gcd(&(&g << s2)));
         }
 
         /// `q_new`, `q_mul`, `q_add` give num-rational's canonical values

@@ -295,7 +295,21 @@ impl QSqrt {
                 // unless it cancels more than a few bits; under
                 // cancellation a + b√d = (a² − b²d)/(a − b√d)
                 Some(rb) => a.add_by_conjugate(&rb, 47, || {
-                    XBall::from_q(&(&self.a * &self.a - &self.b * &self.b * &self.d))
+                    // a² − b²d over the common denominator ad²·bd²·dd, in
+                    // integers, then in lowest terms by one gcd (as small
+                    // as the rational: its ball is as tight)
+                    let (an, ad) = (self.a.numer(), self.a.denom());
+                    let (bn, bd) = (self.b.numer(), self.b.denom());
+                    let (dn, dd) = (self.d.numer(), self.d.denom());
+                    let (ad2, bd2) = (ad * ad, bd * bd);
+                    let num = an * an * &bd2 * dd - bn * bn * dn * &ad2;
+                    let den = ad2 * bd2 * dd;
+                    let g = super::gcd_z(&num, &den);
+                    if g.is_one() {
+                        XBall::from_fraction(&num, &den)
+                    } else {
+                        XBall::from_fraction(&(num / &g), &(den / g))
+                    }
                 }),
                 // √d of a positive d always has a ball: not reached, and
                 // an infinite bound is still true

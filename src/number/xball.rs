@@ -58,20 +58,27 @@ impl XBall {
 
     /// A ball holding the rational `x`.
     pub fn from_q(x: &Q) -> XBall {
-        if x.is_zero() {
+        XBall::from_fraction(x.numer(), x.denom())
+    }
+
+    /// A ball holding `n/d` for integers `n` and `d > 0` (not necessarily
+    /// in lowest terms: no gcd is taken).
+    pub fn from_fraction(numer: &Z, denom: &Z) -> XBall {
+        debug_assert!(denom.sign() == num_bigint::Sign::Plus);
+        if numer.is_zero() {
             return XBall::zero();
         }
-        let (n, en, xn) = top(x.numer());
-        let (d, ed, xd) = top(x.denom());
+        let (n, en, xn) = top(numer);
+        let (d, ed, xd) = top(denom);
         let m = n / d;
-        let m = if x.numer().sign() == num_bigint::Sign::Minus {
+        let m = if numer.sign() == num_bigint::Sign::Minus {
             -m
         } else {
             m
         };
         // a truncation and a rounding per inexact part (2u each), a division
         // (u; none by a power of two)
-        let pow2_den = x.denom().bits() - 1 == x.denom().trailing_zeros().unwrap_or(0);
+        let pow2_den = denom.bits() - 1 == denom.trailing_zeros().unwrap_or(0);
         let units = 2 * u32::from(!xn) + 2 * u32::from(!xd) + u32::from(!pow2_den);
         XBall {
             m,
