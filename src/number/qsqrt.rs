@@ -365,7 +365,15 @@ impl QSqrt {
         let r = dn * dd;
         let n2sq_r = bn * bn * ad * ad * &r;
         let den = ad * bd * dd;
-        let mut k = 4 * digits + 64;
+        // the first k for a relative precision of 2^-p, p ≈ 3.33·digits +
+        // 16, when nothing cancels: with |x·D| ≈ 2^b (b: the larger of the
+        // two terms' bits) m is ≈ 2^(b+k) and e ≤ 2^(max(t,0)+1) + 1 with
+        // t ≈ b − k − 8, so the relative error is below 2^-(2k+6) when
+        // t > 0 and below 2^-(b+k−1) when t = 0; cancellation (or a value
+        // near a rounding boundary) fails the test below and doubles k
+        let p = (digits * 10 / 3 + 16) as i64;
+        let b = (n1.bits() as i64).max(n2sq_r.bits() as i64 / 2);
+        let mut k = ((p - 6 + 1) / 2).max(p - b + 1).max(8) as usize;
         loop {
             let t = ((n2sq_r.bits() as i64 - 2 * k as i64 - 16) / 2).max(0) as usize;
             let root = if t == 0 {
@@ -583,6 +591,63 @@ impl std::hash::Hash for QSqrt {
 mod tests {
     use super::*;
     use crate::number::{q, qi};
+
+    /// The unit of the last digit of a printed decimal (`d.ddd…e±x` or
+    /// plain), as a rational.
+    fn last_digit_unit(printed: &str) -> Q {
+        let (mant, exp) = match printed.split_once('e') {
+            Some((m, e)) => (m, e.parse::<i64>().unwrap()),
+            None => (printed, 0),
+        };
+        let frac = mant.split_once('.').map_or(0, |(_, f)| f.len()) as i64;
+        let e = exp - frac;
+        let ten = BigInt::from(10);
+        if e >= 0 {
+            Q::from_integer(num_traits::pow(ten, e as usize))
+        } else {
+            Q::new(BigInt::one(), num_traits::pow(ten, (-e) as usize))
+        }
+    }
+
+    proptest::proptest! {
+        /// `approx(20)` of an irrational a + b√d is its correct rounding:
+        /// within half a unit of the last printed digit of the exact value
+        /// (decided exactly, in Q(√d)), with 20 significant digits at most (trailing zeros dropped); also under
+        /// heavy cancellation (a = −b·⌊√d·10^s⌋/10^s + ε).
+        #[test]
+        fn approx_of_quadratic_irrationals_is_correctly_rounded(
+            bn in -10_000i64..10_000,
+            bd in 1i64..1000,
+            d in 2i64..100_000,
+            s in 0u32..40,
+            eps in -5i64..5,
+            big in 0u32..3,
+        ) {
+            let b = Q::new(BigInt::from(bn), BigInt::from(bd)) * Q::from_integer(num_traits::pow(BigInt::from(1_000_003), big as usize));
+            let dq = Q::from_integer(BigInt::from(d));
+            proptest::prop_assume!(!b.is_zero() && super::super::exact_sqrt_q(&dq).is_none());
+            // a ≈ −b√d to s digits, off by eps units of 10^-s
+            let scale = num_traits::pow(BigInt::from(10), s as usize);
+            let root = (BigInt::from(d) * &scale * &scale).sqrt();
+            let a = -(&b * Q::new(root + eps, scale.clone()));
+            let x = QSqrt::new(a.clone(), b.clone(), dq.clone());
+            let printed = x.approx(20);
+            let p = super::super::parse::parse_rational(&printed).unwrap();
+            let half = last_digit_unit(&printed) / Q::from_integer(BigInt::from(2));
+            // x − (p − half) > 0 and x − (p + half) < 0
+            let lo = QSqrt::new(&a - (&p - &half), b.clone(), dq.clone());
+            let hi = QSqrt::new(&a - (&p + &half), b.clone(), dq.clone());
+            proptest::prop_assert!(lo.signum() > 0 && hi.signum() < 0, "{printed} for {a} + {b}√{d}");
+            let digits = printed
+                .split('e')
+                .next()
+                .unwrap()
+                .trim_start_matches('-')
+                .replace('.', "");
+            // (trailing zeros are not printed)
+            proptest::prop_assert!(digits.trim_start_matches('0').len() <= 20, "{}", printed);
+        }
+    }
 
     #[test]
     fn sign_and_compare() {

@@ -120,11 +120,7 @@ fn float_proposal(p: &ZPoly, br: &DyadicBracket, s_lo: i32, e_min: i64) -> Optio
             let drop = (b - 64).max(0);
             let lead = (x >> drop as usize).to_f64().unwrap_or(0.0);
             let ex = drop - shift;
-            if ex < -1000 {
-                0.0
-            } else {
-                lead * pow2f(ex)
-            }
+            if ex < -1000 { 0.0 } else { lead * pow2f(ex) }
         })
         .collect();
     let dy = |m: &BigInt| -> Option<f64> {
