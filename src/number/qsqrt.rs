@@ -94,11 +94,7 @@ impl QSqrt {
             return RealAlg::rational(self.a.clone());
         }
         // t² − 2a t + (a² − b²d), cleared of denominators
-        let c = [
-            &self.a * &self.a - &self.b * &self.b * &self.d,
-            -(&self.a + &self.a),
-            Q::one(),
-        ];
+        let c = [self.norm(), -(&self.a + &self.a), Q::one()];
         let l = super::denom_lcm(c.iter());
         let z: Vec<BigInt> = c.iter().map(|q| q.numer() * (&l / q.denom())).collect();
         let roots = RealAlg::roots_of(&crate::poly::ZPoly::new(z));
@@ -224,9 +220,15 @@ impl QSqrt {
         QSqrt::from_parts(-&self.a, -&self.b, self.d.clone())
     }
 
-    /// Norm `a² - b²d` (a rational).
+    /// Norm `a² - b²d` (a rational): over the common denominator
+    /// `ad²·bd²·dd` in integers, then in lowest terms by one gcd (not a
+    /// gcd per rational operation).
     pub(crate) fn norm(&self) -> Q {
-        &self.a * &self.a - &self.b * &self.b * &self.d
+        let (an, ad) = (self.a.numer(), self.a.denom());
+        let (bn, bd) = (self.b.numer(), self.b.denom());
+        let (dn, dd) = (self.d.numer(), self.d.denom());
+        let (ad2, bd2) = (ad * ad, bd * bd);
+        super::q_new(an * an * &bd2 * dd - bn * bn * dn * &ad2, ad2 * bd2 * dd)
     }
 
     /// Inverse; `None` for zero.
@@ -294,23 +296,7 @@ impl QSqrt {
                 // conversions of a, b add a few 2^-53, so the sum passes
                 // unless it cancels more than a few bits; under
                 // cancellation a + b√d = (a² − b²d)/(a − b√d)
-                Some(rb) => a.add_by_conjugate(&rb, 47, || {
-                    // a² − b²d over the common denominator ad²·bd²·dd, in
-                    // integers, then in lowest terms by one gcd (as small
-                    // as the rational: its ball is as tight)
-                    let (an, ad) = (self.a.numer(), self.a.denom());
-                    let (bn, bd) = (self.b.numer(), self.b.denom());
-                    let (dn, dd) = (self.d.numer(), self.d.denom());
-                    let (ad2, bd2) = (ad * ad, bd * bd);
-                    let num = an * an * &bd2 * dd - bn * bn * dn * &ad2;
-                    let den = ad2 * bd2 * dd;
-                    let g = super::gcd_z(&num, &den);
-                    if g.is_one() {
-                        XBall::from_fraction(&num, &den)
-                    } else {
-                        XBall::from_fraction(&(num / &g), &(den / g))
-                    }
-                }),
+                Some(rb) => a.add_by_conjugate(&rb, 47, || XBall::from_q(&self.norm())),
                 // √d of a positive d always has a ball: not reached, and
                 // an infinite bound is still true
                 None => return (0.0, f64::INFINITY),

@@ -28,7 +28,7 @@ pub struct XBall {
 }
 
 /// `2^k` for `|k| ≤ 1000` (exact).
-fn pow2(k: i64) -> f64 {
+pub(crate) fn pow2(k: i64) -> f64 {
     debug_assert!(k.abs() <= 1000);
     f64::from_bits(((1023 + k) as u64) << 52)
 }
@@ -36,7 +36,7 @@ fn pow2(k: i64) -> f64 {
 /// The leading 64 bits of `|z|` as a double (truncated, then rounded:
 /// relative error below `2^-52`), the exponent of the scaling, and whether
 /// it is exact (`z` has at most 53 significant bits).
-fn top(z: &Z) -> (f64, i64, bool) {
+pub(crate) fn top(z: &Z) -> (f64, i64, bool) {
     let bits = z.bits() as i64;
     let shift = (bits - 64).max(0);
     let t = (z.magnitude() >> shift as usize)
@@ -58,27 +58,20 @@ impl XBall {
 
     /// A ball holding the rational `x`.
     pub fn from_q(x: &Q) -> XBall {
-        XBall::from_fraction(x.numer(), x.denom())
-    }
-
-    /// A ball holding `n/d` for integers `n` and `d > 0` (not necessarily
-    /// in lowest terms: no gcd is taken).
-    pub fn from_fraction(numer: &Z, denom: &Z) -> XBall {
-        debug_assert!(denom.sign() == num_bigint::Sign::Plus);
-        if numer.is_zero() {
+        if x.is_zero() {
             return XBall::zero();
         }
-        let (n, en, xn) = top(numer);
-        let (d, ed, xd) = top(denom);
+        let (n, en, xn) = top(x.numer());
+        let (d, ed, xd) = top(x.denom());
         let m = n / d;
-        let m = if numer.sign() == num_bigint::Sign::Minus {
+        let m = if x.numer().sign() == num_bigint::Sign::Minus {
             -m
         } else {
             m
         };
         // a truncation and a rounding per inexact part (2u each), a division
         // (u; none by a power of two)
-        let pow2_den = denom.bits() - 1 == denom.trailing_zeros().unwrap_or(0);
+        let pow2_den = x.denom().bits() - 1 == x.denom().trailing_zeros().unwrap_or(0);
         let units = 2 * u32::from(!xn) + 2 * u32::from(!xd) + u32::from(!pow2_den);
         XBall {
             m,

@@ -87,12 +87,6 @@ fn newton_values(
     (sign, v, dv)
 }
 
-/// `2^k` exactly, for `|k| ≤ 1000`.
-fn pow2f(k: i64) -> f64 {
-    debug_assert!(k.abs() <= 1000);
-    f64::from_bits(((1023 + k) as u64) << 52)
-}
-
 /// A proposal for the root of `p` in the bracket `br` (`s_lo`: the sign
 /// of p at its lower end): `(t, e)` with the root expected in
 /// `[(t − 1)·2^e, (t + 1)·2^e]`, from Newton's iteration in doubles on the
@@ -103,36 +97,40 @@ fn pow2f(k: i64) -> f64 {
 /// doubles cannot represent the problem (roots or scaled values outside
 /// ±2^200, a zero derivative) or the iteration does not settle.
 fn float_proposal(p: &ZPoly, br: &DyadicBracket, s_lo: i32, e_min: i64) -> Option<(BigInt, i64)> {
-    use num_traits::ToPrimitive;
+    use crate::number::xball::{pow2, top};
+    use num_traits::Signed;
     let c = p.coeffs();
-    let top = c.iter().map(|x| x.bits()).max()? as i64;
+    // the leading 64 bits of z as a double, and their power of two
+    let lead = |z: &BigInt| {
+        let (t, sh, _) = top(z);
+        (if z.is_negative() { -t } else { t }, sh)
+    };
     // coefficients scaled to at most 2^400 (tiny ones flush to 0: a
     // proposal need not be exact)
-    let shift = top - 400;
+    let shift = c.iter().map(|x| x.bits()).max()? as i64 - 400;
     let cf: Vec<f64> = c
         .iter()
         .map(|x| {
-            let b = x.bits() as i64;
-            if b == 0 {
+            if x.is_zero() {
                 return 0.0;
             }
-            // the leading 64 bits, then the power of two
-            let drop = (b - 64).max(0);
-            let lead = (x >> drop as usize).to_f64().unwrap_or(0.0);
-            let ex = drop - shift;
-            if ex < -1000 { 0.0 } else { lead * pow2f(ex) }
+            let (v, sh) = lead(x);
+            if sh - shift < -1000 {
+                0.0
+            } else {
+                v * pow2(sh - shift)
+            }
         })
         .collect();
     let dy = |m: &BigInt| -> Option<f64> {
         if m.is_zero() {
             return Some(0.0);
         }
-        let b = m.bits() as i64 - br.k as i64;
-        if b.abs() > 200 {
+        if (m.bits() as i64 - br.k as i64).abs() > 200 {
             return None;
         }
-        let drop = (m.bits() as i64 - 64).max(0);
-        Some((m >> drop as usize).to_f64()? * pow2f(drop - br.k as i64))
+        let (v, sh) = lead(m);
+        Some(v * pow2(sh - br.k as i64))
     };
     let (mut lo, mut hi) = (dy(&br.a)?, dy(&br.b)?);
     let eval = |x: f64| -> (f64, f64) {
@@ -180,11 +178,65 @@ fn float_proposal(p: &ZPoly, br: &DyadicBracket, s_lo: i32, e_min: i64) -> Optio
     if !(-1000..=1000).contains(&e) {
         return None;
     }
-    let t = (x * pow2f(-e)).round();
+    let t = (x * pow2(-e)).round();
     if !t.is_finite() || t.abs() > 2f64.powi(62) {
         return None;
     }
     Some((BigInt::from(t as i64), e))
+}
+
+/// What the exact signs say of a candidate bracket.
+enum Candidate {
+    /// An end of the candidate is the root.
+    Root(Q),
+    /// The root lies in this narrower bracket.
+    Narrower(DyadicBracket),
+    /// Not confirmed (or not inside the bracket): nothing learnt.
+    Rejected,
+}
+
+/// Checks the candidate `[(t − 1)·2^e, (t + 1)·2^e]` against the bracket
+/// `br` (whose lower end has the sign `s_lo`) by the exact signs of p at
+/// the candidate's ends, both over the common power of two `2^kc`.  With
+/// `clamp`, an end outside `br` is replaced by `br`'s own (its sign is
+/// known), so one end inside suffices; without, both must lie inside.
+fn check_candidate(
+    signs: &DyadicSigner,
+    br: &DyadicBracket,
+    s_lo: i32,
+    t: &BigInt,
+    e: i64,
+    clamp: bool,
+) -> Candidate {
+    let kk = (-e).max(0) as u64;
+    let kc = br.k.max(kk);
+    let up = e.max(0) as usize + (kc - kk) as usize;
+    let (tl, th) = ((t - 1) << up, (t + 1) << up);
+    let (a, b) = (&br.a << (kc - br.k) as usize, &br.b << (kc - br.k) as usize);
+    let (lo_in, hi_in) = (tl > a, th < b);
+    let inside = if clamp {
+        (lo_in || hi_in) && tl < b && th > a
+    } else {
+        lo_in && hi_in
+    };
+    if !inside {
+        return Candidate::Rejected;
+    }
+    let sl = if lo_in { signs.sign_at(&tl, kc) } else { s_lo };
+    let sr = if hi_in { signs.sign_at(&th, kc) } else { -s_lo };
+    if sl == 0 || sr == 0 {
+        let root = if sl == 0 { tl } else { th };
+        return Candidate::Root(crate::number::dyadic(root, kc as usize));
+    }
+    if sl == s_lo && sr == -s_lo {
+        Candidate::Narrower(DyadicBracket {
+            a: if lo_in { tl } else { a },
+            b: if hi_in { th } else { b },
+            k: kc,
+        })
+    } else {
+        Candidate::Rejected
+    }
 }
 
 /// Refines the bracket `br` around a simple root of `p` (`s_lo` = sign of p
@@ -229,24 +281,13 @@ pub(crate) fn refine_dyadic_newton(
     // two exact signs instead of a round of exact evaluations per doubling
     // of the bits; a proposal that fails its check costs those two signs
     if let Some((t, e)) = float_proposal(p, &br, s_lo, e_min) {
-        let kc = br.k.max((-e).max(0) as u64);
-        let up = e.max(0) as usize + (kc - (-e).max(0) as u64) as usize;
-        let (tl, th) = ((&t - 1) << up, (&t + 1) << up);
-        let (a, b) = (&br.a << (kc - br.k) as usize, &br.b << (kc - br.k) as usize);
-        if tl > a && th < b {
-            let (sl, sr) = (signs.sign_at(&tl, kc), signs.sign_at(&th, kc));
-            if sl == 0 || sr == 0 {
-                let root = if sl == 0 { tl } else { th };
-                return exact(iv, crate::number::dyadic(root, kc as usize));
-            }
-            if sl == s_lo && sr == -s_lo {
-                br = DyadicBracket {
-                    a: tl,
-                    b: th,
-                    k: kc,
-                };
+        match check_candidate(signs, &br, s_lo, &t, e, false) {
+            Candidate::Root(r) => return exact(iv, r),
+            Candidate::Narrower(nb) => {
+                br = nb;
                 gain = gain.max(48);
             }
+            Candidate::Rejected => {}
         }
     }
     while (&br.b - &br.a) * wd > (wn << br.k as usize) {
@@ -285,36 +326,18 @@ pub(crate) fn refine_dyadic_newton(
         } else {
             (num << (-sh) as usize).div_floor(&dv)
         };
-        // the candidate [(t−1)·2^e, (t+1)·2^e] as a dyadic bracket over
-        // 2^kc, clamped to the current one (whose ends' signs are known)
-        let kk = (-e).max(0) as u64;
-        let kc = br.k.max(kk);
-        let up = e.max(0) as usize + (kc - kk) as usize;
-        let (tl, th) = ((&t - 1) << up, (&t + 1) << up);
-        let (a, b) = (&br.a << (kc - br.k) as usize, &br.b << (kc - br.k) as usize);
-        let (lo_in, hi_in) = (tl > a, th < b);
-        let ok = (lo_in || hi_in) && tl < b && th > a && {
-            let sl = if lo_in { signs.sign_at(&tl, kc) } else { s_lo };
-            let sr = if hi_in { signs.sign_at(&th, kc) } else { -s_lo };
-            if sl == 0 || sr == 0 {
-                let root = if sl == 0 { tl.clone() } else { th.clone() };
-                return exact(iv, crate::number::dyadic(root, kc as usize));
+        match check_candidate(signs, &br, s_lo, &t, e, true) {
+            Candidate::Root(r) => return exact(iv, r),
+            Candidate::Narrower(nb) => {
+                br = nb;
+                gain = (gain * 2).min(1 << 20);
+                backoff = 1;
             }
-            sl == s_lo && sr == -s_lo
-        };
-        let (tl, th) = (if lo_in { tl } else { a }, if hi_in { th } else { b });
-        if ok {
-            br = DyadicBracket {
-                a: tl,
-                b: th,
-                k: kc,
-            };
-            gain = (gain * 2).min(1 << 20);
-            backoff = 1;
-        } else {
-            gain = (gain / 2).max(2);
-            wait = backoff;
-            backoff = (backoff * 2).min(8);
+            Candidate::Rejected => {
+                gain = (gain / 2).max(2);
+                wait = backoff;
+                backoff = (backoff * 2).min(8);
+            }
         }
     }
     *iv = br.interval();

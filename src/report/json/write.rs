@@ -145,18 +145,11 @@ impl<'a> Obj<'a> {
 /// each value is anything [`Json`].  Keys are literals (not escaped).
 macro_rules! wobj {
     ($out:expr; $($k:literal => $v:expr),* $(,)?) => {{
-        let out: &mut Vec<u8> = $out;
-        out.push(b'{');
-        let mut _first = true;
+        let mut _o = $crate::report::json::write::Obj::new($out);
         $(
-            if !_first {
-                out.push(b',');
-            }
-            _first = false;
-            out.extend_from_slice(concat!("\"", $k, "\":").as_bytes());
-            $crate::report::json::write::Json::write(&$v, out);
+            _o.field($k, &$v);
         )*
-        out.push(b'}');
+        _o.end();
     }};
 }
 
