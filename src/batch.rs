@@ -99,20 +99,75 @@ pub fn answer_line_within(line: &str, budget: &Budget) -> Value {
 /// assert_eq!(text, quadsect::batch::answer_line_within(line, &Budget::default()).to_string());
 /// ```
 pub fn answer_line_text_within(line: &str, budget: &Budget) -> String {
+    answer_text(line, budget, false)
+}
+
+/// [`answer_line_text_within`] with the request line itself in the answer
+/// (`quadsect batch --echo`): `{"id", "request", "ok", …}`, where
+/// `request` is the input line, verbatim, as a JSON string — so that an
+/// answer can be checked against the input it answers without the input
+/// file (the checker `quadsect_check` rebuilds the surfaces from it).
+///
+/// ```
+/// use quadsect::budget::Budget;
+/// let line = r#"{"id":1,"op":"roots","poly":"x^2 - 2"}"#;
+/// let text = quadsect::batch::answer_line_text_echoed(line, &Budget::default());
+/// let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+/// assert_eq!(v["request"], line);
+/// assert!(text.starts_with(r#"{"id":1,"request":"#));
+/// let bad = quadsect::batch::answer_line_text_echoed("oops", &Budget::default());
+/// let v: serde_json::Value = serde_json::from_str(&bad).unwrap();
+/// assert_eq!((v["request"].as_str(), v["ok"].as_bool()), (Some("oops"), Some(false)));
+/// ```
+pub fn answer_line_text_echoed(line: &str, budget: &Budget) -> String {
+    answer_text(line, budget, true)
+}
+
+/// The answer text, with `"request"` (the line as a JSON string) after the
+/// `id` when `echo`.
+fn answer_text(line: &str, budget: &Budget, echo: bool) -> String {
     let (id, result) = answer_with(line, budget, run_op_text_within);
     match result {
         Ok(text) => {
             let id = id.to_string();
-            let mut out = String::with_capacity(text.len() + id.len() + 32);
+            let request = echo.then(|| Value::String(line.to_string()).to_string());
+            let extra = request.as_ref().map_or(0, |r| r.len() + 12);
+            let mut out = String::with_capacity(text.len() + id.len() + extra + 32);
             out.push_str("{\"id\":");
             out.push_str(&id);
+            if let Some(r) = &request {
+                out.push_str(",\"request\":");
+                out.push_str(r);
+            }
             out.push_str(",\"ok\":true,\"result\":");
             out.push_str(&text);
             out.push('}');
             out
         }
-        Err(e) => error_line(id, &e).to_string(),
+        Err(e) => {
+            let mut v = error_line(id, &e);
+            if echo {
+                v = with_request(v, line);
+            }
+            v.to_string()
+        }
     }
+}
+
+/// `answer` with `"request": line` inserted after its `id`.
+fn with_request(answer: Value, line: &str) -> Value {
+    let Value::Object(m) = answer else {
+        return answer;
+    };
+    let mut out = Map::new();
+    for (k, v) in m {
+        let is_id = k == "id";
+        out.insert(k, v);
+        if is_id {
+            out.insert("request".into(), Value::String(line.to_string()));
+        }
+    }
+    Value::Object(out)
 }
 
 /// [`run_op_within`] as compact JSON text.
@@ -193,6 +248,9 @@ pub struct BatchOptions {
     /// The input's size in bytes when known (a regular file): the progress
     /// display then shows a bar and the time left.
     pub input_bytes: Option<u64>,
+    /// Put each request line, verbatim, into its answer as `"request"`
+    /// ([`answer_line_text_echoed`]; `quadsect batch --echo`).
+    pub echo: bool,
 }
 
 impl Default for BatchOptions {
@@ -206,6 +264,7 @@ impl Default for BatchOptions {
             budget: Budget::default(),
             progress: false,
             input_bytes: None,
+            echo: false,
         }
     }
 }
@@ -422,11 +481,12 @@ pub fn run_batch_with(
     let job_rx = Arc::new(Mutex::new(job_rx));
     for _ in 0..threads {
         let (jobs, answers, budget) = (job_rx.clone(), ans_tx.clone(), budget.clone());
+        let echo = opts.echo;
         std::thread::spawn(move || {
             loop {
                 let job = jobs.lock().unwrap_or_else(|e| e.into_inner()).recv();
                 let Ok((i, line, bytes)) = job else { break };
-                let answer = answer_line_text_within(&line, &budget);
+                let answer = answer_text(&line, &budget, echo);
                 if answers.send((i, answer, bytes)).is_err() {
                     break;
                 }
@@ -521,7 +581,36 @@ mod tests {
             budget: Budget::default(),
             progress: false,
             input_bytes: None,
+            echo: false,
         }
+    }
+
+    #[test]
+    fn echo_puts_each_line_verbatim_after_the_id_and_changes_nothing_else() {
+        let input = "{\"id\":\"a\", \"op\":\"roots\",\"poly\":\"x^2-2\"}\r\nnot json\n{\"op\":\"roots\",\"poly\":\"x\",\"bogus\":1}\n";
+        let run = |echo: bool| {
+            let mut out = Vec::new();
+            let o = BatchOptions { echo, ..opts(2, 4) };
+            run_batch_with(Cursor::new(input.to_string()), &mut out, &o).unwrap();
+            String::from_utf8(out).unwrap()
+        };
+        let (plain, echoed) = (run(false), run(true));
+        let requests = [
+            "{\"id\":\"a\", \"op\":\"roots\",\"poly\":\"x^2-2\"}",
+            "not json",
+            "{\"op\":\"roots\",\"poly\":\"x\",\"bogus\":1}",
+        ];
+        for ((p, e), r) in plain.lines().zip(echoed.lines()).zip(requests) {
+            let (mut pv, mut ev): (Map<String, Value>, Map<String, Value>) = (
+                serde_json::from_str(p).unwrap(),
+                serde_json::from_str(e).unwrap(),
+            );
+            assert_eq!(ev.keys().take(2).collect::<Vec<_>>(), ["id", "request"]);
+            assert_eq!(ev.remove("request"), Some(Value::String(r.into())));
+            assert_eq!(ev, pv, "{e}");
+            assert!(pv.remove("request").is_none());
+        }
+        assert_eq!(echoed.lines().count(), 3);
     }
 
     #[test]

@@ -10,7 +10,7 @@ use crate::options::{budget_of, qs_options};
 use crate::typed::{natural_of, natural_result, qs_natural_f64, qs_natural_result};
 use engine::natural::{
     ClassifyOptions, Component, ConicKind, CurveBranch, EPoint, Exact, PointKind, SingularKind,
-    SingularPoint, normalize_direction, normalize_plane,
+    SingularPoint, normalize_axis_direction, normalize_plane,
 };
 use engine::{BigInt, Budget, Error, QSqrt, Rational};
 use num_traits::Zero;
@@ -126,8 +126,8 @@ fn fit_scale(v: &mut [Exact]) -> Result<(), Error> {
 
 /// A conic's axis direction as the JSON gives it (rational ones scaled to
 /// primitive integers), then by [`fit_scale`].
-fn axis_direction(d: &EPoint) -> Result<EPoint, Error> {
-    scaled(&normalize_direction(d))
+fn axis_direction(d: &EPoint, kind: ConicKind) -> Result<EPoint, Error> {
+    scaled(&normalize_axis_direction(d, kind))
 }
 
 /// A line's direction as the JSON gives it, then by [`fit_scale`].
@@ -456,7 +456,7 @@ fn component(c: &Component, owned: &mut Owned) -> Result<qs_component, Error> {
             k.n_semi_axes2 = fill(&mut k.semi_axes2, axes2, qs_ball::of, "semi-axes")?;
             let dirs = axis_dirs
                 .iter()
-                .map(axis_direction)
+                .map(|d| axis_direction(d, *kind))
                 .collect::<Result<Vec<_>, _>>()?;
             k.n_axis_dirs = fill(
                 &mut k.axis_dirs,
@@ -787,8 +787,8 @@ mod tests {
                 for (i, d) in k.axis_dirs.iter().enumerate() {
                     match axis_dirs.get(i) {
                         Some(x) => {
-                            let ours = axis_direction(x).unwrap();
-                            let theirs = normalize_direction(x);
+                            let ours = axis_direction(x, *kind).unwrap();
+                            let theirs = normalize_axis_direction(x, *kind);
                             let j = same_or_null(&ours, &theirs, &f["axis_directions"][i]);
                             encloses3(d, &ours, j, "axis_dirs");
                         }

@@ -805,6 +805,7 @@ def batch(
     threads: Optional[int] = None,
     *,
     time_limit: Optional[float] = None,
+    echo: bool = False,
 ) -> Iterator[str]:
     """The answers to batch lines (the protocol of ``quadsect batch``), one
     per line, in order, streamed: each answer is :func:`answer_line` of its
@@ -814,10 +815,13 @@ def batch(
     huge input streams in bounded memory.  ``lines`` may be a file object.
     Each line runs under its own budget: ``time_limit`` seconds (``None``:
     :data:`DEFAULT_TIME_LIMIT`), as ``quadsect batch --time-limit``.
+    ``echo=True`` puts each line, verbatim, into its answer as
+    ``"request"`` (``quadsect batch --echo``), the input of the independent
+    checker ``quadsect_check``.
 
     >>> lines = ['{"id": 1, "op": "roots", "poly": "x^2 - 2"}',
     ...          '{"id": 2, "op": "resultant", "f": "x^2+y^2-1", "g": "x-y", "var": "x"}']
     >>> [json.loads(a)["id"] for a in quadsect.batch(lines, threads=2)]
     [1, 2]
     """
-    return _quadsect.Batch(lines, threads, time_limit)
+    return _quadsect.Batch(lines, threads, time_limit, echo)

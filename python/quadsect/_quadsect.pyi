@@ -17,8 +17,9 @@ _Number = Union[int, Fraction, float, str, object]
 def exact(x: _Number) -> Fraction:
     """The exact value quadsect takes for the number ``x``."""
 
-def answer_line(line: str, *, time_limit: Optional[float] = None) -> str:
-    """One batch line's answer, exactly as ``quadsect batch`` prints it."""
+def answer_line(line: str, *, time_limit: Optional[float] = None, echo: bool = False) -> str:
+    """One batch line's answer, exactly as ``quadsect batch`` prints it
+    (``echo``: with the line as ``"request"``, as ``--echo``)."""
 
 class RealAlgebraic:
     """An exact real algebraic number: a root of ``poly`` in ``interval``."""
@@ -125,6 +126,7 @@ class Batch(Iterator[str]):
         lines: Iterable[Union[str, bytes]],
         threads: Optional[int] = None,
         time_limit: Optional[float] = None,
+        echo: bool = False,
     ) -> None: ...
     def __iter__(self) -> "Batch": ...
     def __next__(self) -> str: ...

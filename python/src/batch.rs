@@ -33,18 +33,32 @@ const WINDOW_PER_THREAD: usize = 32;
 /// ``{"id":…,"ok":false,"error":{"kind":…,"message":…}}``.  Never raises
 /// for bad input: a bad line gets an error answer.  A trailing newline is
 /// ignored.  ``time_limit`` is the line's time limit in seconds, as
-/// ``quadsect batch --time-limit`` (``None``: the default, 10 s).
+/// ``quadsect batch --time-limit`` (``None``: the default, 10 s).  With
+/// ``echo=True`` the answer also carries the line itself as ``"request"``
+/// (``quadsect batch --echo``: what the checker ``quadsect_check`` reads).
 ///
 /// >>> quadsect.answer_line('{"id":1,"op":"roots","poly":"x^2-2"}')[:30]
 /// '{"id":1,"ok":true,"result":{"d'
 #[pyfunction]
-#[pyo3(signature = (line, *, time_limit = None))]
-pub(crate) fn answer_line(py: Python<'_>, line: &str, time_limit: Option<f64>) -> PyResult<String> {
+#[pyo3(signature = (line, *, time_limit = None, echo = false))]
+pub(crate) fn answer_line(
+    py: Python<'_>,
+    line: &str,
+    time_limit: Option<f64>,
+    echo: bool,
+) -> PyResult<String> {
     let line = strip_newline(line);
     let budget = guard::budget(py, time_limit)?;
-    guard::run(py, || {
-        Ok(quadsect::batch::answer_line_text_within(line, &budget))
-    })
+    guard::run(py, || Ok(answer(line, &budget, echo)))
+}
+
+/// The answer text of one line (`echo`: with the line as `"request"`).
+fn answer(line: &str, budget: &Budget, echo: bool) -> String {
+    if echo {
+        quadsect::batch::answer_line_text_echoed(line, budget)
+    } else {
+        quadsect::batch::answer_line_text_within(line, budget)
+    }
 }
 
 /// The line without its line ending (as the CLI reads lines).
@@ -68,14 +82,15 @@ struct State {
     window: usize,
 }
 
-/// Batch(lines: Iterable[str], threads: int | None = None, time_limit: float | None = None)
+/// Batch(lines: Iterable[str], threads: int | None = None, time_limit: float | None = None, echo: bool = False)
 ///
 /// An iterator of the answers to ``lines`` (``str`` or ``bytes``, with or
 /// without the trailing newline), in order, computed on ``threads`` Rust
 /// worker threads (default: the number of CPUs) with the GIL released;
 /// at most ``32 * threads`` lines are read ahead.  Each line runs under
 /// its own budget (``time_limit`` seconds, ``None``: the default 10 s), as
-/// in ``quadsect batch``.
+/// in ``quadsect batch``; ``echo=True`` puts each line into its answer as
+/// ``"request"`` (``quadsect batch --echo``).
 #[pyclass(frozen, module = "quadsect._quadsect")]
 pub(crate) struct Batch {
     state: Mutex<State>,
@@ -85,12 +100,13 @@ pub(crate) struct Batch {
 #[pymethods]
 impl Batch {
     #[new]
-    #[pyo3(signature = (lines, threads = None, time_limit = None))]
+    #[pyo3(signature = (lines, threads = None, time_limit = None, echo = false))]
     fn py_new(
         py: Python<'_>,
         lines: &Bound<'_, PyAny>,
         threads: Option<usize>,
         time_limit: Option<f64>,
+        echo: bool,
     ) -> PyResult<Self> {
         let per_line = guard::budget(py, time_limit)?;
         let threads = match threads {
@@ -115,7 +131,7 @@ impl Batch {
             let budget = per_line.clone().with_cancel_flag(Arc::clone(&cancel));
             std::thread::Builder::new()
                 .name(format!("quadsect-batch-{i}"))
-                .spawn(move || worker(&jobs, &out, &budget))
+                .spawn(move || worker(&jobs, &out, &budget, echo))
                 .map_err(|e| {
                     PyRuntimeError::new_err(format!("cannot start a worker thread: {e}"))
                 })?;
@@ -211,14 +227,19 @@ fn line_text(obj: &Bound<'_, PyAny>) -> PyResult<String> {
 /// A worker: answers numbered lines until the job channel closes or the
 /// consumer is gone, each line under `budget` (the batch's per-line budget,
 /// carrying its cancellation flag), exactly as `quadsect batch` does.
-fn worker(jobs: &Mutex<Receiver<(u64, String)>>, out: &Sender<(u64, String)>, budget: &Budget) {
+fn worker(
+    jobs: &Mutex<Receiver<(u64, String)>>,
+    out: &Sender<(u64, String)>,
+    budget: &Budget,
+    echo: bool,
+) {
     loop {
         let job = match jobs.lock() {
             Ok(rx) => rx.recv(),
             Err(_) => return,
         };
         let Ok((i, line)) = job else { return };
-        let a = quadsect::batch::answer_line_text_within(&line, budget);
+        let a = answer(&line, budget, echo);
         if out.send((i, a)).is_err() {
             return;
         }

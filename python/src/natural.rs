@@ -10,8 +10,8 @@ use crate::numbers::{Frac, QuadraticIrrational, RealAlgebraic, fraction, to_rati
 use pyo3::prelude::*;
 use pyo3::types::{PyString, PyTuple};
 use quadsect::natural::{
-    ClassifyOptions, Component, CurveBranch, EPoint, Exact, SingularPoint, normalize_direction,
-    normalize_plane,
+    ClassifyOptions, Component, CurveBranch, EPoint, Exact, SingularPoint,
+    normalize_axis_direction, normalize_plane,
 };
 use quadsect::{
     Class, Cone, Cylinder, Error, ErrorKind, Natural, NaturalReport, QSqrt, Rational, Sphere,
@@ -400,7 +400,7 @@ impl Part {
                     axes2: axes2.iter().map(Num::new).collect(),
                     dirs: axis_dirs
                         .iter()
-                        .map(|d| pt(&normalize_direction(d)))
+                        .map(|d| pt(&normalize_axis_direction(d, *kind)))
                         .collect(),
                     focal2: focal2.as_ref().map(Num::new),
                     double: *double,

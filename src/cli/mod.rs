@@ -144,6 +144,11 @@ enum Command {
         /// Worker threads (default: all cores).
         #[arg(long, value_name = "N")]
         threads: Option<usize>,
+        /// Put each request line, verbatim, into its answer as "request" (a
+        /// JSON string), so that an answer can be checked on its own:
+        /// `quadsect batch --echo F | python3 -m quadsect_check -`.
+        #[arg(long)]
+        echo: bool,
         #[command(flatten)]
         limits: LimitArgs,
     },
@@ -168,6 +173,9 @@ Fields of every line (all optional):
 A line's limit is the smaller of its own and --time-limit / --memory-limit: a line can
 tighten the limits, never loosen them. Any other field, or a bad limit, is an error line
 of kind \"bad-field\" naming the field.
+
+With --echo each answer also has \"request\": the input line, verbatim, as a JSON string
+(right after \"id\"), which the independent checker reads (python3 -m quadsect_check).
 
 Exit status: 0 when every line was answered, whatever the answers (bad lines, exhausted
 budgets and internal failures are error lines); 2 when the input cannot be read.";
@@ -292,11 +300,13 @@ fn run(cli: Cli) -> Result<(), Error> {
         Command::Batch {
             file,
             threads,
+            echo,
             limits,
         } => {
             let mut opts = crate::batch::BatchOptions {
                 budget: limits.budget(),
                 progress: std::io::stderr().is_terminal(),
+                echo,
                 ..Default::default()
             };
             if let Some(n) = threads {

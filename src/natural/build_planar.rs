@@ -292,7 +292,7 @@ fn rat_point(v: &V3) -> EPoint {
 
 /// The components in the plane through the line `l` perpendicular to the
 /// axial plane (the module docs' case analysis).
-fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> Vec<Component> {
+fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Option<Plane>) {
     let p = &l.p;
     let w3 = [l.w[0].clone(), l.w[1].clone(), sq(Z::zero())];
     let a1 = zf(&form3(h, &w3, &w3, d));
@@ -307,6 +307,10 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> Vec<Component> {
         normal: epoint(&out3(&normal, d)),
         offset: Exact::Quad(offset.to_qsqrt(d)),
     };
+    // the certificate lists the plane only when no conic carries it (a
+    // conic's plane is printed with it): computed only then
+    let bare =
+        |out: &[Component]| (!out.iter().any(|c| matches!(c, Component::Conic { .. }))).then(plane);
     let n = fr.n_q();
     let n2: Z = dot(&fr.n, &fr.n);
     let lam = (0..3).fold(Zf::zero(), |acc, i| acc.add(&dir[i].mul(&dir[i], d)));
@@ -322,7 +326,8 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> Vec<Component> {
             direction: epoint(&out3(&dir, d)),
             double: true,
         });
-        return out;
+        let p = bare(&out);
+        return (out, p);
     }
     if sa != 0 {
         // σ0 = −b′/(a′·pw), k = (a′c′ − b′²)/(K·pw²·a′)
@@ -442,7 +447,8 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> Vec<Component> {
             _ => {}
         }
     }
-    out
+    let p = bare(&out);
+    (out, p)
 }
 
 /// The isolated points over the real meeting point `x` of two conjugate
@@ -475,7 +481,15 @@ fn conjugate_points(fr: &Frame, h: &[[Z; 3]; 3], x: &[Z; 3]) -> Vec<Component> {
 
 /// All real components of a planar intersection of `x` and `y` (coplanar
 /// distinct axes, parallel or meeting; the projection conic degenerate).
-pub(crate) fn planar_components(x: &QIn<Z>, y: &QIn<Z>, parallel: bool) -> Vec<Component> {
+/// Also returns the planes through the real lines of the projection conic
+/// perpendicular to the axial plane that carry no conic (a member of the
+/// pencil is the product of these and the conics' planes: the checker's
+/// completeness certificate, contract §7).
+pub(crate) fn planar_components(
+    x: &QIn<Z>,
+    y: &QIn<Z>,
+    parallel: bool,
+) -> (Vec<Component>, Vec<Plane>) {
     let dv = point_difference(x, y);
     let qq = &x.q * &y.q;
     let e2 = if parallel { dv.clone() } else { y.a.clone() };
@@ -499,10 +513,13 @@ pub(crate) fn planar_components(x: &QIn<Z>, y: &QIn<Z>, parallel: bool) -> Vec<C
         kk: &k1 * &qq * &qq,
     };
     let mut out = Vec::new();
+    let mut planes = Vec::new();
     match factor(&f) {
         Factors::Lines(lines, d) => {
             for l in &lines {
-                for c in section(&fr, &h1, l, &d) {
+                let (comps, plane) = section(&fr, &h1, l, &d);
+                planes.extend(plane);
+                for c in comps {
                     push_unique(&mut out, c);
                 }
             }
@@ -510,7 +527,7 @@ pub(crate) fn planar_components(x: &QIn<Z>, y: &QIn<Z>, parallel: bool) -> Vec<C
         Factors::Point(xp) => out = conjugate_points(&fr, &h1, &xp),
         Factors::Nothing => {}
     }
-    drop_points_on_lines(out)
+    (drop_points_on_lines(out), planes)
 }
 
 #[cfg(test)]

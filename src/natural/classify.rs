@@ -95,6 +95,7 @@ pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalRepor
             components_computed: true,
             route: None,
             exhausted: None,
+            member_planes: Vec::new(),
         });
     }
     let (components, method): (Vec<Component>, &'static str) = match (a, b) {
@@ -189,6 +190,7 @@ pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalRepor
         components_computed: true,
         route: None,
         exhausted: None,
+        member_planes: Vec::new(),
     })
 }
 

@@ -6,7 +6,7 @@
 
 use super::fast::Case;
 use super::prepared::{Kind, Prepared};
-use super::result::Component;
+use super::result::{Component, Plane};
 use super::types::Natural;
 use crate::error::Error;
 use num_bigint::BigInt;
@@ -14,14 +14,15 @@ use num_bigint::BigInt;
 /// The note of a line and a twisted cubic (the reference route's words).
 pub(crate) const TWISTED_CUBIC_NOTE: &str = "the surfaces share a ruling: the rest of the intersection is a twisted cubic (missing from the paper's Table 1)";
 
+/// What a construction built: the components, remarks, and the real planes
+/// of a pencil member `κ·P₁·P₂` when it found them (the certificate).
+pub(crate) type Built = (Vec<Component>, Vec<String>, Vec<Plane>);
+
 /// The components of the intersection of `a` and `b` in the decided
 /// `case`, and remarks.
-pub(crate) fn components(
-    a: &Prepared,
-    b: &Prepared,
-    case: Case,
-) -> Result<(Vec<Component>, Vec<String>), Error> {
+pub(crate) fn components(a: &Prepared, b: &Prepared, case: Case) -> Result<Built, Error> {
     let (na, nb) = (a.natural(), b.natural());
+    let mut planes = Vec::new();
     let comps = match case {
         Case::SameSurface | Case::Empty => vec![],
         Case::TwoSpheres => match (na, nb) {
@@ -40,7 +41,9 @@ pub(crate) fn components(
             if x.kind == Kind::Sphere || y.kind == Kind::Sphere {
                 return Err(Error::internal("a planar case with a sphere"));
             }
-            super::build_planar::planar_components(&x, &y, parallel)
+            let (comps, member) = super::build_planar::planar_components(&x, &y, parallel);
+            planes = member;
+            comps
         }
         Case::Smooth | Case::Nodal { .. } | Case::ConePoint { .. } | Case::PlanePair { .. } => {
             let (x, y) = (a.prep.tier::<BigInt>(), b.prep.tier::<BigInt>());
@@ -94,12 +97,17 @@ pub(crate) fn components(
                 }
                 Err(e) => notes.push(format!("the branches of the cubic were not traced ({e})")),
             }
-            return Ok((comps.into_iter().map(small_directions).collect(), notes));
+            return Ok((
+                comps.into_iter().map(small_directions).collect(),
+                notes,
+                planes,
+            ));
         }
     };
     Ok((
         comps.into_iter().map(small_directions).collect(),
         Vec::new(),
+        planes,
     ))
 }
 

@@ -14,7 +14,7 @@ use crate::number::{Q, QSqrt};
 use crate::poly::{QPoly, ZPoly};
 use crate::roots::{RealAlg, isolate_squarefree};
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// An exact real number of the output: an element `a + b√d` of a
 /// quadratic field (rationals included), or a real algebraic number of
@@ -185,6 +185,20 @@ pub fn normalize_direction(d: &EPoint) -> EPoint {
     }
 }
 
+/// A conic's axis direction as printed: as [`normalize_direction`], except
+/// that a parabola's axis keeps its orientation (it points into the
+/// parabola: scaled by a positive rational only).
+pub fn normalize_axis_direction(d: &EPoint, kind: super::result::ConicKind) -> EPoint {
+    let rational = d
+        .iter()
+        .all(|c| matches!(c, Exact::Quad(x) if x.is_rational()));
+    match kind {
+        super::result::ConicKind::Parabola if rational => primitive_direction(d),
+        super::result::ConicKind::Parabola => d.clone(),
+        _ => normalize_direction(d),
+    }
+}
+
 /// A direction scaled by a positive rational so that its coordinates,
 /// all in one field Q(√d), have coprime integer parts `a`, `b` (the
 /// orientation kept: a parabola's axis points into it); directions with
@@ -231,10 +245,39 @@ pub(crate) fn primitive_direction(v: &EPoint) -> EPoint {
     })
 }
 
+/// Whether a normal is already what [`normalize_direction`] makes of it:
+/// coprime integers, the first non-zero one positive.
+fn is_primitive_normal(n: &EPoint) -> bool {
+    let mut g = BigInt::zero();
+    let mut first = true;
+    for c in n {
+        let Exact::Quad(x) = c else { return false };
+        if !x.is_rational() || !x.a.denom().is_one() {
+            return false;
+        }
+        let v = x.a.numer();
+        if first && !v.is_zero() {
+            if v.is_negative() {
+                return false;
+            }
+            first = false;
+        }
+        if !g.is_one() {
+            g = crate::number::gcd_z(&g, v);
+        }
+    }
+    g.is_one()
+}
+
 /// A plane with rational coefficients scaled to primitive integers (the
 /// normal as by [`normalize_direction`], the offset by the same factor);
 /// other planes unchanged.  The JSON and the C interface print planes so.
 pub fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
+    if is_primitive_normal(&p.normal) {
+        // already normalized (the planar construction normalizes once):
+        // k = 1
+        return (p.normal.clone(), p.offset.clone());
+    }
     let mut all = p.normal.to_vec();
     all.push(p.offset.clone());
     let rat: Option<Vec<Q>> = all
@@ -247,15 +290,31 @@ pub fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
     let Some(rat) = rat else {
         return (p.normal.clone(), p.offset.clone());
     };
-    let as_point: EPoint = std::array::from_fn(|i| Exact::rational(rat[i].clone()));
-    let n = normalize_direction(&as_point);
-    // scale factor k with n = k·normal, applied to the offset too
-    let idx = (0..3).find(|&i| !rat[i].is_zero()).unwrap_or(0);
-    let k = match &n[idx] {
-        Exact::Quad(x) => &x.a / &rat[idx],
-        _ => Q::one(),
-    };
-    (n, Exact::rational(&rat[3] * &k))
+    // in integers: the normal times the lcm l of its denominators, divided
+    // by the gcd g of those integers, the sign making the first non-zero
+    // coordinate positive; the offset times the same k = ±l/g
+    let l = crate::number::denom_lcm(rat[..3].iter());
+    let ints: [BigInt; 3] = std::array::from_fn(|i| rat[i].numer() * (&l / rat[i].denom()));
+    let mut g = BigInt::zero();
+    for v in &ints {
+        if g.is_one() {
+            break;
+        }
+        g = crate::number::gcd_z(&g, v);
+    }
+    if g.is_zero() {
+        return (p.normal.clone(), p.offset.clone());
+    }
+    if ints
+        .iter()
+        .find(|v| !v.is_zero())
+        .is_some_and(|v| v.is_negative())
+    {
+        g = -g;
+    }
+    let n: EPoint = std::array::from_fn(|i| Exact::rational(Q::from_integer(&ints[i] / &g)));
+    let offset = crate::number::q_new(rat[3].numer() * &l, rat[3].denom() * &g);
+    (n, Exact::rational(offset))
 }
 
 /// Text of a point.

@@ -1531,6 +1531,7 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
         components_computed: false,
         route: Some(Route::Fast),
         exhausted: None,
+        member_planes: Vec::new(),
     })
 }
 
@@ -1557,7 +1558,7 @@ pub fn classify_prepared(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Er
             return Ok(r);
         }
     };
-    let (components, notes) = super::construct::components(a, b, case)?;
+    let (components, notes, member_planes) = super::construct::components(a, b, case)?;
     let built = Counts::of_components(&components);
     if case != Case::SameSurface && built != counts {
         return Err(Error::internal(format!(
@@ -1579,6 +1580,7 @@ pub fn classify_prepared(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Er
         components_computed: true,
         route: None,
         exhausted: None,
+        member_planes,
     })
 }
 

@@ -32,7 +32,7 @@ pub use crate::geom::cayley_rotation;
 pub use classify::{classify, classify_str};
 pub use curve::CurvePoint;
 pub use deciders::{AxesRelation, conic_intersection_thm8 as thm8};
-pub use exact::{EPoint, Exact, normalize_direction, normalize_plane};
+pub use exact::{EPoint, Exact, normalize_axis_direction, normalize_direction, normalize_plane};
 pub use fast::{ClassifyOptions, classify_counts, classify_prepared, classify_with};
 pub use prepared::Prepared;
 pub use result::{

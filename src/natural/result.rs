@@ -279,6 +279,11 @@ pub struct NaturalReport {
     pub(crate) route: Option<Route>,
     /// The compute budget that ran out (class `Undecided`).
     pub(crate) exhausted: Option<crate::budget::Exhausted>,
+    /// Real planes P₁, P₂ with a pencil member λA + μB = κ·P₁·P₂ (the
+    /// planar construction's planes, those without a component included):
+    /// the intersection is the union of the plane sections, which a checker
+    /// re-derives (contract §7).  Empty when the route has none.
+    pub(crate) member_planes: Vec<Plane>,
 }
 
 /// Which route answered a request for the class and counts only.
@@ -456,6 +461,7 @@ impl NaturalReport {
             components_computed: false,
             route: None,
             exhausted: Some(e),
+            member_planes: Vec::new(),
         }
     }
 

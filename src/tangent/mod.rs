@@ -34,6 +34,7 @@ pub(crate) mod pencil;
 pub(crate) mod poisson;
 pub(crate) mod quadric;
 pub(crate) mod separable;
+pub(crate) mod slemma;
 pub(crate) mod witness;
 
 pub use ellipsoid::Ellipsoid;
@@ -310,6 +311,9 @@ pub struct Certificate {
     pub(crate) positive_witness: Option<WitnessPoint>,
     pub(crate) method: Analysis,
     pub(crate) notes: Vec<String>,
+    /// `separated` with S of degree ≤ 2: τ with `side·(S − τE)` positive
+    /// definite in (x, y, z, 1) (the S-lemma certificate).
+    pub(crate) s_lemma: Option<crate::number::Q>,
 }
 
 impl Certificate {
@@ -324,6 +328,14 @@ impl Certificate {
     /// at non-real critical points (the paper's trap), never counted.
     pub fn nonreal_point_values(&self) -> &[RealAlg] {
         &self.nonreal_point_values
+    }
+
+    /// For a `separated` verdict with S of degree ≤ 2: a rational τ for
+    /// which `side·(S − τ·E)` is positive definite as a quadratic form in
+    /// `(x, y, z, 1)` (so `side·S = side·(S − τE) > 0` on E = 0): the
+    /// S-lemma certificate, checked by one exact LDLᵀ of a 4×4 matrix.
+    pub fn s_lemma_tau(&self) -> Option<&crate::number::Q> {
+        self.s_lemma.as_ref()
     }
 
     /// An exact point of E where S < 0.
@@ -781,6 +793,7 @@ fn undecided_report(ellipsoid: QMPoly, surface: QMPoly, why: Undecided) -> Tange
             positive_witness: None,
             method: Analysis::Undecided,
             notes: vec![],
+            s_lemma: None,
         },
         reason: Some(why),
     }
@@ -925,6 +938,12 @@ fn finish(
             negw = w;
         }
     }
+    let s_lemma = match (verdict, side) {
+        (Verdict::Separated, Some(sd)) if surface.total_degree().unwrap_or(0) <= 2 => {
+            slemma::s_lemma_tau(&e.poly, surface, sd)
+        }
+        _ => None,
+    };
     let containment = if !intersect {
         containment_of(e, surface, side.unwrap_or(0))
     } else if sn == 0 && sm == 0 && surface.total_degree() == Some(2) {
@@ -950,6 +969,7 @@ fn finish(
             positive_witness: posw,
             method,
             notes,
+            s_lemma,
         },
         reason: None,
     }
@@ -1008,6 +1028,7 @@ fn finish_signs(e: &Ellipsoid, surface: &QMPoly, an: poisson::PoissonAnalysis) -
             positive_witness: posw,
             method: Analysis::Poisson(Box::new(an)),
             notes,
+            s_lemma: None,
         },
         reason: None,
     }

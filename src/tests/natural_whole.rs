@@ -396,3 +396,70 @@ fn branch_points_beyond_the_range_of_doubles() {
         bounds_hold(rep.components()).unwrap();
     }
 }
+
+/// A printed parabola's axis points into it (contract §4), on every
+/// benchmark pair with a rational parabola: with V its vertex, d1 the
+/// printed axis direction and d2 = n × d1 in its plane, the first quadric
+/// along V + s·d1 + t·d2 is κ(t²|d2|² − k·s) with k > 0 exactly when
+/// A(V + d1) and A(V + d2) − A(V) have opposite signs (A(V) = 0).  The
+/// printing once flipped such axes to a first positive coordinate.
+#[test]
+fn printed_parabola_axes_point_into_the_parabola() {
+    use crate::natural::{Component, ConicKind, Exact, normalize_axis_direction};
+    let rational = |p: &[Exact; 3]| -> Option<[crate::number::Q; 3]> {
+        let mut out: [crate::number::Q; 3] = Default::default();
+        for (o, c) in out.iter_mut().zip(p) {
+            match c {
+                Exact::Quad(x) if x.is_rational() => *o = x.a().clone(),
+                _ => return None,
+            }
+        }
+        Some(out)
+    };
+    let pairs = read_pairs(None).unwrap();
+    let mut seen = 0;
+    for p in pairs.iter().filter(|p| p.group != "decimal500") {
+        let r = classify_with(&p.a, &p.b, &ClassifyOptions::default()).unwrap();
+        for c in r.components() {
+            let Component::Conic {
+                kind: ConicKind::Parabola,
+                plane,
+                vertex: Some(v),
+                axis_dirs,
+                ..
+            } = c
+            else {
+                continue;
+            };
+            let printed = normalize_axis_direction(&axis_dirs[0], ConicKind::Parabola);
+            let (Some(v), Some(d1), Some(n)) =
+                (rational(v), rational(&printed), rational(&plane.normal))
+            else {
+                continue;
+            };
+            let d2 = crate::geom::vec3::cross(&n, &d1);
+            let eq = p.a.equation();
+            let at = |s: i64, t: i64| {
+                let pt: [crate::number::Q; crate::poly::mpoly::NVARS] = std::array::from_fn(|i| {
+                    if i < 3 {
+                        &v[i] + &d1[i] * crate::number::qi(s) + &d2[i] * crate::number::qi(t)
+                    } else {
+                        crate::number::Q::zero()
+                    }
+                });
+                eq.eval(&pt)
+            };
+            use num_traits::{Signed, Zero};
+            assert!(at(0, 0).is_zero(), "{}: vertex off the quadric", p.name);
+            let (along, across) = (at(1, 0), at(0, 1));
+            assert!(
+                along.is_positive() != across.is_positive() && !along.is_zero(),
+                "{}: the axis {:?} points out of the parabola",
+                p.name,
+                printed
+            );
+            seen += 1;
+        }
+    }
+    assert!(seen >= 4, "only {seen} parabolas checked");
+}

@@ -2,8 +2,8 @@
 
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
-use crate::natural::exact::{EPoint, Exact, normalize_direction, normalize_plane};
-use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Route};
+use crate::natural::exact::{EPoint, Exact, normalize_axis_direction, normalize_plane};
+use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Plane, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
 
@@ -45,7 +45,7 @@ fn write_component(c: &Component, out: &mut Vec<u8>) {
                 axes2,
                 dirs: &axis_dirs
                     .iter()
-                    .map(normalize_direction)
+                    .map(|d| normalize_axis_direction(d, *kind))
                     .collect::<Vec<_>>(),
                 focal2: focal2.as_ref(),
             };
@@ -242,11 +242,26 @@ pub(crate) fn write_natural(r: &NaturalReport, out: &mut Vec<u8>) {
     .field("section7", r.section7.as_ref().map(section7_w))
     .field("a", natural_input_w(&r.a))
     .field("b", natural_input_w(&r.b))
-    .field("notes", &r.notes);
+    .field("notes", &r.notes)
+    .field(
+        "certificate",
+        (!r.member_planes.is_empty())
+            .then_some(obj_w! {"planes" => arr(r.member_planes.iter().map(plane_w))}),
+    );
     if let Some(Route::Complete(why)) = r.route {
         obj.field("route", "complete").field("fallback", why);
     }
     obj.end()
+}
+
+/// A plane `{"normal", "offset"}` (normal·P = offset), exact, normalized
+/// as the conics' planes.
+fn plane_w(p: &Plane) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| {
+        let (normal, offset) = normalize_plane(p);
+        obj_w! {"normal" => point_in(&normal, true), "offset" => number_in(&offset, true)}
+            .write(out)
+    })
 }
 
 /// A point with coordinates in Q(√d).
@@ -336,6 +351,7 @@ mod tests {
                 "a",
                 "b",
                 "notes",
+                "certificate",
             ])
             .collect();
         assert_eq!(keys(&r), complete);

@@ -381,6 +381,13 @@ pub fn tangent_json(r: &TangentReport) -> Value {
         );
         m.insert("witness_negative".into(), witness_json(&c.negative_witness));
         m.insert("witness_positive".into(), witness_json(&c.positive_witness));
+        // side·(S − τE) positive definite in (x, y, z, 1): S ≠ 0 on E
+        m.insert(
+            "s_lemma".into(),
+            c.s_lemma
+                .as_ref()
+                .map_or(Value::Null, |t| json!({"tau": crate::number::fmt_q(t)})),
+        );
         m.insert("notes".into(), json!(c.notes));
     }
     let mut out = json!({

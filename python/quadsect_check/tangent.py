@@ -1,0 +1,203 @@
+"""Claims of ``tangent`` answers (an ellipsoid E against a surface S)."""
+
+from fractions import Fraction
+
+from . import poly as P
+from .exact import QS, CheckError, parse_point, parse_rational, parse_value
+from .natural import proportional
+
+
+def _ldl_signs(m):
+    """The signs of the pivots of a symmetric matrix (exact LDLᵀ without
+    pivoting; None when a zero pivot comes before the end)."""
+    m = [list(map(Fraction, row)) for row in m]
+    n, signs = len(m), []
+    for k in range(n):
+        piv = m[k][k]
+        if piv == 0:
+            return None if k < n - 1 else signs + [0]
+        signs.append(1 if piv > 0 else -1)
+        for i in range(k + 1, n):
+            f = m[i][k] / piv
+            for j in range(k, n):
+                m[i][j] -= f * m[k][j]
+    return signs
+
+
+def form_matrix(p):
+    """The symmetric 4×4 matrix of a polynomial of degree ≤ 2 as a form in
+    (x, y, z, 1)."""
+    if P.degree(p) > 2 or any(k[3] for k in p):
+        raise CheckError("not a polynomial of degree ≤ 2 in x, y, z")
+    m = [[Fraction(0)] * 4 for _ in range(4)]
+    for k, c in p.items():
+        idx = [i for i in range(3) for _ in range(k[i])] or [3, 3]
+        if len(idx) == 1:
+            idx = [idx[0], 3]
+        i, j = idx
+        if i == j:
+            m[i][i] += c
+        else:
+            m[i][j] += c / 2
+            m[j][i] += c / 2
+    return m
+
+
+def check_s_lemma(e, s, side, tau):
+    """side·(S − τE) positive definite as a form in (x, y, z, 1) (every
+    LDLᵀ pivot positive): on E = 0 it is side·S, so side·S > 0 on all of E."""
+    me, ms = form_matrix(e), form_matrix(s)
+    m = [[side * (ms[i][j] - tau * me[i][j]) for j in range(4)] for i in range(4)]
+    signs = _ldl_signs(m)
+    if signs is None or signs != [1, 1, 1, 1]:
+        raise CheckError(f"side·(S − τE) is not positive definite for τ = {tau}")
+
+
+def check_ellipsoid(e):
+    """E is a real ellipsoid: total degree 2, its quadratic part M definite
+    (LDLᵀ pivots of one sign), and E below zero (for M positive) at its
+    centre, so that E = 0 is a real ellipsoid, not empty nor a point."""
+    if P.degree(e) != 2 or any(k[3] for k in e):
+        raise CheckError("E is not a quadric in x, y, z")
+    m = form_matrix(e)
+    signs = _ldl_signs([row[:3] for row in m[:3]])
+    if not signs or 0 in signs or len(set(signs)) != 1:
+        raise CheckError("E's quadratic part is not definite: not an ellipsoid")
+    # the full 4×4 pivots: the last one is E at the centre (Schur complement)
+    full = _ldl_signs(m)
+    if full is None or full[-1] != -signs[0]:
+        raise CheckError("E is empty or a single point: not a real ellipsoid")
+
+
+def _witness(w, e, s, want, what):
+    if not isinstance(w, dict):
+        raise CheckError(f"{what}: missing witness")
+    p = parse_point(w.get("point"), what)
+    if not P.evaluate(e, p).is_zero():
+        raise CheckError(f"{what}: the point is not on E")
+    v = P.evaluate(s, p)
+    if v.sign() != want or w.get("sign") != want:
+        raise CheckError(f"{what}: S has not the sign {want} there")
+    if "value" in w and w["value"] is not None:
+        claimed = parse_value(w["value"], f"{what} value")
+        if not (claimed - v).is_zero():
+            raise CheckError(f"{what}: the value printed is not S there")
+
+
+def _alg_equals(alg, v, what):
+    """Whether the exact value v (Q(√d)) is the real algebraic number
+    {poly, interval}: a root of poly inside [lo, hi] (which holds one root)."""
+    if not isinstance(alg, dict):
+        raise CheckError(f"{what}: expected {{poly, interval}}")
+    poly = P.univariate(P.parse(alg.get("poly")))
+    lo, hi = (parse_rational(x) for x in alg.get("interval") or [])
+    acc = QS(0)
+    for c in reversed(poly):
+        acc = acc * v + QS(c)
+    return acc.is_zero() and (v - QS(lo)).sign() >= 0 and (QS(hi) - v).sign() >= 0
+
+
+def extreme_at(e, s, w):
+    """For S of degree ≤ 2 and a witness point p on E: with v = S(p) and
+    ∇S(p) = λ·∇E(p), the form S − v − λE in (x, y, z, 1) vanishes with its
+    gradient at p.  If it is positive semidefinite (no negative eigenvalue,
+    by Descartes on its characteristic polynomial), S ≥ v on E = 0: v is the
+    minimum, attained at p; negative semidefinite: the maximum.  Returns
+    ("min" | "max", v), or None when p proves neither."""
+    from .pencil import charpoly_signs
+
+    p = parse_point(w.get("point"), "witness")
+    v = P.evaluate(s, p)
+    ge = [P.evaluate(g, p) for g in P.gradient(e)]
+    gs = [P.evaluate(g, p) for g in P.gradient(s)]
+    i = next((k for k in range(3) if not ge[k].is_zero()), None)
+    if i is None:
+        return None
+    lam = gs[i] / ge[i]
+    if any(not (gs[k] - lam * ge[k]).is_zero() for k in range(3)):
+        return None
+    me, ms = form_matrix(e), form_matrix(s)
+    m = [[QS(ms[a][b]) - lam * QS(me[a][b]) for b in range(4)] for a in range(4)]
+    m[3][3] = m[3][3] - v
+    pos, neg, _ = charpoly_signs(m)
+    if not neg:
+        return "min", v
+    if not pos:
+        return "max", v
+    return None
+
+
+def _values(e, s, res, witnesses):
+    """The claims on min and max: re-proved for S of degree ≤ 2 at a
+    witness sitting at that extreme, else trusted."""
+    proved = []
+    for w in witnesses:
+        if w is None:
+            continue
+        v = P.evaluate(s, parse_point(w.get("point"), "witness"))
+        # a point of E: min ≤ S(p) ≤ max whatever S is
+        lo = parse_rational((res.get("min") or {}).get("interval", [None])[0] or "")
+        hi = parse_rational((res.get("max") or {}).get("interval", [None, None])[1] or "")
+        if (v - QS(lo)).sign() < 0 or (QS(hi) - v).sign() < 0:
+            raise CheckError("S at a witness point of E lies outside [min, max]")
+        found = extreme_at(e, s, w) if P.degree(s) <= 2 else None
+        if found:
+            kind, v = found
+            if not _alg_equals(res.get(kind), v, kind):
+                raise CheckError(f"the witness proves the {kind} is {v}, not the printed one")
+            proved.append(kind)
+    proved = sorted(set(proved), key=["min", "max"].index)
+    trusted = [k for k in ("min", "max") if k not in proved]
+    checked = [f"{k} = S at a witness, and S − {k} − λE semidefinite (S-lemma)" for k in proved]
+    return checked, ([f"{' and '.join(trusted)} (the critical values)"] if trusted else [])
+
+
+def check_tangent(req, res):
+    float_mode = req.get("float", False) is True
+    e = P.parse(req.get("ellipsoid"), float_mode)
+    s = P.parse(req.get("surface"), float_mode)
+    check_ellipsoid(e)
+    checked, trusted = ["E is a real ellipsoid (LDLᵀ)"], []
+    verdict = res.get("verdict")
+    cert = res.get("certificate") or {}
+    if verdict == "undecided":
+        return checked, ["undecided: no claim"]
+    if verdict not in ("intersecting", "touching", "separated"):
+        raise CheckError(f"unknown verdict {verdict!r}")
+    flags = {"intersecting": (True, False), "touching": (True, True), "separated": (False, False)}
+    if (res.get("intersect"), res.get("touching")) != flags[verdict]:
+        raise CheckError("intersect/touching do not match the verdict")
+    neg, pos = cert.get("witness_negative"), cert.get("witness_positive")
+    if neg is not None:
+        _witness(neg, e, s, -1, "witness_negative")
+    if pos is not None:
+        _witness(pos, e, s, 1, "witness_positive")
+    if verdict == "intersecting":
+        if neg is None or pos is None:
+            raise CheckError("intersecting without two witnesses")
+        checked.append("intersecting: two exact points of E with S of opposite signs")
+        c2, t2 = _values(e, s, res, [neg, pos])
+        return checked + c2, trusted + t2
+    if res.get("containment") == "coincident":
+        if not proportional(e, s):
+            raise CheckError("coincident, but S is not a multiple of E")
+        checked.append("coincident: S = c·E")
+        return checked, trusted
+    side = res.get("side")
+    if verdict == "separated":
+        if side not in ("+", "-"):
+            raise CheckError("separated without a side")
+        w = pos if side == "+" else neg
+        if w is None or (neg if side == "+" else pos) is not None:
+            raise CheckError("separated: the witness of its side is missing or one of the other side is given")
+        checked.append(f"a point of E where S has the sign {side}")
+        lemma = cert.get("s_lemma")
+        if lemma is not None:
+            check_s_lemma(e, s, 1 if side == "+" else -1, parse_rational(lemma.get("tau")))
+            checked.append("separated: side·(S − τE) is positive definite (S-lemma), so S ≠ 0 on E")
+        else:
+            trusted.append("separated: S has no zero on E (the critical set is complete)")
+    else:
+        trusted.append("touching: S has a zero on E and keeps its sign (the critical set is complete)")
+    c2, t2 = _values(e, s, res, [neg, pos])
+    return checked + c2, trusted + t2

@@ -1,0 +1,649 @@
+"""The independent checker `quadsect_check` on the answers of the CLI.
+
+The corpus of scripts/check_corpus.py is answered once per session by
+`quadsect batch --echo`; every answer must be verified or partial, and every
+answer corrupted by one of the mutators below (a wrong class, count, conic,
+line, point, branch, witness, interval, coefficient, or the certificate of
+another input) must be rejected."""
+
+import copy
+import json
+import os
+import subprocess
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+
+try:
+    import quadsect_check
+except ImportError:  # a local run without the package installed
+    sys.path.insert(0, str(REPO / "python"))
+    import quadsect_check
+
+from quadsect_check import exact, natural, poly
+
+# mutated answers per mutator at most (a deterministic, stratified sample)
+SAMPLE = 25
+
+CLASSES = ["same-surface", "curve", "conics", "conic-and-line", "lines", "points", "empty"]
+GEOMETRY = {"natural": ("a", "b"), "tangent": ("ellipsoid", "surface"), "roots": ("poly",), "resultant": ("f", "g", "var")}
+
+
+def quadsect_binary():
+    env = os.environ.get("QUADSECT_BIN")
+    for p in ([Path(env)] if env else []) + [REPO / "target" / "release" / "quadsect"]:
+        if p.is_file() and os.access(p, os.X_OK):
+            return p
+    return None
+
+
+@pytest.fixture(scope="module")
+def answers():
+    """The corpus answered by the CLI: [(answer dict, request dict)]."""
+    binary = quadsect_binary()
+    if binary is None:
+        pytest.skip("no quadsect CLI: set QUADSECT_BIN or run `cargo build --release` (target/release/quadsect)")
+    corpus = subprocess.run([sys.executable, str(REPO / "scripts" / "check_corpus.py")], cwd=REPO,
+                            capture_output=True, text=True, check=True, timeout=120).stdout
+    out = subprocess.run([str(binary), "batch", "--echo", "--threads", "2", "-"], input=corpus,
+                         capture_output=True, text=True, timeout=600)
+    assert out.returncode in (0, 1), out.stderr
+    lines = [l for l in out.stdout.splitlines() if l.strip()]
+    assert len(lines) == len([l for l in corpus.splitlines() if l.strip()])
+    result = []
+    for l in lines:
+        a = json.loads(l)
+        result.append((a, json.loads(a["request"])))
+    return result
+
+
+@pytest.fixture(scope="module")
+def verdicts(answers):
+    return {a["id"]: quadsect_check.check_answer(a) for a, _ in answers}
+
+
+def check(answer):
+    """The verdict on an answer re-serialized as an answer line."""
+    return quadsect_check.check_line(json.dumps(answer))
+
+
+# ---- 1. the corpus ------------------------------------------------------
+
+
+def test_corpus_has_no_rejection(answers, verdicts):
+    rejected = [(v["id"], v["reason"]) for v in verdicts.values() if v["status"] == "rejected"]
+    assert not rejected, "rejected answers:\n" + "\n".join(f"  {i}: {r}" for i, r in rejected)
+    by_op = {}
+    for a, req in answers:
+        if a.get("ok"):
+            by_op.setdefault(req["op"], []).append((a, verdicts[a["id"]]))
+    for op in ("natural", "tangent", "roots", "resultant"):
+        assert by_op.get(op), f"no {op} answer in the corpus"
+    not_verified = [(a["id"], v["status"], v["trusted"]) for op in ("roots", "resultant") for a, v in by_op[op]
+                    if v["status"] != "verified"]
+    assert not not_verified, f"roots/resultant answers not verified: {not_verified}"
+    inter = [(a, v) for a, v in by_op["tangent"] if a["result"].get("verdict") == "intersecting"]
+    assert inter
+    bad = [a["id"] for a, v in inter if not any(c.startswith("intersecting:") for c in v["checked"])]
+    assert not bad, f"intersecting answers without the two witnesses re-proved: {bad}"
+    empty_trust = [v["id"] for v in verdicts.values() if v["status"] == "partial" and not v["trusted"]]
+    assert not empty_trust, f"partial answers without a trusted list: {empty_trust}"
+
+
+# ---- 2. mutations -------------------------------------------------------
+
+
+def _is_zero(v):
+    if isinstance(v, dict):
+        return Fraction(v["a"]) == 0 and Fraction(v["b"]) == 0
+    return Fraction(v) == 0
+
+
+def _shift(v, delta):
+    """v + delta (on the "a" part of {a, b, d})."""
+    if isinstance(v, dict):
+        w = dict(v)
+        w["a"] = str(Fraction(v["a"]) + delta)
+        w.pop("approx", None)
+        return w
+    return str(Fraction(v) + delta)
+
+
+def _scale(v, k):
+    if isinstance(v, dict):
+        w = dict(v)
+        w["a"], w["b"] = str(Fraction(v["a"]) * k), str(Fraction(v["b"]) * k)
+        w.pop("approx", None)
+        return w
+    return str(Fraction(v) * k)
+
+
+def _exact(x):
+    """Whether a value tree holds only numbers this checker re-proves
+    (no real algebraic number of higher degree)."""
+    if isinstance(x, dict):
+        return "poly" not in x and all(_exact(v) for k, v in x.items() if k != "f64")
+    if isinstance(x, list):
+        return all(_exact(v) for v in x)
+    return True
+
+
+def _op(answer):
+    return json.loads(answer["request"]).get("op")
+
+
+def _res(answer, op):
+    """The result to mutate: an ok answer of ``op`` with a decided claim."""
+    if not answer.get("ok") or _op(answer) != op:
+        return None
+    r = answer["result"]
+    if r.get("class") == "undecided" or r.get("verdict") == "undecided":
+        return None
+    return r
+
+
+def _components_listed(answer):
+    r = _res(answer, "natural")
+    return r if r is not None and isinstance(r.get("components"), list) else None
+
+
+def _variants(answer, edit, keys):
+    """One deep copy per key, changed by ``edit(result_copy, key)`` (which
+    returns False when the key does not apply)."""
+    out = []
+    for k in keys:
+        m = copy.deepcopy(answer)
+        if edit(m["result"], k) is not False:
+            out.append(m)
+    return out
+
+
+def _each_component(answer, ctype, pred=lambda c: True):
+    r = _components_listed(answer)
+    if r is None:
+        return []
+    return [j for j, c in enumerate(r["components"])
+            if isinstance(c, dict) and c.get("type") == ctype and _exact(c) and pred(c)]
+
+
+# natural
+
+
+def mut_natural_class(answer):
+    r = _res(answer, "natural")
+    if r is None or (r.get("components") is None and r["class"] != "same-surface"):
+        return []  # class and counts only: nothing to check them against
+    return _variants(answer, lambda res, c: res.__setitem__("class", c), [c for c in CLASSES if c != r["class"]])
+
+
+def mut_natural_count(answer):
+    if _components_listed(answer) is None:
+        return []
+    return _variants(answer, lambda res, k: res.__setitem__(k, res[k] + 1), ["conics", "lines", "points"])
+
+
+def mut_conic_offset(answer):
+    def edit(res, j):
+        pl = res["components"][j]["plane"]
+        pl["offset"] = _shift(pl["offset"], 1)
+    return _variants(answer, edit, _each_component(answer, "conic"))
+
+
+def mut_conic_center(answer):
+    def edit(res, jk):
+        j, k = jk
+        c = res["components"][j]
+        key = "vertex" if c["conic"] == "parabola" else "center"
+        c[key][k] = _shift(c[key][k], 1)
+    return _variants(answer, edit, [(j, k) for j in _each_component(answer, "conic") for k in range(3)])
+
+
+def mut_conic_semi_axis(answer):
+    def edit(res, jk):
+        j, k = jk
+        s = res["components"][j]["semi_axes2"]
+        s[k] = _scale(s[k], 2)
+    keys = [(j, k) for j in _each_component(answer, "conic", lambda c: c["conic"] != "parabola") for k in range(2)]
+    return _variants(answer, edit, keys)
+
+
+def mut_parabola_focal(answer):
+    def edit(res, j):
+        c = res["components"][j]
+        c["focal_length2"] = _scale(c["focal_length2"], 2)
+    return _variants(answer, edit, _each_component(answer, "conic", lambda c: c["conic"] == "parabola"))
+
+
+def mut_parabola_axis(answer):
+    def edit(res, j):
+        c = res["components"][j]
+        c["axis_directions"][0] = [_scale(v, -1) for v in c["axis_directions"][0]]
+    return _variants(answer, edit, _each_component(answer, "conic", lambda c: c["conic"] == "parabola"))
+
+
+def _off_direction(d):
+    """The coordinates k for which d + e_k is not parallel to d (d not a
+    multiple of e_k): moving a point by e_k leaves the line."""
+    return [k for k in range(3) if any(not _is_zero(d[i]) for i in range(3) if i != k)]
+
+
+def mut_line_point(answer):
+    def edit(res, jk):
+        j, k = jk
+        c = res["components"][j]
+        c["point"][k] = _shift(c["point"][k], 1)
+    comps = (_components_listed(answer) or {}).get("components", [])
+    keys = [(j, k) for j in _each_component(answer, "line") for k in _off_direction(comps[j]["direction"])]
+    return _variants(answer, edit, keys)
+
+
+def mut_line_direction(answer):
+    def edit(res, jk):
+        j, k = jk
+        c = res["components"][j]
+        c["direction"][k] = _shift(c["direction"][k], 1)
+    comps = (_components_listed(answer) or {}).get("components", [])
+    keys = [(j, k) for j in _each_component(answer, "line") for k in _off_direction(comps[j]["direction"])]
+    return _variants(answer, edit, keys)
+
+
+def mut_point(answer):
+    def edit(res, jk):
+        j, k = jk
+        c = res["components"][j]
+        c["point"][k] = _shift(c["point"][k], 1)
+    return _variants(answer, edit, [(j, k) for j in _each_component(answer, "point") for k in range(3)])
+
+
+def mut_branch_c(answer):
+    def edit(res, jk):
+        j, k = jk
+        al = res["components"][j]["branches"][k]["along_ruling"]
+        al["c"] = _shift(al["c"], 1)
+    comps = (_components_listed(answer) or {}).get("components", [])
+    keys = [(j, k) for j in _each_component(answer, "curve") for k in range(len(comps[j].get("branches") or []))]
+    return _variants(answer, edit, keys)
+
+
+def mut_singular_point(answer):
+    def edit(res, jkl):
+        j, k, l = jkl
+        p = res["components"][j]["singular_points"][k]["point"]
+        p[l] = _shift(p[l], 1)
+    comps = (_components_listed(answer) or {}).get("components", [])
+    keys = [(j, k, l) for j in _each_component(answer, "curve")
+            for k in range(len(comps[j].get("singular_points") or [])) for l in range(3)]
+    return _variants(answer, edit, keys)
+
+
+def mut_drop_component(answer):
+    r = _components_listed(answer)
+    if r is None:
+        return []
+    return _variants(answer, lambda res, j: res["components"].pop(j), range(len(r["components"])))
+
+
+# tangent
+
+_FLAGS = {"intersecting": (True, False), "touching": (True, True), "separated": (False, False)}
+
+
+def _set_verdict(res, verdict):
+    res["verdict"] = verdict
+    res["intersect"], res["touching"] = _FLAGS[verdict]
+
+
+def mut_tangent_verdict(answer):
+    r = _res(answer, "tangent")
+    if r is None or r.get("verdict") not in ("intersecting", "separated"):
+        return []
+    if r["verdict"] == "separated":
+        def edit(res, _):
+            _set_verdict(res, "intersecting")
+            res["side"] = None
+        return _variants(answer, edit, [None])
+
+    def edit(res, side):
+        _set_verdict(res, "separated")
+        res["side"] = side
+    return _variants(answer, edit, [None, "+", "-"])
+
+
+def _witnesses(answer):
+    r = _res(answer, "tangent")
+    cert = (r or {}).get("certificate") or {}
+    return [k for k in ("witness_negative", "witness_positive") if isinstance(cert.get(k), dict) and _exact(cert[k])]
+
+
+def mut_witness_point(answer):
+    def edit(res, wk):
+        w, k = wk
+        p = res["certificate"][w]["point"]
+        p[k] = _shift(p[k], Fraction(1, 7))
+    return _variants(answer, edit, [(w, k) for w in _witnesses(answer) for k in range(3)])
+
+
+def mut_witness_sign(answer):
+    def edit(res, w):
+        res["certificate"][w]["sign"] = -res["certificate"][w]["sign"]
+    return _variants(answer, edit, _witnesses(answer))
+
+
+def mut_witness_drop(answer):
+    r = _res(answer, "tangent")
+    if r is None or r.get("verdict") != "intersecting":
+        return []
+    return _variants(answer, lambda res, w: res["certificate"].__setitem__(w, None), _witnesses(answer))
+
+
+def mut_tangent_side(answer):
+    r = _res(answer, "tangent")
+    if r is None or r.get("verdict") != "separated":
+        return []
+    return _variants(answer, lambda res, _: res.__setitem__("side", "-" if res["side"] == "+" else "+"), [None])
+
+
+def mut_s_lemma(answer):
+    """τ moved far out of the interval where side·(S − τE) is definite (for
+    large |τ| it has the signature of −τE: indefinite), or the side flipped
+    under it."""
+    r = _res(answer, "tangent")
+    lemma = ((r or {}).get("certificate") or {}).get("s_lemma")
+    if not lemma:
+        return []
+    tau = Fraction(lemma["tau"])
+
+    def edit(res, k):
+        if k == "side":
+            res["side"] = "-" if res["side"] == "+" else "+"
+        else:
+            res["certificate"]["s_lemma"]["tau"] = str(tau + k)
+    return _variants(answer, edit, [10**9, -(10**9), "side"])
+
+
+def mut_tangent_extreme(answer):
+    """A printed minimum or maximum replaced by another rational, where the
+    checker re-proves that extreme (a witness at it, the S-lemma form
+    semidefinite)."""
+    r = _res(answer, "tangent")
+    if r is None:
+        return []
+    proved = [k for k in ("min", "max") if any(c.startswith(f"{k} = S at a witness") for c in check(answer)["checked"])]
+
+    def edit(res, k):
+        res[k] = {"poly": "u - 12345", "interval": ["12345", "12345"], "approx": "12345"}
+    return _variants(answer, edit, proved)
+
+
+def mut_member_plane(answer):
+    """A plane of the natural certificate's pencil member moved."""
+    r = _res(answer, "natural")
+    planes = (((r or {}).get("certificate") or {}).get("planes")) or []
+
+    def edit(res, j):
+        res["certificate"]["planes"][j]["offset"] = _shift(res["certificate"]["planes"][j]["offset"], 1)
+    return _variants(answer, edit, range(len(planes)))
+
+
+# roots
+
+
+def _intervals(answer):
+    r = _res(answer, "roots")
+    return (r or {}).get("intervals") or []
+
+
+def mut_roots_shift(answer):
+    ivs = _intervals(answer)
+    if not ivs:
+        return []
+
+    def edit(res, _):
+        hi = Fraction(res["intervals"][-1][1])
+        res["intervals"][-1] = [str(hi + 1), str(hi + 2)]
+    return _variants(answer, edit, [None])
+
+
+def mut_roots_count(answer):
+    if _res(answer, "roots") is None:
+        return []
+    keys = ["distinct_real", "positive", "negative", "zero_multiplicity", "real_with_multiplicity"]
+    return _variants(answer, lambda res, k: res.__setitem__(k, res[k] + 1), keys)
+
+
+def mut_roots_multiplicity(answer):
+    def edit(res, j):
+        res["multiplicities"][j] += 1
+    return _variants(answer, edit, range(len(_intervals(answer))))
+
+
+def mut_roots_descartes(answer):
+    if _res(answer, "roots") is None:
+        return []
+    keys = ["descartes_positive_bound", "descartes_negative_bound"]
+    return _variants(answer, lambda res, k: res.__setitem__(k, res[k] + 1), keys)
+
+
+def mut_roots_drop(answer):
+    def edit(res, j):
+        res["intervals"].pop(j)
+        res["multiplicities"].pop(j)
+    return _variants(answer, edit, range(len(_intervals(answer))))
+
+
+# resultant
+
+
+def mut_resultant_value(answer):
+    if _res(answer, "resultant") is None:
+        return []
+    return _variants(answer, lambda res, _: res.__setitem__("resultant", res["resultant"] + " + 1"), [None])
+
+
+def mut_resultant_degree(answer):
+    if _res(answer, "resultant") is None:
+        return []
+    return _variants(answer, lambda res, _: res.__setitem__("degree", res["degree"] + 1), [None])
+
+
+# any op: the certificate of another input
+
+
+def _normalized(p):
+    """A polynomial up to a non-zero constant factor (as a frozenset)."""
+    if not p:
+        return frozenset()
+    c = p[min(p)]
+    return frozenset((e, v / c) for e, v in p.items())
+
+
+def _input_key(req):
+    """What an answer is about: the surfaces' equations (up to a constant,
+    unordered for natural) or the polynomials, plus the other options."""
+    op, fm = req["op"], req.get("float", False) is True
+    try:
+        if op == "natural":
+            geo = frozenset(_normalized(natural.quadric(req[k], fm)) for k in ("a", "b"))
+        elif op == "tangent":
+            geo = tuple(_normalized(poly.parse(req[k], fm)) for k in ("ellipsoid", "surface"))
+        elif op == "roots":
+            geo = _normalized(poly.parse(req["poly"]))
+        else:
+            geo = (frozenset(poly.parse(req["f"]).items()), frozenset(poly.parse(req["g"]).items()), req["var"])
+    except Exception:
+        geo = tuple(req.get(k) for k in GEOMETRY[op])
+    return geo
+
+
+def _has_claims(answer):
+    r = answer["result"]
+    op = _op(answer)
+    if op == "natural":  # a component the checker can refute (exact data)
+        return any(isinstance(c, dict) and _exact(c) for c in r.get("components") or [])
+    if op == "tangent":
+        cert = r.get("certificate") or {}
+        return cert.get("witness_negative") is not None or cert.get("witness_positive") is not None
+    if op == "roots":
+        return bool(r.get("intervals"))
+    return True
+
+
+def make_swap(corpus):
+    """The mutator "request of another answer": the next answer of the same
+    op (corpus order, cyclic) with the same options, another input and
+    another result; its request with this answer's id."""
+    ok = [a for a in corpus if a.get("ok")]
+    reqs = {id(a): json.loads(a["request"]) for a in ok}
+    keys = {id(a): _input_key(reqs[id(a)]) for a in ok}
+
+    def options(req):
+        return {k: v for k, v in req.items() if k != "id" and k not in GEOMETRY.get(req.get("op"), ())}
+
+    def mut_swap_request(answer):
+        if not answer.get("ok") or id(answer) not in reqs or not _has_claims(answer):
+            return []
+        if _res(answer, _op(answer)) is None:
+            return []
+        req = reqs[id(answer)]
+        i = next(n for n, a in enumerate(ok) if a is answer)
+        for donor in ok[i + 1:] + ok[:i]:
+            dreq = reqs[id(donor)]
+            if dreq.get("op") != req["op"] or options(dreq) != options(req):
+                continue
+            if keys[id(donor)] == keys[id(answer)] or donor["result"] == answer["result"]:
+                continue
+            m = copy.deepcopy(answer)
+            m["request"] = json.dumps({**dreq, "id": answer["id"]}, separators=(",", ":"))
+            return [m]
+        return []
+
+    return mut_swap_request
+
+
+MUTATORS = [
+    mut_natural_class, mut_natural_count, mut_conic_offset, mut_conic_center, mut_conic_semi_axis,
+    mut_parabola_focal, mut_parabola_axis, mut_line_point, mut_line_direction, mut_point, mut_branch_c,
+    mut_singular_point, mut_drop_component,
+    mut_tangent_verdict, mut_witness_point, mut_witness_sign, mut_witness_drop, mut_tangent_side,
+    mut_s_lemma, mut_member_plane, mut_tangent_extreme,
+    mut_roots_shift, mut_roots_count, mut_roots_multiplicity, mut_roots_descartes, mut_roots_drop,
+    mut_resultant_value, mut_resultant_degree,
+]
+
+
+def _stratum(answer):
+    """Answers of a kind (op, class or verdict, component types): the sample
+    takes them in turn so that every kind is mutated."""
+    r = answer.get("result") or {}
+    comps = r.get("components") or []
+    kinds = tuple(sorted({(c.get("type"), c.get("conic")) for c in comps if isinstance(c, dict)}, key=str))
+    return (_op(answer), r.get("class") or r.get("verdict"), kinds)
+
+
+def _sample(pairs, n):
+    """At most n of the (answer, mutants) pairs, round-robin over strata
+    (corpus order within each): deterministic."""
+    strata = {}
+    for p in pairs:
+        strata.setdefault(_stratum(p[0]), []).append(p)
+    queues = list(strata.values())
+    out = []
+    while len(out) < n and any(queues):
+        for q in queues:
+            if q and len(out) < n:
+                out.append(q.pop(0))
+    return out
+
+
+def test_mutations_are_rejected(answers, verdicts):
+    corpus = [a for a, _ in answers if verdicts[a["id"]]["status"] != "rejected"]
+    mutators = MUTATORS + [make_swap(corpus)]
+    applied, survivors = {}, []
+    for mut in mutators:
+        kind = mut.__name__
+        pairs = [(a, ms) for a in corpus for ms in [mut(a)] if ms]
+        applied[kind] = 0
+        for a, ms in _sample(pairs, SAMPLE):
+            for m in ms:
+                assert m != a
+                applied[kind] += 1
+                v = check(m)
+                if v["status"] != "rejected":
+                    survivors.append((kind, a["id"], v["status"], v["trusted"] or v["reason"]))
+    print("mutated answers checked:", applied)
+    never = [k for k, n in applied.items() if n == 0]
+    assert not never, f"mutators never applied: {never}"
+    assert not survivors, f"{len(survivors)} mutated answers not rejected:\n" + "\n".join(
+        f"  {k} on {i}: {s}, {t}" for k, i, s, t in survivors)
+
+
+# ---- 3. the checker's pieces --------------------------------------------
+
+
+def test_parse_rational():
+    assert exact.parse_rational("0x1.8p3") == 12
+    assert exact.parse_rational("-2.5e-3") == Fraction(-1, 400)
+    assert exact.parse_rational("1/3") == Fraction(1, 3)
+    # float mode: each literal rounded on its own, then divided exactly
+    assert exact.parse_rational("1/3", float_mode=True) == Fraction(1, 3)
+    assert exact.parse_rational("1.77777777777") == Fraction(177777777777, 10**11)
+    assert exact.parse_rational("1.77777777777", float_mode=True) == Fraction(1.77777777777)
+    assert exact.parse_rational("1.77777777777", float_mode=True) != Fraction(177777777777, 10**11)
+    for bad in ("1/0", "0x", "1e", "x", "1/", "--1"):
+        with pytest.raises(exact.CheckError):
+            exact.parse_rational(bad)
+
+
+def test_poly_parse():
+    X = lambda ex, ey, ez: (ex, ey, ez, 0)  # noqa: E731
+    want = {X(2, 0, 0): Fraction(2), X(1, 1, 0): Fraction(-3), X(1, 0, 0): Fraction(-2), X(0, 1, 0): Fraction(3),
+            X(0, 0, 0): Fraction(3), X(1, 1, 1): Fraction(1, 2)}
+    assert poly.parse("2x^2 - 3(x-1)(y+1) + x y z/2 - -x") == want
+    assert poly.parse("x - x") == {}
+    for bad in ("x^", "x/y", "(x", "x +"):
+        with pytest.raises(exact.CheckError):
+            poly.parse(bad)
+
+
+def test_qs_sign():
+    assert exact.QS(1, -1, 2).sign() == -1
+    assert exact.QS(3, -2, 2).sign() == 1
+    assert exact.QS(-3, 2, 2).sign() == -1
+    assert exact.QS(0, -1, 2).sign() == -1
+    assert exact.QS(2, -1, 4).sign() == 0
+
+
+def test_sturm_counts():
+    p = [Fraction(1, 3), Fraction(-2), Fraction(0), Fraction(1)]  # x^3 - 2x + 1/3
+    seq = poly.sturm_sequence(p)
+    assert poly.sturm_count(seq, "-inf", "+inf") == 3
+    assert [poly.sturm_count(seq, Fraction(a), Fraction(b)) for a, b in ((-2, -1), (0, 1), (1, 2))] == [1, 1, 1]
+    assert poly.sturm_count(seq, Fraction(2), "+inf") == 0
+
+
+def _cli(text):
+    pkg_root = str(Path(quadsect_check.__file__).resolve().parents[1])
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([pkg_root] + [p for p in [os.environ.get("PYTHONPATH")] if p]))
+    return subprocess.run([sys.executable, "-m", "quadsect_check", "-"], input=text, capture_output=True,
+                          text=True, env=env, timeout=120)
+
+
+def test_cli(answers, verdicts):
+    good = next(a for a, req in answers if req["op"] == "roots" and verdicts[a["id"]]["status"] == "verified"
+                and a["result"]["intervals"])
+    out = _cli(json.dumps(good) + "\n")
+    assert out.returncode == 0, out.stderr
+    lines = out.stdout.splitlines()
+    assert lines[-1] == "1 verified, 0 partial, 0 rejected"
+    assert json.loads(lines[0])["status"] == "verified"
+    bad = copy.deepcopy(good)
+    bad["result"]["distinct_real"] += 1
+    out = _cli(json.dumps(good) + "\n\n" + json.dumps(bad) + "\n")
+    assert out.returncode == 1, out.stderr
+    lines = out.stdout.splitlines()
+    assert lines[-1] == "1 verified, 0 partial, 1 rejected"
+    assert [json.loads(l)["status"] for l in lines[:-1]] == ["verified", "rejected"]
