@@ -127,9 +127,74 @@ def extreme_at(e, s, w):
     return None
 
 
+def _rational_roots(f):
+    """The rational roots of f (ascending Fractions) among its real roots:
+    each real root is isolated (Sturm), narrowed by bisection, and its
+    simplest nearby fraction kept if it is an exact root."""
+    from .pencil import _isolate
+
+    if len(f) < 2:
+        return []
+    sqf = P.u_divmod(f, P.u_gcd(f, P.u_deriv(f)))[0]
+    seq = P.sturm_sequence(sqf)
+    bound = 1 + max(abs(c / sqf[-1]) for c in sqf[:-1])
+    out = []
+    for lo, hi in _isolate(seq, -bound, bound):
+        for _ in range(200):
+            if P.u_eval(sqf, hi) == 0 or P.u_eval(sqf, lo) == 0:
+                break
+            mid = (lo + hi) / 2
+            if P.sturm_count(seq, lo, mid) == 1:
+                hi = mid
+            else:
+                lo = mid
+        for cand in (lo, hi, ((lo + hi) / 2).limit_denominator(10**40)):
+            if P.u_eval(sqf, cand) == 0 and cand not in out:
+                out.append(cand)
+                break
+    return out
+
+
+def extreme_by_multiplier(e, s, alg, kind):
+    """For S of degree ≤ 2 and a rational printed extreme v: a rational λ
+    (a root of det(S − v − λE), found here) with S − v − λE positive
+    (negative) semidefinite proves S ≥ v (≤ v) on E = 0; a kernel vector
+    of it that is a point of E proves v attained.  True when proved."""
+    from .kernel import _det
+    from .pencil import _interpolate, charpoly_signs, kernel
+
+    lo, hi = (parse_rational(x) for x in alg.get("interval") or [])
+    if lo != hi:
+        return False
+    v = lo
+    me, ms = form_matrix(e), form_matrix(s)
+
+    def member(lam):
+        m = [[ms[a][b] - lam * me[a][b] for b in range(4)] for a in range(4)]
+        m[3][3] -= v
+        return m
+
+    f = _interpolate([_det(member(Fraction(t))) for t in range(5)])
+    for lam in _rational_roots(f):
+        m = member(lam)
+        pos, neg, _ = charpoly_signs(m)
+        if (kind == "min" and neg) or (kind == "max" and pos):
+            continue
+        for k in kernel(m, 4):
+            if not k[3].is_zero():
+                p = [k[i] / k[3] for i in range(3)]
+                if P.evaluate(e, p).is_zero():
+                    return True
+    return False
+
+
 def _values(e, s, res, witnesses):
     """The claims on min and max: re-proved for S of degree ≤ 2 at a
     witness sitting at that extreme, else trusted."""
+    crit = (res.get("certificate") or {}).get("critical_values") or []
+    strip = lambda a: {k: a.get(k) for k in ("poly", "interval")} if isinstance(a, dict) else a  # noqa: E731
+    if crit and res.get("min") is not None and (strip(res["min"]) != strip(crit[0]) or strip(res["max"]) != strip(crit[-1])):
+        raise CheckError("min and max are not the first and last of the critical values")
     proved = []
     for w in witnesses:
         if w is None:
@@ -146,9 +211,13 @@ def _values(e, s, res, witnesses):
             if not _alg_equals(res.get(kind), v, kind):
                 raise CheckError(f"the witness proves the {kind} is {v}, not the printed one")
             proved.append(kind)
+    if P.degree(s) <= 2:
+        for kind in ("min", "max"):
+            if kind not in proved and res.get(kind) and extreme_by_multiplier(e, s, res[kind], kind):
+                proved.append(kind)
     proved = sorted(set(proved), key=["min", "max"].index)
     trusted = [k for k in ("min", "max") if k not in proved]
-    checked = [f"{k} = S at a witness, and S − {k} − λE semidefinite (S-lemma)" for k in proved]
+    checked = [f"{k}: S − {k} − λE semidefinite with a zero on E (at a witness, or λ found by the checker)" for k in proved]
     return checked, ([f"{' and '.join(trusted)} (the critical values)"] if trusted else [])
 
 

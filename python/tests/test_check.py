@@ -372,7 +372,7 @@ def mut_tangent_extreme(answer):
     r = _res(answer, "tangent")
     if r is None:
         return []
-    proved = [k for k in ("min", "max") if any(c.startswith(f"{k} = S at a witness") for c in check(answer)["checked"])]
+    proved = [k for k in ("min", "max") if any(c.startswith(f"{k}: S − ") for c in check(answer)["checked"])]
 
     def edit(res, k):
         res[k] = {"poly": "u - 12345", "interval": ["12345", "12345"], "approx": "12345"}
