@@ -130,7 +130,8 @@ fn answer_text(line: &str, budget: &Budget, echo: bool) -> String {
     match result {
         Ok(text) => {
             let id = id.to_string();
-            let request = echo.then(|| Value::String(line.to_string()).to_string());
+            // a JSON string literal of the line (a str always serializes)
+            let request = echo.then(|| serde_json::to_string(line).unwrap_or_default());
             let extra = request.as_ref().map_or(0, |r| r.len() + 12);
             let mut out = String::with_capacity(text.len() + id.len() + extra + 32);
             out.push_str("{\"id\":");

@@ -235,3 +235,17 @@ def parse_point(v, what):
     if not isinstance(v, list) or len(v) != 3:
         raise CheckError(f"{what}: expected three coordinates")
     return [parse_value(c, f"{what}[{i}]") for i, c in enumerate(v)]
+
+
+def sqrt_rational(r):
+    """√r for a rational r ≥ 0, in Q(√d): √(n/m) = √(n·m)/m."""
+    r = Fraction(r)
+    return QS(0, Fraction(1, r.denominator), r.numerator * r.denominator)
+
+
+def cross(u, v):
+    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+
+
+def dot(u, v):
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]

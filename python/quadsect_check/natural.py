@@ -8,10 +8,9 @@ syntax) with their contract equations, negative inside:
 * cone     |a|²·|P − V|² − (1 + t2)·((P − V)·a)²
 """
 
-from fractions import Fraction
 
 from . import poly as P
-from .exact import QS, CheckError, NotChecked, json_number, parse_point, parse_value
+from .exact import QS, CheckError, NotChecked, cross, dot, json_number, parse_point, parse_value, sqrt_rational
 
 FIELDS = {
     "sphere": ("center", "radius2"),
@@ -132,22 +131,12 @@ def proportional(p, q):
     return all(p[e] == c * q[e] for e in p)
 
 
-def _cross(u, v):
-    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
-
-
-def _dot(u, v):
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-
-
 def _on_surface_along(eq, origin, dirs, what):
     """eq (degree ≤ 2) restricted to origin + Σ t_k·dirs[k]: a dict of
     monomials in the t_k with Q(√d) coefficients, from the restricted form
     Tᵀ·M·T (M the 4×4 matrix of eq, T the columns (dirs[k], 0) and
     (origin, 1))."""
-    from .tangent import form_matrix
-
-    m = [[QS(x) for x in row] for row in form_matrix(eq)]
+    m = [[QS(x) for x in row] for row in P.form_matrix(eq)]
     cols = [list(d) + [QS(0)] for d in dirs] + [list(origin) + [QS(1)]]
     mc = [[sum((m[i][j] * c[j] for j in range(4) if not c[j].is_zero()), QS(0)) for i in range(4)] for c in cols]
     k = len(dirs)
@@ -204,14 +193,14 @@ def _conic_model(c, n):
             raise CheckError("a circle with unequal semi-axes")
         # s, t along d1, d2: s²|d1|²/a2 ± t²|d2|²/b2 = 1, scaled by a2·b2
         sgn = -1 if kind == "hyperbola" else 1
-        model = {(2, 0): _dot(d1, d1) * b2, (0, 2): _dot(d2, d2) * a2 * sgn, (0, 0): -(a2 * b2)}
+        model = {(2, 0): dot(d1, d1) * b2, (0, 2): dot(d2, d2) * a2 * sgn, (0, 0): -(a2 * b2)}
         return ctr, [d1, d2], model
     if kind == "parabola":
         v = parse_point(c.get("vertex"), "vertex")
         if len(dirs) != 1:
             raise CheckError("a parabola needs one axis direction")
         d1 = parse_point(dirs[0], "axis direction")
-        d2 = _cross(n, d1)
+        d2 = cross(n, d1)
         f2 = parse_value(c.get("focal_length2"), "focal_length2")
         return v, [d1, d2], ("parabola", f2)
     raise CheckError(f"unknown conic type {kind!r}")
@@ -232,12 +221,12 @@ def check_conic(c, eqs, what):
     if all(x.is_zero() for x in n):
         raise CheckError(f"{what}: zero plane normal")
     origin, dirs, model = _conic_model(c, n)
-    if not (_dot(n, origin) - off).is_zero():
+    if not (dot(n, origin) - off).is_zero():
         raise CheckError(f"{what}: the centre or vertex is not on the plane")
     for d in dirs:
-        if not _dot(n, d).is_zero() or all(x.is_zero() for x in d):
+        if not dot(n, d).is_zero() or all(x.is_zero() for x in d):
             raise CheckError(f"{what}: an axis direction is zero or not in the plane")
-    if not _dot(dirs[0], dirs[1]).is_zero():
+    if not dot(dirs[0], dirs[1]).is_zero():
         raise CheckError(f"{what}: the axis directions are not orthogonal")
     for name, eq in eqs:
         r = _on_surface_along(eq, origin, dirs, what)
@@ -247,10 +236,10 @@ def check_conic(c, eqs, what):
             if bad or (0, 2) not in r or (1, 0) not in r:
                 raise CheckError(f"{what}: {name} restricted to the plane is not a parabola with this vertex and axis")
             # k = −r_s·|d2|²/r_tt  (r_tt ≠ 0); k > 0 and k² = 16 f² |d1|²
-            num, den = -(r[(1, 0)] * _dot(dirs[1], dirs[1])), r[(0, 2)]
+            num, den = -(r[(1, 0)] * dot(dirs[1], dirs[1])), r[(0, 2)]
             if (num * den).sign() <= 0:
                 raise CheckError(f"{what}: the parabola does not open along its axis direction")
-            if not (num * num - den * den * f2 * _dot(dirs[0], dirs[0]) * 16).is_zero():
+            if not (num * num - den * den * f2 * dot(dirs[0], dirs[0]) * 16).is_zero():
                 raise CheckError(f"{what}: wrong focal length")
         else:
             _multiple_of(r, model, f"{what} on {name}")
@@ -278,7 +267,7 @@ def check_point(pt, eqs, what, singular):
             raise CheckError(f"{what}: not on {name}")
     if singular:
         ga, gb = ([P.evaluate(g, p) for g in P.gradient(eq)] for _, eq in eqs)
-        if any(not x.is_zero() for x in _cross(ga, gb)):
+        if any(not x.is_zero() for x in cross(ga, gb)):
             raise CheckError(f"{what}: the surfaces are transversal there (not a singular point)")
 
 
@@ -418,7 +407,7 @@ def _plane_of(c):
 
 def _same_plane(p, q):
     (n1, o1), (n2, o2) = p, q
-    return all(x.is_zero() for x in _cross(n1, n2)) and all((o1 * n2[i] - o2 * n1[i]).is_zero() for i in range(3))
+    return all(x.is_zero() for x in cross(n1, n2)) and all((o1 * n2[i] - o2 * n1[i]).is_zero() for i in range(3))
 
 
 def _complete(A, B, res, comps):
@@ -498,13 +487,11 @@ def _coaxial_member(A, B):
     c·ℓ² + b·ℓ + e, a product of the planes ℓ = r for the real roots r of
     c·r² + b·r + e.  Returns ((1, −t₀), planes), "empty" when there is no
     real root, or None."""
-    from .kernel import _det, _yun
-    from .pencil import _interpolate
-    from .tangent import form_matrix
+    from .kernel import _yun
+    from .pencil import det_poly
 
-    ma, mb = form_matrix(A), form_matrix(B)
-    vals = [_det([[ma[i][j] - t * mb[i][j] for j in range(3)] for i in range(3)]) for t in range(4)]
-    f = _interpolate(vals)
+    ma, mb = P.form_matrix(A), P.form_matrix(B)
+    f = det_poly(ma, mb, 3)
     if len(f) < 3:
         return None
     for g, k in _yun(f):
@@ -533,7 +520,7 @@ def _coaxial_member(A, B):
         if disc == 0:
             planes = [(nq, QS(-b / (2 * c)))]
         else:
-            sq = QS(0, Fraction(1, disc.denominator), disc.numerator * disc.denominator)
+            sq = sqrt_rational(disc)
             planes = [(nq, (QS(-b) + sq * s) / QS(2 * c)) for s in (1, -1)]
         return (QS(1), QS(-t0)), planes
     return None

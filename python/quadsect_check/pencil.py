@@ -21,7 +21,7 @@ listed components are all the real points:
 from fractions import Fraction
 
 from . import poly as P
-from .exact import QS, CheckError
+from .exact import QS, CheckError, cross, dot, sqrt_rational
 
 
 def _qs(x):
@@ -146,24 +146,16 @@ def _form3(q):
     return m
 
 
-def _cross(u, v):
-    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
-
-
-def _dot(u, v):
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-
-
 def section(eq, n, off):
     """The real affine zero set of the quadric eq in the plane n·P = off:
     ("empty",), ("conic",), ("point", P), ("lines", k) (k real affine lines,
     a double line counting once)."""
     n = [_qs(x) for x in n]
     off = _qs(off)
-    k = next(i for i in range(3) if not (_cross(n, [QS(int(i == j)) for j in range(3)])[0].is_zero() and _cross(n, [QS(int(i == j)) for j in range(3)])[1].is_zero() and _cross(n, [QS(int(i == j)) for j in range(3)])[2].is_zero()))
-    u = _cross(n, [QS(int(k == j)) for j in range(3)])
-    v = _cross(n, u)
-    nn = _dot(n, n)
+    axes = [[QS(int(i == j)) for j in range(3)] for i in range(3)]
+    u = next(w for w in (cross(n, a) for a in axes) if not all(x.is_zero() for x in w))
+    v = cross(n, u)
+    nn = dot(n, n)
     o = [x * off / nn for x in n]
     q = P.substitute_affine(eq, [[c] for c in o], [[u[i], v[i]] for i in range(3)])
     if not q:
@@ -178,7 +170,7 @@ def section(eq, n, off):
         # kernel: the cross product of two independent rows
         ker = None
         for i, j in ((0, 1), (0, 2), (1, 2)):
-            c = _cross(m[i], m[j])
+            c = cross(m[i], m[j])
             if not all(x.is_zero() for x in c):
                 ker = c
                 break
@@ -200,13 +192,13 @@ def in_plane(c, n, off, parse_point, parse_value):
         pl = c.get("plane") or {}
         cn = parse_point(pl.get("normal"), "normal")
         co = parse_value(pl.get("offset"), "offset")
-        return all(x.is_zero() for x in _cross(cn, n)) and all((co * n[i] - off * cn[i]).is_zero() for i in range(3))
+        return all(x.is_zero() for x in cross(cn, n)) and all((co * n[i] - off * cn[i]).is_zero() for i in range(3))
     if t == "line":
         p, d = parse_point(c.get("point"), "point"), parse_point(c.get("direction"), "direction")
-        return (_dot(n, p) - off).is_zero() and _dot(n, d).is_zero()
+        return (dot(n, p) - off).is_zero() and dot(n, d).is_zero()
     if t == "point":
         p = parse_point(c.get("point"), "point")
-        return (_dot(n, p) - off).is_zero()
+        return (dot(n, p) - off).is_zero()
     return False
 
 
@@ -239,42 +231,44 @@ def check_sections(eq, planes, comps, parse_point, parse_value):
                 p1, d1 = parse_point(l1["point"], "point"), parse_point(l1["direction"], "direction")
                 p2, d2 = parse_point(l2["point"], "point"), parse_point(l2["direction"], "direction")
                 diff = [x - y for x, y in zip(p2, p1)]
-                if all(x.is_zero() for x in _cross(d1, d2)) and all(x.is_zero() for x in _cross(d1, diff)):
+                if all(x.is_zero() for x in cross(d1, d2)) and all(x.is_zero() for x in cross(d1, diff)):
                     raise CheckError(f"{what}: the same line listed twice")
     if not all(used):
         raise CheckError("a listed component lies in none of the member's planes")
 
 
+def det_poly(ma, mb, n=4):
+    """Ascending coefficients of det(ma − t·mb) on the leading n×n blocks (a
+    polynomial of degree ≤ n), interpolated from its values at t = 0, …, n."""
+    from .kernel import _det
+
+    return _interpolate([_det([[ma[i][j] - t * mb[i][j] for j in range(n)] for i in range(n)]) for t in range(n + 1)])
+
+
+def real_roots(f):
+    """(q, its Sturm sequence, intervals (lo, hi] each holding exactly one
+    root of q) for the square-free part q of f (no intervals for a
+    constant), inside a Cauchy bound."""
+    if len(f) < 2:
+        return f, [], []
+    sqf = P.u_divmod(f, P.u_gcd(f, P.u_deriv(f)))[0]
+    seq = P.sturm_sequence(sqf)
+    bound = 1 + max(abs(c / sqf[-1]) for c in sqf[:-1])
+    return sqf, seq, _isolate(seq, -bound, bound)
+
+
 def definite_member(a, b):
     """A rational t with A − tB definite (as a form in (x, y, z, 1)), or
-    None when no member of the pencil is definite."""
-    from .tangent import _ldl_signs, form_matrix
+    None when no member of the pencil is definite: one candidate in each
+    gap between the real roots of det(A − tB) and beyond them."""
+    from .tangent import _ldl_signs
 
-    ma, mb = form_matrix(a), form_matrix(b)
-
-    def member(t):
-        return [[ma[i][j] - t * mb[i][j] for j in range(4)] for i in range(4)]
-
-    def det(t):
-        m = member(Fraction(t))
-        from .kernel import _det
-
-        return _det(m)
-
-    # det(A − tB) has degree ≤ 4: interpolate at t = 0..4
-    vals = [det(t) for t in range(5)]
-    coef = _interpolate(vals)
-    cands = [Fraction(0)]
-    if any(c != 0 for c in coef[1:]):
-        sqf = P.u_divmod(coef, P.u_gcd(coef, P.u_deriv(coef)))[0]
-        seq = P.sturm_sequence(sqf)
-        # isolate by bisection in a Cauchy bound
-        bound = 1 + max(abs(c / sqf[-1]) for c in sqf[:-1]) if len(sqf) > 1 else Fraction(1)
-        ivs = _isolate(seq, -bound, bound)
-        pts = sorted(x for iv in ivs for x in iv)
-        cands = [-bound - 1, bound + 1] + [(x + y) / 2 for x, y in zip(pts, pts[1:])]
+    ma, mb = P.form_matrix(a), P.form_matrix(b)
+    _, _, intervals = real_roots(det_poly(ma, mb))
+    pts = sorted(x for iv in intervals for x in iv)
+    cands = [pts[0] - 1, pts[-1] + 1] + [(x + y) / 2 for x, y in zip(pts, pts[1:])] if pts else [Fraction(0)]
     for t in cands:
-        s = _ldl_signs(member(t))
+        s = _ldl_signs([[ma[i][j] - t * mb[i][j] for j in range(4)] for i in range(4)])
         if s is not None and 0 not in s and len(set(s)) == 1:
             return t
     return None
@@ -322,16 +316,9 @@ def singular_member_points(a, b):
     kept if B vanishes there too).  Returns the real affine points (exact),
     or None when there is no such member."""
     from .kernel import _yun
-    from .tangent import form_matrix
 
-    ma, mb = form_matrix(a), form_matrix(b)
-    vals = []
-    for t in range(5):
-        m = [[ma[i][j] - t * mb[i][j] for j in range(4)] for i in range(4)]
-        from .kernel import _det
-
-        vals.append(_det(m))
-    f = _interpolate(vals)
+    ma, mb = P.form_matrix(a), P.form_matrix(b)
+    f = det_poly(ma, mb)
     if len(f) < 3:
         return None
     roots = []
@@ -375,8 +362,7 @@ def singular_member_points(a, b):
             elif disc.sign() > 0:
                 if disc.b:
                     return None  # nested radicals: beyond this checker
-                r = disc.a
-                sq = QS(0, Fraction(1, r.denominator), r.numerator * r.denominator)
+                sq = sqrt_rational(disc.a)
                 cand += [[k1[i] + ((-be + sq * sgn) / ga) * k2[i] for i in range(4)] for sgn in (1, -1)]
         pts = []
         for c in cand:

@@ -251,6 +251,25 @@ def substitute_affine(p, const_part, lin_parts):
     return {k: v for k, v in total.items() if not v.is_zero()}
 
 
+def form_matrix(p):
+    """The symmetric 4×4 matrix of a polynomial of degree ≤ 2 as a form in
+    (x, y, z, 1)."""
+    if degree(p) > 2 or any(k[3] for k in p):
+        raise CheckError("not a polynomial of degree ≤ 2 in x, y, z")
+    m = [[Fraction(0)] * 4 for _ in range(4)]
+    for k, c in p.items():
+        idx = [i for i in range(3) for _ in range(k[i])] or [3, 3]
+        if len(idx) == 1:
+            idx = [idx[0], 3]
+        i, j = idx
+        if i == j:
+            m[i][i] += c
+        else:
+            m[i][j] += c / 2
+            m[j][i] += c / 2
+    return m
+
+
 # ---- univariate polynomials: lists of Fractions, ascending -------------
 
 

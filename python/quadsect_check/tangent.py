@@ -24,29 +24,10 @@ def _ldl_signs(m):
     return signs
 
 
-def form_matrix(p):
-    """The symmetric 4×4 matrix of a polynomial of degree ≤ 2 as a form in
-    (x, y, z, 1)."""
-    if P.degree(p) > 2 or any(k[3] for k in p):
-        raise CheckError("not a polynomial of degree ≤ 2 in x, y, z")
-    m = [[Fraction(0)] * 4 for _ in range(4)]
-    for k, c in p.items():
-        idx = [i for i in range(3) for _ in range(k[i])] or [3, 3]
-        if len(idx) == 1:
-            idx = [idx[0], 3]
-        i, j = idx
-        if i == j:
-            m[i][i] += c
-        else:
-            m[i][j] += c / 2
-            m[j][i] += c / 2
-    return m
-
-
 def check_s_lemma(e, s, side, tau):
     """side·(S − τE) positive definite as a form in (x, y, z, 1) (every
     LDLᵀ pivot positive): on E = 0 it is side·S, so side·S > 0 on all of E."""
-    me, ms = form_matrix(e), form_matrix(s)
+    me, ms = P.form_matrix(e), P.form_matrix(s)
     m = [[side * (ms[i][j] - tau * me[i][j]) for j in range(4)] for i in range(4)]
     signs = _ldl_signs(m)
     if signs is None or signs != [1, 1, 1, 1]:
@@ -59,7 +40,7 @@ def check_ellipsoid(e):
     centre, so that E = 0 is a real ellipsoid, not empty nor a point."""
     if P.degree(e) != 2 or any(k[3] for k in e):
         raise CheckError("E is not a quadric in x, y, z")
-    m = form_matrix(e)
+    m = P.form_matrix(e)
     signs = _ldl_signs([row[:3] for row in m[:3]])
     if not signs or 0 in signs or len(set(signs)) != 1:
         raise CheckError("E's quadratic part is not definite: not an ellipsoid")
@@ -116,7 +97,7 @@ def extreme_at(e, s, w):
     lam = gs[i] / ge[i]
     if any(not (gs[k] - lam * ge[k]).is_zero() for k in range(3)):
         return None
-    me, ms = form_matrix(e), form_matrix(s)
+    me, ms = P.form_matrix(e), P.form_matrix(s)
     m = [[QS(ms[a][b]) - lam * QS(me[a][b]) for b in range(4)] for a in range(4)]
     m[3][3] = m[3][3] - v
     pos, neg, _ = charpoly_signs(m)
@@ -131,15 +112,11 @@ def _rational_roots(f):
     """The rational roots of f (ascending Fractions) among its real roots:
     each real root is isolated (Sturm), narrowed by bisection, and its
     simplest nearby fraction kept if it is an exact root."""
-    from .pencil import _isolate
+    from .pencil import real_roots
 
-    if len(f) < 2:
-        return []
-    sqf = P.u_divmod(f, P.u_gcd(f, P.u_deriv(f)))[0]
-    seq = P.sturm_sequence(sqf)
-    bound = 1 + max(abs(c / sqf[-1]) for c in sqf[:-1])
+    sqf, seq, intervals = real_roots(f)
     out = []
-    for lo, hi in _isolate(seq, -bound, bound):
+    for lo, hi in intervals:
         for _ in range(200):
             if P.u_eval(sqf, hi) == 0 or P.u_eval(sqf, lo) == 0:
                 break
@@ -160,21 +137,18 @@ def extreme_by_multiplier(e, s, alg, kind):
     (a root of det(S − v − λE), found here) with S − v − λE positive
     (negative) semidefinite proves S ≥ v (≤ v) on E = 0; a kernel vector
     of it that is a point of E proves v attained.  True when proved."""
-    from .kernel import _det
-    from .pencil import _interpolate, charpoly_signs, kernel
+    from .pencil import charpoly_signs, det_poly, kernel
 
     lo, hi = (parse_rational(x) for x in alg.get("interval") or [])
     if lo != hi:
         return False
-    v = lo
-    me, ms = form_matrix(e), form_matrix(s)
+    me, ms = P.form_matrix(e), P.form_matrix(s)
+    ms[3][3] -= lo  # S − v
 
     def member(lam):
-        m = [[ms[a][b] - lam * me[a][b] for b in range(4)] for a in range(4)]
-        m[3][3] -= v
-        return m
+        return [[ms[a][b] - lam * me[a][b] for b in range(4)] for a in range(4)]
 
-    f = _interpolate([_det(member(Fraction(t))) for t in range(5)])
+    f = det_poly(ms, me)
     for lam in _rational_roots(f):
         m = member(lam)
         pos, neg, _ = charpoly_signs(m)

@@ -245,45 +245,16 @@ pub(crate) fn primitive_direction(v: &EPoint) -> EPoint {
     })
 }
 
-/// Whether a normal is already what [`normalize_direction`] makes of it:
-/// coprime integers, the first non-zero one positive.
-fn is_primitive_normal(n: &EPoint) -> bool {
-    let mut g = BigInt::zero();
-    let mut first = true;
-    for c in n {
-        let Exact::Quad(x) = c else { return false };
-        if !x.is_rational() || !x.a.denom().is_one() {
-            return false;
-        }
-        let v = x.a.numer();
-        if first && !v.is_zero() {
-            if v.is_negative() {
-                return false;
-            }
-            first = false;
-        }
-        if !g.is_one() {
-            g = crate::number::gcd_z(&g, v);
-        }
-    }
-    g.is_one()
-}
-
 /// A plane with rational coefficients scaled to primitive integers (the
 /// normal as by [`normalize_direction`], the offset by the same factor);
 /// other planes unchanged.  The JSON and the C interface print planes so.
 pub fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
-    if is_primitive_normal(&p.normal) {
-        // already normalized (the planar construction normalizes once):
-        // k = 1
-        return (p.normal.clone(), p.offset.clone());
-    }
-    let mut all = p.normal.to_vec();
-    all.push(p.offset.clone());
-    let rat: Option<Vec<Q>> = all
+    let rat: Option<Vec<&Q>> = p
+        .normal
         .iter()
+        .chain(std::iter::once(&p.offset))
         .map(|c| match c {
-            Exact::Quad(x) if x.is_rational() => Some(x.a.clone()),
+            Exact::Quad(x) if x.is_rational() => Some(&x.a),
             _ => None,
         })
         .collect();
@@ -293,7 +264,7 @@ pub fn normalize_plane(p: &Plane) -> (EPoint, Exact) {
     // in integers: the normal times the lcm l of its denominators, divided
     // by the gcd g of those integers, the sign making the first non-zero
     // coordinate positive; the offset times the same k = ±l/g
-    let l = crate::number::denom_lcm(rat[..3].iter());
+    let l = crate::number::denom_lcm(rat[..3].iter().copied());
     let ints: [BigInt; 3] = std::array::from_fn(|i| rat[i].numer() * (&l / rat[i].denom()));
     let mut g = BigInt::zero();
     for v in &ints {

@@ -940,7 +940,7 @@ fn finish(
     }
     let s_lemma = match (verdict, side) {
         (Verdict::Separated, Some(sd)) if surface.total_degree().unwrap_or(0) <= 2 => {
-            slemma::s_lemma_tau(&e.poly, surface, sd)
+            slemma::s_lemma_tau(&e.form, surface, sd)
         }
         _ => None,
     };
