@@ -117,6 +117,9 @@ TANGENT = [
     ("x^2+y^2+z^2-1", "x^3 + y^3 + z^3 - 1/2"),
     ("x^2+4y^2+9z^2-1", "x^4+y^4+z^4-1/2"),
     ("18*x*x+-12*x*y+10*x*z+23*y*y+-24*y*z+14*z*z+-2*x+3*y+2*z-27", "x^4+y^4+z^4-1*x*y-2"),
+    # an ellipsoid written negative inside (the engine orients it)
+    ("1 - x^2 - 2y^2 - z^2", "(x-3)^2+y^2+z^2-1"),
+    ("-x^2-y^2-z^2+4", "x+y+z-10"),
     # repeated factors
     ("x^2+y^2+z^2-4", "(x y - z)^2"),
     ("x^2+y^2+z^2-4", "(x + y + z - 1)^2 (x - y)^3"),

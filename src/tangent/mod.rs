@@ -941,6 +941,8 @@ fn finish(
     let s_lemma = match (verdict, side) {
         (Verdict::Separated, Some(sd)) if surface.total_degree().unwrap_or(0) <= 2 => {
             slemma::s_lemma_tau(&e.form, surface, sd)
+                // τ of the oriented E; the certificate speaks of E as given
+                .map(|t| if e.negated { -t } else { t })
         }
         _ => None,
     };

@@ -109,6 +109,32 @@ mod tests {
         Some(tau)
     }
 
+    /// The certificate's τ refers to E as the user wrote it, also when the
+    /// engine oriented E the other way (negative inside): side·(S − τE) is
+    /// positive definite for the input polynomial.
+    #[test]
+    fn the_reported_tau_is_for_the_ellipsoid_as_given() {
+        for (e, s) in [
+            ("1 - x^2 - 2y^2 - z^2", "(x-3)^2+y^2+z^2-1"),
+            ("-x^2-y^2-z^2+4", "x+y+z-10"),
+            ("x^2+y^2+z^2-4", "x+y+z-10"),
+        ] {
+            let r = crate::tangent::decide_str(e, s).unwrap();
+            let tau = r
+                .certificate()
+                .s_lemma_tau()
+                .expect("a separated quadric pair");
+            let side = r.side.unwrap();
+            let (fe, fs) = (
+                QuadricForm::from_poly(&parse_poly(e).unwrap()).unwrap(),
+                QuadricForm::from_poly(&parse_poly(s).unwrap()).unwrap(),
+            );
+            let l = common_denominator(&[&fe, &fs]);
+            let m = member(&fs.int_matrix(&l), &fe.int_matrix(&l), side, tau);
+            assert!(positive_definite(&m), "{e} / {s}: τ = {tau}");
+        }
+    }
+
     #[test]
     fn separated_quadrics_have_a_tau_and_touching_ones_none() {
         // apart, nested both ways, a plane, an ellipsoid in a hyperboloid's gap
