@@ -5,10 +5,12 @@ accept (0 rejected).  Deterministic (fixed seed); no dependency.
 
     python3 scripts/check_corpus.py > corpus.jsonl
     ./target/release/quadsect batch --echo corpus.jsonl | PYTHONPATH=python python3 -m quadsect_check -
+    python3 scripts/check_corpus.py --random-natural 3000 7 > sample.jsonl   # a larger property sample
 
 The lines: every natural pair of benches/data/natural_pairs.json; the
 papers' examples (the commands `quadsect examples` runs, given here as
-batch lines); tangent cases — spheres, ellipsoids rotated by rational
+batch lines); a seeded random sample of natural pairs with small integer
+data (a property sample: whatever the engine answers must be accepted); tangent cases — spheres, ellipsoids rotated by rational
 rotations, planes, quadrics (ellipsoid pairs), cubics and quartics,
 intersecting, separated and touching, and surfaces with repeated factors —
 a seeded random sample of ellipsoid pairs and of quadric/cubic surfaces;
@@ -71,6 +73,35 @@ def natural_lines():
         yield line(id=f"natural-counts:{p['name']}", op="natural", a=p["a"], b=p["b"], components=False)
     yield line(id="natural-float", op="natural", a="cylinder point=0,0,0 axis=1,0,0 radius2=1",
                b="cylinder point=0,0,0 axis=0,1,0 radius2=1.0000000000000001", float=True)
+
+
+def random_natural_lines(rng, n=120):
+    """A seeded sample of natural pairs with small integer data, so that
+    coincidences are frequent: half of the second quadrics placed at a
+    point of {−1, 0, 1}³ (common vertices, vertices on the other surface,
+    tangencies, shared rulings)."""
+    def vec(r):
+        return [str(rng.randint(-r, r)) for _ in range(3)]
+
+    def axis():
+        while True:
+            a = vec(1)
+            if any(x != "0" for x in a):
+                return a
+
+    def quadric(base):
+        kind = rng.choice(["sphere", "cylinder", "cone", "cylinder", "cone"])
+        num = rng.choice(["1", "2", "3", "1/2", "4", "5/4", "9", "1/3"])
+        if kind == "sphere":
+            return {"kind": kind, "center": base, "radius2": num}
+        if kind == "cylinder":
+            return {"kind": kind, "point": base, "axis": axis(), "radius2": num}
+        return {"kind": kind, "vertex": base, "axis": axis(), "tan2": num}
+
+    for i in range(n):
+        a = quadric(vec(1))
+        b = quadric(vec(1) if rng.random() < 0.5 else vec(3))
+        yield line(id=f"natural-random:{i}", op="natural", a=a, b=b)
 
 
 EXAMPLES_NATURAL = [
@@ -182,10 +213,17 @@ def kernel_lines():
 def main():
     rng = random.Random(20261204)
     out = sys.stdout
+    if sys.argv[1:2] == ["--random-natural"]:  # N [SEED]: only a random natural sample
+        n, seed = int(sys.argv[2]), int(sys.argv[3]) if len(sys.argv) > 3 else 20261205
+        for l in random_natural_lines(random.Random(seed), n):
+            out.write(l + "\n")
+        return
     for l in natural_lines():
         out.write(l + "\n")
     for i, (a, b) in enumerate(EXAMPLES_NATURAL):
         out.write(line(id=f"natural-example:{i}", op="natural", a=a, b=b) + "\n")
+    for l in random_natural_lines(random.Random(20261205)):
+        out.write(l + "\n")
     for l in tangent_lines(rng):
         out.write(l + "\n")
     for l in kernel_lines():

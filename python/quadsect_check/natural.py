@@ -29,8 +29,9 @@ def _vec(v, float_mode, what):
 
 def quadric(spec, float_mode=False):
     """The equation (a polynomial) of a natural quadric given as in the
-    request: a JSON object or the short syntax ``cone vertex=0,0,0
-    axis=1,0,0 tan2=1/3``."""
+    request (a JSON object or the short syntax ``cone vertex=0,0,0
+    axis=1,0,0 tan2=1/3``), and its data ``(kind, point, axis, r2 or t2)``
+    (``None`` for a sphere)."""
     if isinstance(spec, str) and spec.strip().startswith("{"):
         import json
 
@@ -89,7 +90,7 @@ def quadric(spec, float_mode=False):
         r2 = num("radius2")
         if r2 <= 0:
             raise CheckError("radius2 must be positive")
-        return P.add(norm2p(diff(vec("center"))), P.const(r2), -1)
+        return P.add(norm2p(diff(vec("center"))), P.const(r2), -1), None
     axis = vec("axis")
     a2 = sum(c * c for c in axis)
     if a2 == 0:
@@ -98,13 +99,14 @@ def quadric(spec, float_mode=False):
         r2 = num("radius2")
         if r2 <= 0:
             raise CheckError("radius2 must be positive")
-        d = diff(vec("point"))
+        base = vec("point")
+        d = diff(base)
         cr = [
             P.add(P.scale(d[1], axis[2]), P.scale(d[2], axis[1]), -1),
             P.add(P.scale(d[2], axis[0]), P.scale(d[0], axis[2]), -1),
             P.add(P.scale(d[0], axis[1]), P.scale(d[1], axis[0]), -1),
         ]
-        return P.add(norm2p(cr), P.const(r2 * a2), -1)
+        return P.add(norm2p(cr), P.const(r2 * a2), -1), ("cylinder", base, axis, r2)
     angles = [k for k in ("tan2", "tan", "cos2", "sin2") if k in fields]
     if len(angles) != 1:
         raise CheckError("a cone needs exactly one of tan2, tan, cos2, sin2")
@@ -117,9 +119,10 @@ def quadric(spec, float_mode=False):
         if not 0 < v < 1:
             raise CheckError(f"{angles[0]} must lie in (0, 1)")
         t2 = (1 - v) / v if angles[0] == "cos2" else v / (1 - v)
-    d = diff(vec("vertex"))
+    base = vec("vertex")
+    d = diff(base)
     ax = dot(d, axis)
-    return P.add(P.scale(norm2p(d), a2), P.scale(P.mul(ax, ax), 1 + t2), -1)
+    return P.add(P.scale(norm2p(d), a2), P.scale(P.mul(ax, ax), 1 + t2), -1), ("cone", base, axis, t2)
 
 
 def proportional(p, q):
@@ -307,8 +310,8 @@ def check_branch(b, eqs, what):
 
 def check_natural(req, res):
     float_mode = req.get("float", False) is True
-    A = quadric(req.get("a"), float_mode)
-    B = quadric(req.get("b"), float_mode)
+    A, data_a = quadric(req.get("a"), float_mode)
+    B, data_b = quadric(req.get("b"), float_mode)
     eqs = [("a", A), ("b", B)]
     cls = res.get("class")
     checked, trusted = [], []
@@ -386,7 +389,10 @@ def check_natural(req, res):
             checked.append("counts and class agree with the components")
         if cls == "curve":
             checked.append("each branch has a real point on both quadrics")
-            trusted.append("curve: no other real component; singular point kinds")
+            try:
+                checked.extend(_check_curve(A, B, (data_a, data_b), comps))
+            except NotChecked as e:
+                trusted.append(f"curve: no other real component; singular point kinds ({e})")
         elif unchecked:
             trusted.append(f"{cls}: no real point besides the listed components")
         else:
@@ -524,3 +530,51 @@ def _coaxial_member(A, B):
             planes = [(nq, (QS(-b) + sq * s) / QS(2 * c)) for s in (1, -1)]
         return (QS(1), QS(-t0)), planes
     return None
+
+
+def _check_curve(A, B, data, comps):
+    """A ``curve`` answer's topology: no member of the pencil has rank ≤ 2
+    (so no conic, real or complex, lies on both quadrics; with no ruling on
+    both — the sweep's precondition — the curve is an irreducible quartic),
+    and the sweep over the rulings of a cylinder or cone (module ``sweep``)
+    gives the same number of real components, the same ``bounded`` flags
+    and the same singular points (kind, isolated) as the answer."""
+    from . import sweep
+
+    curves = [c for c in comps if c.get("type") == "curve"]
+    if len(curves) != 1 or len(comps) != 1:
+        raise NotChecked("a curve beside other components")
+    c = curves[0]
+    if not sweep.rank_two_free(P.form_matrix(A), P.form_matrix(B)):
+        raise CheckError("a member of the pencil has rank ≤ 2: the quadrics share a conic, not a quartic curve")
+    eqs = {0: A, 1: B}
+    order = sorted((i for i in (0, 1) if data[i]), key=lambda i: data[i][0] != "cylinder")
+    why = None
+    branches = c.get("branches") or []
+    for i in order:
+        try:
+            n, bounded, singular, located = sweep.curve_topology(*data[i], eqs[1 - i], branches)
+            break
+        except NotChecked as e:
+            why = why or e
+    else:
+        raise why or NotChecked("no cylinder or cone")
+    if c.get("degree") != 4:
+        raise CheckError(f"degree {c.get('degree')!r} for an irreducible quartic")
+    if c.get("real_components") != n:
+        raise CheckError(f"real_components is {c.get('real_components')!r}, the sweep finds {n}")
+    if len({key for key, _ in located}) != len(located):
+        raise CheckError("two branches' points lie on the same real component")
+    for k, (b, (_, bd)) in enumerate(zip(branches, located)):
+        if bool(b.get("bounded")) != bd:
+            raise CheckError(f"branch {k} is said {'' if b.get('bounded') else 'un'}bounded, its component is {'' if bd else 'un'}bounded")
+    if sorted(bd for _, bd in located) != bounded:
+        raise CheckError(f"bounded flags {sorted(bd for _, bd in located)}, the sweep finds {bounded}")
+    sing = sorted((s.get("kind"), bool(s.get("isolated"))) for s in c.get("singular_points") or [])
+    if sing != singular:
+        raise CheckError(f"singular points {sing}, the sweep finds {singular}")
+    return [
+        "curve: irreducible quartic (no member of rank ≤ 2)",
+        "curve: real components, bounded flags and singular points (sweep over the rulings)",
+        "curve: one branch point on each real component",
+    ]

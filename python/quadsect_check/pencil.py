@@ -202,6 +202,22 @@ def in_plane(c, n, off, parse_point, parse_value):
     return False
 
 
+def _on_listed(p, comps, parse_point, parse_value):
+    """Whether the point p lies on a listed line, or in a listed conic's
+    plane (a conic listed is the whole section of its plane, checked)."""
+    for c in comps:
+        if c.get("type") == "line":
+            q, d = parse_point(c.get("point"), "point"), parse_point(c.get("direction"), "direction")
+            if all(x.is_zero() for x in cross([a - b for a, b in zip(p, q)], d)):
+                return True
+        elif c.get("type") == "conic":
+            pl = c.get("plane") or {}
+            n, off = parse_point(pl.get("normal"), "normal"), parse_value(pl.get("offset"), "offset")
+            if (dot(n, p) - off).is_zero():
+                return True
+    return False
+
+
 def check_sections(eq, planes, comps, parse_point, parse_value):
     """Every plane's section of eq is exactly the components listed in it,
     and every component lies in one of the planes."""
@@ -217,6 +233,8 @@ def check_sections(eq, planes, comps, parse_point, parse_value):
             raise CheckError(f"{what} is empty but components are listed in it")
         if sec[0] == "conic" and kinds != ["conic"]:
             raise CheckError(f"{what} is a real conic, listed as {kinds}")
+        if sec[0] == "point" and not kinds and _on_listed(sec[1], comps, parse_point, parse_value):
+            continue  # a common vertex, on lines (or a conic) of another plane
         if sec[0] == "point":
             if kinds != ["point"]:
                 raise CheckError(f"{what} is one real point, listed as {kinds}")

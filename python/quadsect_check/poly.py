@@ -375,7 +375,8 @@ def _prem(a, b):
 def sturm_sequence(a):
     """A Sturm sequence of a (positive rational multiples of the classical
     one −rem(p_{i−1}, p_i): the signs, hence the counts, are the same),
-    computed by pseudo-remainders over Z with the content removed."""
+    computed by pseudo-remainders over Z with the content removed: lists
+    of integers."""
     seq = [_primitive_int(u_trim(a)), _primitive_int(u_deriv(a))]
     while len(seq[-1]) > 1 or seq[-1] != [0]:
         a_, b_ = seq[-2], seq[-1]
@@ -389,7 +390,7 @@ def sturm_sequence(a):
         seq.append([-s * c for c in _primitive_int([Fraction(c) for c in r])])
         if len(seq[-1]) == 1:
             break
-    return [[Fraction(c) for c in p] for p in seq]
+    return seq
 
 
 def _sign_changes(values):
@@ -402,7 +403,16 @@ def _signs_at(seq, x):
         return [c[-1] * (-1) ** (len(c) - 1) for c in seq]
     if x == "+inf":
         return [c[-1] for c in seq]
-    return [u_eval(c, x) for c in seq]
+    x = Fraction(x)
+    p, q = x.numerator, x.denominator
+    out = []
+    for c in seq:  # q^n·c(p/q) in integers (the same sign, q > 0)
+        acc, qq = c[-1], 1
+        for k in range(len(c) - 2, -1, -1):
+            qq *= q
+            acc = acc * p + c[k] * qq
+        out.append(acc)
+    return out
 
 
 def sturm_count(seq, lo, hi):

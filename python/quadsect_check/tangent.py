@@ -3,7 +3,7 @@
 from fractions import Fraction
 
 from . import poly as P
-from .exact import QS, CheckError, parse_point, parse_rational, parse_value
+from .exact import QS, CheckError, NotChecked, parse_point, parse_rational, parse_value
 from .natural import proportional
 
 
@@ -132,34 +132,85 @@ def _rational_roots(f):
     return out
 
 
-def extreme_by_multiplier(e, s, alg, kind):
-    """For S of degree ≤ 2 and a rational printed extreme v: a rational λ
-    (a root of det(S − v − λE), found here) with S − v − λE positive
-    (negative) semidefinite proves S ≥ v (≤ v) on E = 0; a kernel vector
-    of it that is a point of E proves v attained.  True when proved."""
+def alg_qs(alg):
+    """A printed real algebraic number {poly, interval} of degree ≤ 2 as an
+    exact value of Q(√d) (the root of poly in the interval), else None."""
+    if not isinstance(alg, dict) or not isinstance(alg.get("poly"), str):
+        return None
+    poly = P.univariate(P.parse(alg["poly"].replace("l", "u")))
+    lo, hi = (QS(parse_rational(x)) for x in alg.get("interval") or [])
+    if len(poly) == 2:
+        roots = [QS(-poly[0] / poly[1])]
+    elif len(poly) == 3:
+        c, b, a = poly
+        disc = b * b - 4 * a * c
+        if disc < 0:
+            return None
+        n, d = disc.numerator * disc.denominator, disc.denominator
+        roots = [QS(-b / (2 * a), Fraction(sgn, 2 * a * d), n) for sgn in (1, -1)]
+    else:
+        return None
+    inside = [r for r in roots if (r - lo).sign() >= 0 and (hi - r).sign() >= 0]
+    return inside[0] if len(inside) == 1 else None
+
+
+def extreme_by_multiplier(e, s, alg, kind, multipliers=()):
+    """For S of degree ≤ 2 and a printed extreme v in Q or Q(√d): a
+    multiplier λ — a rational root of det(S − v − λE) found here, or the
+    certificate's λ for that value when it lies in Q(√d) — with S − v − λE
+    positive (negative) semidefinite proves S ≥ v (≤ v) on E = 0 (E is 0
+    there); a kernel vector of it that is a point of E proves v attained.
+    True when proved."""
     from .pencil import charpoly_signs, det_poly, kernel
 
-    lo, hi = (parse_rational(x) for x in alg.get("interval") or [])
-    if lo != hi:
+    v = alg_qs(alg)
+    if v is None:
         return False
     me, ms = P.form_matrix(e), P.form_matrix(s)
-    ms[3][3] -= lo  # S − v
-
-    def member(lam):
-        return [[ms[a][b] - lam * me[a][b] for b in range(4)] for a in range(4)]
-
-    f = det_poly(ms, me)
-    for lam in _rational_roots(f):
-        m = member(lam)
+    cands = []
+    if not v.d:
+        shifted = [row[:] for row in ms]
+        shifted[3][3] -= v.a
+        cands = [QS(x) for x in _rational_roots(det_poly(shifted, me))]
+    strip = lambda a: {k: a.get(k) for k in ("poly", "interval")} if isinstance(a, dict) else a  # noqa: E731
+    for mlt in multipliers:
+        if isinstance(mlt, dict) and strip(mlt.get("value")) == strip(alg):
+            lam = alg_qs(mlt.get("lambda"))
+            if lam is not None:
+                cands.append(lam)
+    for lam in cands:
+        m = [[QS(ms[a][b]) - lam * QS(me[a][b]) for b in range(4)] for a in range(4)]
+        m[3][3] = m[3][3] - v
         pos, neg, _ = charpoly_signs(m)
         if (kind == "min" and neg) or (kind == "max" and pos):
             continue
-        for k in kernel(m, 4):
-            if not k[3].is_zero():
-                p = [k[i] / k[3] for i in range(3)]
-                if P.evaluate(e, p).is_zero():
-                    return True
+        if _kernel_meets(kernel(m, 4), e):
+            return True
     return False
+
+
+def _kernel_meets(ker, e):
+    """Whether the kernel of S − v − λE (projective vectors in (x, y, z, w))
+    holds a real affine point of E: for a single vector, that point; for a
+    pencil k₁ + t·k₂ with an affine k₁ and k₂ at infinity, a real root of
+    E(p + t·d) = α·t² + 2β·t + γ (β² − αγ ≥ 0, α ≠ 0)."""
+    aff = [k for k in ker if not k[3].is_zero()]
+    if len(ker) == 1:
+        if not aff:
+            return False
+        p = [aff[0][i] / aff[0][3] for i in range(3)]
+        return P.evaluate(e, p).is_zero()
+    if len(ker) != 2 or not aff:
+        return False
+    k1 = aff[0]
+    k2 = next(k for k in ker if k is not k1)
+    p = [k1[i] / k1[3] for i in range(3)]
+    d = [k2[i] - k2[3] * p[i] for i in range(3)]  # k₂ − k₂[w]·(p, 1): at infinity
+    me = P.form_matrix(e)
+    pe, de = p + [QS(1)], d + [QS(0)]
+    form = lambda u, v: sum((QS(me[i][j]) * u[i] * v[j] for i in range(4) for j in range(4)), QS(0))  # noqa: E731
+    al, be, ga = form(de, de), form(pe, de), form(pe, pe)
+    return not al.is_zero() and (be * be - al * ga).sign() >= 0
 
 
 def _values(e, s, res, witnesses):
@@ -187,8 +238,12 @@ def _values(e, s, res, witnesses):
             proved.append(kind)
     if P.degree(s) <= 2:
         for kind in ("min", "max"):
-            if kind not in proved and res.get(kind) and extreme_by_multiplier(e, s, res[kind], kind):
-                proved.append(kind)
+            mults = (res.get("certificate") or {}).get("multipliers") or []
+            try:
+                if kind not in proved and res.get(kind) and extreme_by_multiplier(e, s, res[kind], kind, mults):
+                    proved.append(kind)
+            except NotChecked:
+                pass  # λ and v in two different fields: the extreme stays trusted
     proved = sorted(set(proved), key=["min", "max"].index)
     trusted = [k for k in ("min", "max") if k not in proved]
     checked = [f"{k}: S − {k} − λE semidefinite with a zero on E (at a witness, or λ found by the checker)" for k in proved]
@@ -240,7 +295,13 @@ def check_tangent(req, res):
             checked.append("separated: side·(S − τE) is positive definite (S-lemma), so S ≠ 0 on E")
         else:
             trusted.append("separated: S has no zero on E (the critical set is complete)")
-    else:
-        trusted.append("touching: S has a zero on E and keeps its sign (the critical set is complete)")
     c2, t2 = _values(e, s, res, [neg, pos])
+    if verdict == "touching":
+        # the extreme on the side S keeps, re-proved by a multiplier, is 0
+        kind = {"+": "min", "-": "max"}.get(side)
+        v = alg_qs(res.get(kind)) if kind and not any(kind in t for t in t2) else None
+        if v is not None and v.is_zero():
+            checked.append(f"touching: the {kind} of S on E is 0 (re-proved above): S keeps its sign {side} and vanishes on E")
+        else:
+            trusted.append("touching: S has a zero on E and keeps its sign (the critical set is complete)")
     return checked + c2, trusted + t2

@@ -280,6 +280,44 @@ def mut_singular_point(answer):
     return _variants(answer, edit, keys)
 
 
+def _curves(answer):
+    """The curve components whose topology the checker re-derives (a curve
+    beside a line, the twisted cubic, is documented as beyond it)."""
+    comps = (_components_listed(answer) or {}).get("components", [])
+    return [(j, comps[j]) for j in _each_component(answer, "curve") if len(comps) == 1]
+
+
+def mut_curve_bounded(answer):
+    """A branch said bounded when it is not (or the reverse)."""
+    def edit(res, jk):
+        b = res["components"][jk[0]]["branches"][jk[1]]
+        b["bounded"] = not b["bounded"]
+    return _variants(answer, edit, [(j, k) for j, c in _curves(answer) for k in range(len(c.get("branches") or []))])
+
+
+def mut_curve_extra_branch(answer):
+    """One more real component claimed: a branch listed twice."""
+    def edit(res, j):
+        c = res["components"][j]
+        c["branches"].append(copy.deepcopy(c["branches"][0]))
+        c["real_components"] += 1
+    return _variants(answer, edit, [j for j, c in _curves(answer) if c.get("branches")])
+
+
+def mut_curve_singular_kind(answer):
+    """A singular point's kind renamed, the isolated flag and the point count
+    kept consistent with the new kind."""
+    other = {"acnode": "crossing", "crossing": "cusp", "cusp": "crossing", "tacnode": "crossing"}
+
+    def edit(res, jk):
+        s = res["components"][jk[0]]["singular_points"][jk[1]]
+        s["kind"] = other[s["kind"]]
+        iso = s["kind"] == "acnode"
+        res["points"] += iso - bool(s["isolated"])
+        s["isolated"] = iso
+    return _variants(answer, edit, [(j, k) for j, c in _curves(answer) for k in range(len(c.get("singular_points") or []))])
+
+
 def mut_drop_component(answer):
     r = _components_listed(answer)
     if r is None:
@@ -467,7 +505,7 @@ def _input_key(req):
     op, fm = req["op"], req.get("float", False) is True
     try:
         if op == "natural":
-            geo = frozenset(_normalized(natural.quadric(req[k], fm)) for k in ("a", "b"))
+            geo = frozenset(_normalized(natural.quadric(req[k], fm)[0]) for k in ("a", "b"))
         elif op == "tangent":
             geo = tuple(_normalized(poly.parse(req[k], fm)) for k in ("ellipsoid", "surface"))
         elif op == "roots":
@@ -527,7 +565,7 @@ def make_swap(corpus):
 MUTATORS = [
     mut_natural_class, mut_natural_count, mut_conic_offset, mut_conic_center, mut_conic_semi_axis,
     mut_parabola_focal, mut_parabola_axis, mut_line_point, mut_line_direction, mut_point, mut_branch_c,
-    mut_singular_point, mut_drop_component,
+    mut_singular_point, mut_drop_component, mut_curve_bounded, mut_curve_extra_branch, mut_curve_singular_kind,
     mut_tangent_verdict, mut_witness_point, mut_witness_sign, mut_witness_drop, mut_tangent_side,
     mut_s_lemma, mut_member_plane, mut_tangent_extreme,
     mut_roots_shift, mut_roots_count, mut_roots_multiplicity, mut_roots_descartes, mut_roots_drop,
