@@ -116,16 +116,16 @@ def _rational_roots(f):
 
     sqf, seq, intervals = real_roots(f)
     out = []
-    for lo, hi in intervals:
+    for lo, hi in intervals:  # one root in (lo, hi]; lo may be the root below
         for _ in range(200):
-            if P.u_eval(sqf, hi) == 0 or P.u_eval(sqf, lo) == 0:
+            if P.u_eval(sqf, hi) == 0:
                 break
             mid = (lo + hi) / 2
             if P.sturm_count(seq, lo, mid) == 1:
                 hi = mid
             else:
                 lo = mid
-        for cand in (lo, hi, ((lo + hi) / 2).limit_denominator(10**40)):
+        for cand in (hi, ((lo + hi) / 2).limit_denominator(10**40)):
             if P.u_eval(sqf, cand) == 0 and cand not in out:
                 out.append(cand)
                 break

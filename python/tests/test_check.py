@@ -685,3 +685,46 @@ def test_cli(answers, verdicts):
     lines = out.stdout.splitlines()
     assert lines[-1] == "1 verified, 0 partial, 1 rejected"
     assert [json.loads(l)["status"] for l in lines[:-1]] == ["verified", "rejected"]
+
+
+def _sweep(a, b):
+    from quadsect_check import sweep
+
+    (qa, da), (qb, db) = natural.quadric(a), natural.quadric(b)
+    ruled, other = (da, qb) if da and (da[0] == "cylinder" or not db or db[0] != "cylinder") else (db, qa)
+    return sweep.rank_two_free(poly.form_matrix(qa), poly.form_matrix(qb)), sweep.curve_topology(*ruled, other)[:3]
+
+
+def test_sweep_topologies_worked_by_hand():
+    # a thin cylinder through a thick one: it enters and leaves — two closed loops
+    assert _sweep("cylinder point=0,0,0 axis=0,0,1 radius2=1", "cylinder point=0,0,0 axis=1,0,0 radius2=1/4") == (
+        True, (2, [True, True], []))
+    # the same offset so that it only grazes a side: one loop (y + 1/2 over a radius 1/2 … 3/2 band)
+    assert _sweep("cylinder point=0,0,0 axis=0,0,1 radius2=1", "cylinder point=0,1,0 axis=1,0,0 radius2=1/4")[1][:2] == (1, [True])
+    # Viviani's curve: one component, crossing itself at (2, 0, 0)
+    assert _sweep("cylinder point=1,0,0 axis=0,0,1 radius2=1", "sphere center=0,0,0 radius2=4") == (
+        True, (1, [True], [("crossing", False)]))
+    # z² = x² + y² against y² + z² = 1: x² = 1 − 2y², z = ±√(1 − y²) ≠ 0 — two loops, one per nappe
+    assert _sweep("cone vertex=0,0,0 axis=0,0,1 tan2=1", "cylinder point=0,0,0 axis=1,0,0 radius2=1") == (
+        True, (2, [True, True], []))
+    # a sphere inside a cylinder: no real point on any ruling
+    assert _sweep("cylinder point=0,0,0 axis=0,0,1 radius2=1", "sphere center=0,0,0 radius2=1/4")[1] == (0, [], [])
+    # equal perpendicular cylinders meet in two ellipses: a member of rank 2
+    assert _sweep("cylinder point=0,0,0 axis=0,0,1 radius2=1", "cylinder point=0,0,0 axis=1,0,0 radius2=1")[0] is False
+
+
+def test_extremes_by_multiplier():
+    from quadsect_check import tangent
+
+    e = poly.parse("x^2+y^2+z^2-1")
+    # z − 1 ≤ 0 on the sphere, 0 at (0, 0, 1): λ = 1/2 is the second rational root of
+    # det(S − λE) = −λ²(λ − 1/2)² (the root 0 sits at the end of its isolating interval)
+    assert tangent.extreme_by_multiplier(e, poly.parse("z-1"), {"poly": "u", "interval": ["0", "0"]}, "max")
+    assert not tangent.extreme_by_multiplier(e, poly.parse("z-1"), {"poly": "u", "interval": ["0", "0"]}, "min")
+    # x + y on the sphere: max √2, λ = √2/2 from the certificate's multipliers (Q(√2))
+    mult = [{"lambda": {"poly": "2*l^2 - 1", "interval": ["7/10", "71/100"]},
+             "value": {"poly": "u^2 - 2", "interval": ["141/100", "142/100"]}}]
+    assert tangent.extreme_by_multiplier(e, poly.parse("x+y"), mult[0]["value"], "max", mult)
+    assert not tangent.extreme_by_multiplier(e, poly.parse("x+y"), {"poly": "u^2 - 3", "interval": ["17/10", "18/10"]}, "max", mult)
+    # x y on the sphere: min −1/2 on the kernel line x + y = 0, z = 0 (irrational points)
+    assert tangent.extreme_by_multiplier(e, poly.parse("x y"), {"poly": "2*u + 1", "interval": ["-1/2", "-1/2"]}, "min")
