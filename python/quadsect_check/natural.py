@@ -332,7 +332,11 @@ def check_natural(req, res):
     want_components = req.get("components", True) is not False
     comps = res.get("components")
     if not want_components and comps is None:
-        return checked, [f"class {cls} and counts (components not requested)"]
+        try:
+            checked.append(_counts_only(A, B, (data_a, data_b), res))
+            return checked, trusted
+        except NotChecked as e:
+            return checked, [f"class {cls} and counts (components not requested: {e})"]
     if not isinstance(comps, list):
         raise CheckError("components must be a list")
     counts = {"conic": 0, "line": 0, "point": 0}
@@ -486,6 +490,22 @@ def _member_planes(A, B, res, comps):
     return None
 
 
+def _multiple_root_members(A, B, n):
+    """(t₀, A − t₀B) for each rational multiple root t₀ of det(A − tB) on
+    the leading n×n blocks (n = 3: the quadratic parts)."""
+    from .kernel import _yun
+    from .pencil import det_poly
+
+    ma, mb = P.form_matrix(A), P.form_matrix(B)
+    f = det_poly(ma, mb, n)
+    if len(f) < 3:
+        return
+    for g, k in _yun(f):
+        if k >= 2 and len(g) == 2:
+            t0 = -g[0] / g[1]
+            yield t0, [[ma[i][j] - t0 * mb[i][j] for j in range(4)] for i in range(4)]
+
+
 def _coaxial_member(A, B):
     """A member A − t₀B that depends on one linear form ℓ = n·P only (two
     quadrics on one axis): its quadratic part has rank 1 at a double root t₀
@@ -493,18 +513,7 @@ def _coaxial_member(A, B):
     c·ℓ² + b·ℓ + e, a product of the planes ℓ = r for the real roots r of
     c·r² + b·r + e.  Returns ((1, −t₀), planes), "empty" when there is no
     real root, or None."""
-    from .kernel import _yun
-    from .pencil import det_poly
-
-    ma, mb = P.form_matrix(A), P.form_matrix(B)
-    f = det_poly(ma, mb, 3)
-    if len(f) < 3:
-        return None
-    for g, k in _yun(f):
-        if k < 2 or len(g) != 2:
-            continue
-        t0 = -g[0] / g[1]
-        m = [[ma[i][j] - t0 * mb[i][j] for j in range(4)] for i in range(4)]
+    for t0, m in _multiple_root_members(A, B, 3):
         q = [row[:3] for row in m[:3]]
         i0 = next((i for i in range(3) if q[i][i] != 0), None)
         if i0 is None:
@@ -578,3 +587,141 @@ def _check_curve(A, B, data, comps):
         "curve: real components, bounded flags and singular points (sweep over the rulings)",
         "curve: one branch point on each real component",
     ]
+
+
+def _plane_pair(A, B):
+    """A member A − t₀B of rank 2 (t₀ a rational multiple root of
+    det(A − tB)) split into its planes.  With two rows r₁, r₂ of the member
+    M whose principal 2×2 minor K is invertible (a symmetric matrix of rank
+    2 has one), M = Rᵀ·K⁻¹·R (R = [r₁; r₂]), i.e. the member is the binary
+    form α·y₁² + 2β·y₁y₂ + γ·y₂² in y_k = r_k·(x, y, z, 1), which factors over
+    Q(√(β² − αγ)).  Returns ("planes", [(normal, offset), …]) — the affine
+    planes (one for a double plane or when the other is the plane at
+    infinity) —, ("line", (r₁, r₂)) for two complex conjugate planes meeting
+    in a real line, or None when no such member exists."""
+    from .pencil import kernel
+
+    for _, m in _multiple_root_members(A, B, 4):
+        rank = 4 - len(kernel(m, 4))
+        if rank == 1:  # c·ℓ²: a double plane (its row ℓ)
+            row = next(r for r in m if any(r))
+            return "planes", [([QS(x) for x in row[:3]], QS(-row[3]))] if any(row[:3]) else []
+        if rank != 2:
+            continue
+        i, j = next((i, j) for i in range(4) for j in range(i + 1, 4) if m[i][i] * m[j][j] != m[i][j] ** 2)
+        dk = m[i][i] * m[j][j] - m[i][j] ** 2
+        al, be, ga = m[j][j] / dk, -m[i][j] / dk, m[i][i] / dk
+        r1, r2 = [QS(x) for x in m[i]], [QS(x) for x in m[j]]
+        disc = be * be - al * ga
+        if disc < 0:
+            return "line", (r1, r2)
+        if al == 0:  # y₂·(2β·y₁ + γ·y₂)
+            forms = [r2] + ([[QS(2 * be) * a + QS(ga) * b for a, b in zip(r1, r2)]] if be else [])
+        else:
+            sq = sqrt_rational(disc)
+            rhos = [(QS(-be) + sq * s) / QS(al) for s in ((1, -1) if disc else (1,))]
+            forms = [[a - rho * b for a, b in zip(r1, r2)] for rho in rhos]
+        planes = [(fm[:3], -fm[3]) for fm in forms if not all(x.is_zero() for x in fm[:3])]
+        return "planes", planes
+    return None
+
+
+def _count_sections(A, found):
+    """(conics, lines, points) of A ∩ B from a rank-2 member (``_plane_pair``)."""
+    from .pencil import section
+
+    kind, data = found
+    if kind == "line":  # the real line r₁ = r₂ = 0, on which A is a quadratic
+        r1, r2 = data
+        d = cross(r1[:3], r2[:3])
+        if all(x.is_zero() for x in d):
+            return 0, 0, 0  # the line at infinity
+        # a point of the line: solve r1·p = −r1[3], r2·p = −r2[3], d·p = 0
+        from .pencil import nullspace
+
+        v = nullspace([r1, r2, list(d) + [QS(0)]], 4)
+        if v is None or v[3].is_zero():
+            raise NotChecked("the member's real line")
+        p = [v[i] / v[3] for i in range(3)]
+        q = _on_surface_along(A, p, [d], "the member's real line")
+        if not q:
+            return 0, 1, 0
+        a2, a1, a0 = (q.get((e,), QS(0)) for e in (2, 1, 0))
+        if a2.is_zero():
+            return 0, 0, int(not a1.is_zero())
+        disc = (a1 * a1 - a2 * a0 * QS(4)).sign()
+        return 0, 0, 0 if disc < 0 else 1 if disc == 0 else 2
+    planes = data
+    secs = [section(A, n, off) for n, off in planes]
+    conics = sum(s[0] == "conic" for s in secs)
+    lines = sum(s[1] for s in secs if s[0] == "lines")
+    points = 0
+    if len(planes) == 2:
+        (n1, o1), (n2, o2) = planes
+        d = cross(n1, n2)
+        if lines and not all(x.is_zero() for x in d) and all(s[0] == "lines" for s in secs):
+            from .pencil import nullspace
+
+            v = nullspace([list(n1) + [-o1], list(n2) + [-o2], list(d) + [QS(0)]], 4)
+            p = [v[i] / v[3] for i in range(3)]
+            if not _on_surface_along(A, p, [d], "the planes' common line"):
+                lines -= 1  # the planes' common line, counted in both
+        for k, s in enumerate(secs):
+            if s[0] == "point":
+                n, off = planes[1 - k]
+                other = secs[1 - k]
+                if (dot(n, s[1]) - off).is_zero() and (other[0] != "point" or k == 1):
+                    continue  # on the other plane's section, counted there
+                points += 1
+    else:
+        points = sum(s[0] == "point" for s in secs)
+    return conics, lines, points
+
+
+def _counts_only(A, B, data, res):
+    """Class and counts of an answer without components, re-derived: empty
+    (a definite or one-axis member), curve (the sweep), points (a
+    semidefinite singular member), the planar classes (the sections of a
+    rank-2 member's planes)."""
+    cls = res.get("class")
+    want = (res.get("conics"), res.get("lines"), res.get("points"))
+    if cls == "empty":
+        why = _complete(A, B, {}, [])
+        if why and want == (0, 0, 0):
+            return why
+        raise NotChecked("no member proves the intersection empty")
+    if cls == "curve":
+        from . import sweep
+
+        if not sweep.rank_two_free(P.form_matrix(A), P.form_matrix(B)):
+            raise CheckError("a member of the pencil has rank ≤ 2: the quadrics share a conic, not a quartic curve")
+        order = sorted((i for i in (0, 1) if data[i]), key=lambda i: data[i][0] != "cylinder")
+        for i in order:
+            try:
+                _, _, singular, _ = sweep.curve_topology(*data[i], (A, B)[1 - i])
+                break
+            except NotChecked:
+                continue
+        else:
+            raise NotChecked("the sweep's preconditions")
+        got = (0, 0, sum(iso for _, iso in singular))
+        if got != want:
+            raise CheckError(f"counts {want}, the sweep finds {got}")
+        return "curve: irreducible quartic and its isolated points (sweep over the rulings)"
+    found = _plane_pair(A, B)
+    if found is None:
+        if cls == "points":
+            from .pencil import singular_member_points
+
+            pts = singular_member_points(A, B)
+            if pts is not None and want == (0, 0, len(pts)):
+                return "points: a semidefinite singular member's real zeros on A"
+        raise NotChecked("no rational member of rank 2")
+    got = _count_sections(A, found)
+    if got != want:
+        raise CheckError(f"counts {want}, the rank-2 member's plane sections give {got}")
+    c, l, p = got
+    expect = "conic-and-line" if c and l else "conics" if c else "lines" if l else "points" if p else "empty"
+    if cls != expect:
+        raise CheckError(f"class {cls}, the counts make it {expect}")
+    return "class and counts: the plane sections of a rank-2 member A − t₀B"

@@ -728,3 +728,22 @@ def test_extremes_by_multiplier():
     assert not tangent.extreme_by_multiplier(e, poly.parse("x+y"), {"poly": "u^2 - 3", "interval": ["17/10", "18/10"]}, "max", mult)
     # x y on the sphere: min −1/2 on the kernel line x + y = 0, z = 0 (irrational points)
     assert tangent.extreme_by_multiplier(e, poly.parse("x y"), {"poly": "2*u + 1", "interval": ["-1/2", "-1/2"]}, "min")
+
+
+def test_counts_without_components():
+    def counts(a, b, cls, c, l, p):
+        (qa, da), (qb, db) = natural.quadric(a), natural.quadric(b)
+        return natural._counts_only(qa, qb, (da, db), {"class": cls, "conics": c, "lines": l, "points": p})
+
+    # equal perpendicular cylinders: the member x² − z² = (x − z)(x + z), two ellipses
+    assert "rank-2" in counts("cylinder point=0,0,0 axis=0,0,1 radius2=1", "cylinder point=0,0,0 axis=1,0,0 radius2=1", "conics", 2, 0, 0)
+    with pytest.raises(exact.CheckError):
+        counts("cylinder point=0,0,0 axis=0,0,1 radius2=1", "cylinder point=0,0,0 axis=1,0,0 radius2=1", "conics", 1, 0, 0)
+    # a sphere in a cylinder of its radius: the double plane z² = 0, one circle
+    assert counts("sphere center=0,0,0 radius2=1", "cylinder point=0,0,0 axis=0,0,1 radius2=1", "conics", 1, 0, 0)
+    # two spheres touching: A − B is a plane (the other factor at infinity), one point
+    assert counts("sphere center=0,0,0 radius2=1", "sphere center=2,0,0 radius2=1", "points", 0, 0, 1)
+    with pytest.raises(exact.CheckError):
+        counts("sphere center=0,0,0 radius2=1", "sphere center=2,0,0 radius2=1", "empty", 0, 0, 0)
+    # Viviani's curve: no conic, no isolated point
+    assert counts("cylinder point=1,0,0 axis=0,0,1 radius2=1", "sphere center=0,0,0 radius2=4", "curve", 0, 0, 0)
