@@ -481,8 +481,10 @@ def rank_two_free(ma, mb):
         raise NotChecked("a singular pencil (det(A − tB) ≡ 0)")
     from .kernel import _det
 
-    g = f
-    for rows in _triples():
+    # rank ≤ 2 at t₀ makes t₀ a multiple root of det(A − tB) (and rank B ≤ 2
+    # lowers its degree by two): only the multiple roots need the minors
+    g = P.u_gcd(f, P.u_deriv(f)) if len(f) > 1 else [Fraction(1)]
+    for rows in _triples() if len(g) > 1 else ():
         for cols in _triples():
             minor = _interpolate([_det([[ma[i][j] - t * mb[i][j] for j in cols] for i in rows]) for t in range(4)])
             g = P.u_gcd(g, minor)
