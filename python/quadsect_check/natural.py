@@ -492,15 +492,23 @@ def _member_planes(A, B, res, comps):
 
 def _multiple_root_members(A, B, n):
     """(t₀, A − t₀B) for each rational multiple root t₀ of det(A − tB) on
-    the leading n×n blocks (n = 3: the quadratic parts)."""
+    the leading n×n blocks (n = 3: the quadratic parts); for a singular
+    pencil (det ≡ 0, n = 4) each rational root of the 3×3 minors' gcd."""
     from .kernel import _yun
     from .pencil import det_poly
 
     ma, mb = P.form_matrix(A), P.form_matrix(B)
     f = det_poly(ma, mb, n)
-    if len(f) < 3:
-        return
-    for g, k in _yun(f):
+    if n == 4 and f == [0]:  # a singular pencil: the roots of the 3×3 minors' gcd
+        from .sweep import minors_gcd
+
+        from .pencil import rational_roots
+
+        f = minors_gcd(ma, mb)
+        found = [([-r, 1], 2) for r in rational_roots(f)] if len(f) > 1 else []  # each root once
+    else:
+        found = _yun(f) if len(f) >= 3 else []
+    for g, k in found:
         if k >= 2 and len(g) == 2:
             t0 = -g[0] / g[1]
             yield t0, [[ma[i][j] - t0 * mb[i][j] for j in range(4)] for i in range(4)]
@@ -708,6 +716,17 @@ def _counts_only(A, B, data, res):
         if got != want:
             raise CheckError(f"counts {want}, the sweep finds {got}")
         return "curve: irreducible quartic and its isolated points (sweep over the rulings)"
+    if cls in ("lines", "points") and data[0] and data[1] and data[0][0] == data[1][0] == "cone":
+        from . import sweep
+
+        try:
+            n = sweep.common_vertex_lines(*data[0], B)
+            got = (0, n, 0 if n else 1)
+            if got != want:
+                raise CheckError(f"counts {want}, the common vertex's rulings give {got}")
+            return "lines: the rulings of one cone on which the other vanishes (common vertex)"
+        except NotChecked:
+            pass
     found = _plane_pair(A, B)
     if found is None:
         if cls == "points":

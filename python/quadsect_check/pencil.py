@@ -275,6 +275,28 @@ def real_roots(f):
     return sqf, seq, _isolate(seq, -bound, bound)
 
 
+def rational_roots(f):
+    """The rational roots of f (ascending Fractions) among its real roots:
+    each real root is isolated (Sturm), narrowed by bisection, and its
+    simplest nearby fraction kept if it is an exact root."""
+    sqf, seq, intervals = real_roots(f)
+    out = []
+    for lo, hi in intervals:  # one root in (lo, hi]; lo may be the root below
+        for _ in range(200):
+            if P.u_eval(sqf, hi) == 0:
+                break
+            mid = (lo + hi) / 2
+            if P.sturm_count(seq, lo, mid) == 1:
+                hi = mid
+            else:
+                lo = mid
+        for cand in (hi, ((lo + hi) / 2).limit_denominator(10**40)):
+            if P.u_eval(sqf, cand) == 0 and cand not in out:
+                out.append(cand)
+                break
+    return out
+
+
 def definite_member(a, b):
     """A rational t with A − tB definite (as a form in (x, y, z, 1)), or
     None when no member of the pencil is definite: one candidate in each

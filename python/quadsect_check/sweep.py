@@ -484,18 +484,52 @@ def rank_two_free(ma, mb):
     # rank ≤ 2 at t₀ makes t₀ a multiple root of det(A − tB) (and rank B ≤ 2
     # lowers its degree by two): only the multiple roots need the minors
     g = P.u_gcd(f, P.u_deriv(f)) if len(f) > 1 else [Fraction(1)]
-    for rows in _triples() if len(g) > 1 else ():
-        for cols in _triples():
-            minor = _interpolate([_det([[ma[i][j] - t * mb[i][j] for j in cols] for i in rows]) for t in range(4)])
-            g = P.u_gcd(g, minor)
-            if len(g) == 1:
-                break
-        if len(g) == 1:
-            break
-    if len(g) > 1:
+    if len(g) > 1 and len(minors_gcd(ma, mb, g)) > 1:
         return False
     return any(_det([[mb[i][j] for j in cols] for i in rows]) != 0 for rows in _triples() for cols in _triples())
 
 
+def minors_gcd(ma, mb, g=(0,)):
+    """gcd of g and all 3×3 minors of A − tB (polynomials of degree ≤ 3 in
+    t, interpolated): its roots are the t where A − tB has rank ≤ 2."""
+    from .kernel import _det
+
+    g = list(g)
+    for rows in _triples():
+        for cols in _triples():
+            g = P.u_gcd(g, _interpolate([_det([[ma[i][j] - t * mb[i][j] for j in cols] for i in rows]) for t in range(4)]))
+            if g == [1]:
+                return g
+    return g
+
+
 def _triples():
     return [(0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)]
+
+
+def common_vertex_lines(kind, base, k, param, q):
+    """Two cones with a common vertex V (Q singular at V): on the ruling
+    V + t·w of R, Q is a(w)·t², so A ∩ B is V and the rulings where a = 0 —
+    as many real lines as distinct zeros of a on Γ (a ≢ 0 on Γ, else the
+    cones coincide).  Returns that number."""
+    base_q = [QS(c) for c in base]
+    if kind != "cone" or not P.evaluate(q, base_q).is_zero() or any(
+        not P.evaluate(g, base_q).is_zero() for g in P.gradient(q)
+    ):
+        raise NotChecked("not two cones with a common vertex")
+    for m in FRAMES:
+        if all(x == 0 for x in cross(k, m)):
+            continue
+        sw = _Ruled(kind, base, k, param, q, m)
+        a0, a1 = sw.reduce(sw.a)
+        norm = sw.norm(a0, a1)
+        if norm == [0]:
+            raise NotChecked("a ≡ 0 on Γ")
+        if len(norm) == 1:
+            return 0
+        if len(P.u_gcd(norm, a1)) == 1 and len(P.u_gcd(norm, [-sw.ga, Fraction(0), sw.al])) == 1:
+            # each real root of the norm is one point of Γ (v = −a₀/a₁)
+            sqf = P.u_divmod(norm, P.u_gcd(norm, P.u_deriv(norm)))[0]
+            bound = max(Fraction(1), sw.ga / sw.al)
+            return len(_isolate(P.sturm_sequence(sqf), -bound, bound))
+    raise NotChecked("no frame separates the zeros of a")

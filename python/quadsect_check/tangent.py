@@ -108,30 +108,6 @@ def extreme_at(e, s, w):
     return None
 
 
-def _rational_roots(f):
-    """The rational roots of f (ascending Fractions) among its real roots:
-    each real root is isolated (Sturm), narrowed by bisection, and its
-    simplest nearby fraction kept if it is an exact root."""
-    from .pencil import real_roots
-
-    sqf, seq, intervals = real_roots(f)
-    out = []
-    for lo, hi in intervals:  # one root in (lo, hi]; lo may be the root below
-        for _ in range(200):
-            if P.u_eval(sqf, hi) == 0:
-                break
-            mid = (lo + hi) / 2
-            if P.sturm_count(seq, lo, mid) == 1:
-                hi = mid
-            else:
-                lo = mid
-        for cand in (hi, ((lo + hi) / 2).limit_denominator(10**40)):
-            if P.u_eval(sqf, cand) == 0 and cand not in out:
-                out.append(cand)
-                break
-    return out
-
-
 def alg_qs(alg):
     """A printed real algebraic number {poly, interval} of degree ≤ 2 as an
     exact value of Q(√d) (the root of poly in the interval), else None."""
@@ -161,7 +137,7 @@ def extreme_by_multiplier(e, s, alg, kind, multipliers=()):
     positive (negative) semidefinite proves S ≥ v (≤ v) on E = 0 (E is 0
     there); a kernel vector of it that is a point of E proves v attained.
     True when proved."""
-    from .pencil import charpoly_signs, det_poly, kernel
+    from .pencil import charpoly_signs, det_poly, kernel, rational_roots
 
     v = alg_qs(alg)
     if v is None:
@@ -171,7 +147,7 @@ def extreme_by_multiplier(e, s, alg, kind, multipliers=()):
     if not v.d:
         shifted = [row[:] for row in ms]
         shifted[3][3] -= v.a
-        cands = [QS(x) for x in _rational_roots(det_poly(shifted, me))]
+        cands = [QS(x) for x in rational_roots(det_poly(shifted, me))]
     strip = lambda a: {k: a.get(k) for k in ("poly", "interval")} if isinstance(a, dict) else a  # noqa: E731
     for mlt in multipliers:
         if isinstance(mlt, dict) and strip(mlt.get("value")) == strip(alg):

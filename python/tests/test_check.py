@@ -745,5 +745,11 @@ def test_counts_without_components():
     assert counts("sphere center=0,0,0 radius2=1", "sphere center=2,0,0 radius2=1", "points", 0, 0, 1)
     with pytest.raises(exact.CheckError):
         counts("sphere center=0,0,0 radius2=1", "sphere center=2,0,0 radius2=1", "empty", 0, 0, 0)
+    # parallel cylinders (a singular pencil): A − B = 2x − 1, the lines x = 1/2, y = ±√3/2
+    assert counts("cylinder point=0,0,0 axis=0,0,1 radius2=1", "cylinder point=1,0,0 axis=0,0,1 radius2=1", "lines", 0, 2, 0)
+    # cones z² = x² + y² and x² = y² + z² with a common vertex: y = 0, z = ±x — two lines
+    assert counts("cone vertex=0,0,0 axis=0,0,1 tan2=1", "cone vertex=0,0,0 axis=1,0,0 tan2=1", "lines", 0, 2, 0)
+    with pytest.raises(exact.CheckError):
+        counts("cone vertex=0,0,0 axis=0,0,1 tan2=1", "cone vertex=0,0,0 axis=1,0,0 tan2=1", "lines", 0, 4, 0)
     # Viviani's curve: no conic, no isolated point
     assert counts("cylinder point=1,0,0 axis=0,0,1 radius2=1", "sphere center=0,0,0 radius2=4", "curve", 0, 0, 0)
