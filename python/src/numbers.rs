@@ -107,7 +107,7 @@ pub(crate) fn fraction<'py>(py: Python<'py>, q: &Rational) -> PyResult<Bound<'py
     let cls = FRACTION.import(py, "fractions", "Fraction")?;
     if q.denom().is_one()
         && let Some(n) = q.numer().to_i64()
-        && n.abs() <= SMALL_MAX
+        && (-SMALL_MAX..=SMALL_MAX).contains(&n)
     {
         let small = SMALL.get_or_try_init(py, || {
             (-SMALL_MAX..=SMALL_MAX)
