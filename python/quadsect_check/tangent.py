@@ -148,6 +148,21 @@ def extreme_by_multiplier(e, s, alg, kind, multipliers=()):
         shifted = [row[:] for row in ms]
         shifted[3][3] -= v.a
         cands = [QS(x) for x in rational_roots(det_poly(shifted, me))]
+    if P.degree(s) == 1:
+        # a plane n·x + s₀: at a critical point n = λ·∇E = λ(2Mx + 2b), so
+        # x = M⁻¹(n/2λ − b) and v = S(x) give λ = nᵀM⁻¹n / 2(v − s₀ + nᵀM⁻¹b)
+        from .pencil import nullspace
+
+        n = [2 * ms[i][3] for i in range(3)]
+        b = [me[i][3] for i in range(3)]
+        sol = [nullspace([me[i][:3] + [-rhs[i]] for i in range(3)], 4) for rhs in (n, b)]
+        if all(x is not None and not x[3].is_zero() for x in sol):
+            minv_n, minv_b = ([x[i] / x[3] for i in range(3)] for x in sol)
+            nn = sum((QS(n[i]) * minv_n[i] for i in range(3)), QS(0))
+            nb = sum((QS(n[i]) * minv_b[i] for i in range(3)), QS(0))
+            den = (v - QS(ms[3][3]) + nb) * QS(2)
+            if not den.is_zero():
+                cands.append(nn / den)
     strip = lambda a: {k: a.get(k) for k in ("poly", "interval")} if isinstance(a, dict) else a  # noqa: E731
     for mlt in multipliers:
         if isinstance(mlt, dict) and strip(mlt.get("value")) == strip(alg):

@@ -726,6 +726,9 @@ def test_extremes_by_multiplier():
              "value": {"poly": "u^2 - 2", "interval": ["141/100", "142/100"]}}]
     assert tangent.extreme_by_multiplier(e, poly.parse("x+y"), mult[0]["value"], "max", mult)
     assert not tangent.extreme_by_multiplier(e, poly.parse("x+y"), {"poly": "u^2 - 3", "interval": ["17/10", "18/10"]}, "max", mult)
+    # … and without the certificate: for a plane λ = nᵀM⁻¹n / 2(v − s₀ + nᵀM⁻¹b), in Q(√2)
+    assert tangent.extreme_by_multiplier(e, poly.parse("x+y"), mult[0]["value"], "max")
+    assert tangent.extreme_by_multiplier(e, poly.parse("x+y"), {"poly": "u^2 - 2", "interval": ["-142/100", "-141/100"]}, "min")
     # x y on the sphere: min −1/2 on the kernel line x + y = 0, z = 0 (irrational points)
     assert tangent.extreme_by_multiplier(e, poly.parse("x y"), {"poly": "2*u + 1", "interval": ["-1/2", "-1/2"]}, "min")
 
