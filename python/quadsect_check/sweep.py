@@ -22,6 +22,14 @@ the curve's points on the ruling are its real roots.  With D = b² − ac:
   end of an unbounded component.
 * a ≡ 0 on Γ: one point t = −c/2b where b ≠ 0, escaping at the zeros of b
   (c ≠ 0 there is required).
+* the cone's vertex V on Q (c = 0): besides V, one point t = −2b/a per
+  ruling, escaping at the zeros of a and passing through V at the zeros of
+  b (``_through_vertex``).
+
+Each branch of the answer (a ruling of R and a root on it) is located on
+the sweep — its ruling is a point of Γ, exact in Q(√d), placed among the
+events, and its root is the upper or lower one — so that the branches can
+be shown to lie on different components.
 
 The events (zeros on Γ) are found exactly: f = f₀(u) + f₁(u)·v modulo Γ
 vanishes on Γ at the real roots of N(u) = f₀² − f₁²·(γ − αu²)/β with
@@ -32,8 +40,10 @@ decomposition of N, the order along Γ from isolating intervals, and the
 signs of D and a on each arc from a rational sample point of the arc (exact
 in Q(√w)).  The pieces are joined with union–find.
 
-Anything outside these cases (a ruling on Q, the vertex on Q, D ≡ 0 on Γ,
-a zero of a where b = 0) raises ``NotChecked``.
+Anything outside these cases (a ruling on both quadrics, D ≡ 0 on Γ, a
+zero of a where b = 0, a branch on an event's ruling) raises
+``NotChecked``; ``common_vertex_lines`` counts the lines of two cones
+sharing their vertex.
 """
 
 from fractions import Fraction
