@@ -235,9 +235,15 @@ def _values(e, s, res, witnesses):
                     proved.append(kind)
             except NotChecked:
                 pass  # λ and v in two different fields: the extreme stays trusted
+        from . import extreme
+
+        points = [parse_point(w.get("point"), "witness") for w in witnesses if w is not None]
+        for kind, sign in (("min", 1), ("max", -1)):
+            if kind not in proved and res.get(kind) and extreme.minimum(e, s, res[kind], points, sign):
+                proved.append(kind)
     proved = sorted(set(proved), key=["min", "max"].index)
     trusted = [k for k in ("min", "max") if k not in proved]
-    checked = [f"{k}: S − {k} − λE semidefinite with a zero on E (at a witness, or λ found by the checker)" for k in proved]
+    checked = [f"{k}: S − {k} − λE semidefinite with a zero on E, or a root of Δ(v) = disc_λ det(S − v − λE) bracketed by an S-lemma bound and a point of E" for k in proved]
     return checked, ([f"{' and '.join(trusted)} (the critical values)"] if trusted else [])
 
 

@@ -756,3 +756,54 @@ def test_counts_without_components():
         counts("cone vertex=0,0,0 axis=0,0,1 tan2=1", "cone vertex=0,0,0 axis=1,0,0 tan2=1", "lines", 0, 4, 0)
     # Viviani's curve: no conic, no isolated point
     assert counts("cylinder point=1,0,0 axis=0,0,1 radius2=1", "sphere center=0,0,0 radius2=4", "curve", 0, 0, 0)
+
+
+def test_extremes_by_the_discriminant():
+    """A sphere's distance² to an ellipsoid: min and max are roots of a sextic;
+    only the true extremes are re-proved — another root of the same sextic,
+    a root of a polynomial not vanishing there, or the max as min, is not."""
+    from quadsect_check import extreme
+
+    e = poly.parse("(x-(1))^2/5 + (y-(2))^2/9 + (z-(3))^2/1 - 4")
+    s = poly.parse("(x-(2))^2 + (y-(-3))^2 + (z-(-2))^2 - 1")
+    sextic = "256*u^6 - 69120*u^5 + 6193168*u^4 - 273061440*u^3 + 6525006731*u^2 - 81528052740*u + 402598940220"
+    lo = {"poly": sextic, "interval": ["30548609957894610947018693/2417851639229258349412352",
+                                       "30548609957894610947018695/2417851639229258349412352"]}
+    hi = {"poly": sextic, "interval": ["22370909677618451069537897/151115727451828646838272",
+                                       "22370909677618451069537899/151115727451828646838272"]}
+    assert extreme.minimum(e, s, lo, [], 1)
+    assert extreme.minimum(e, s, hi, [], -1)
+    assert not extreme.minimum(e, s, hi, [], 1)  # the max is not the min
+    assert not extreme.minimum(e, s, lo, [], -1)
+    # the sextic's other real roots, if any, are not extremes either
+    from quadsect_check.pencil import real_roots
+
+    for a, b in real_roots(poly.univariate(poly.parse(sextic)))[2]:
+        other = {"poly": sextic, "interval": [str(a), str(b)]}
+        if not (a <= Fraction(126346, 10000) <= b or a <= Fraction(1480382, 10000) <= b):
+            assert not extreme.minimum(e, s, other, [], 1) and not extreme.minimum(e, s, other, [], -1)
+    # a sphere centred inside an ellipsoid: Δ(v) has saddle values among its
+    # real roots; exactly one root is re-proved the min and one the max, and
+    # they bracket a float sample of S on E
+    from quadsect_check.pencil import _interpolate, det_poly
+
+    e2, s2 = poly.parse("x^2/9 + y^2/4 + z^2 - 1"), poly.parse("(x - 1/2)^2 + (y - 1/3)^2 + z^2")
+    me, ms = poly.form_matrix(e2), poly.form_matrix(s2)
+    vals = []
+    for v in range(7):
+        m = [row[:] for row in ms]
+        m[3][3] -= v
+        vals.append(extreme._disc(poly.u_trim(det_poly(m, me))))
+    delta = _interpolate(vals)
+    text = " + ".join(f"({c})*u^{i}" for i, c in enumerate(delta))
+    ivs = real_roots(delta)[2]
+    assert len(ivs) >= 3
+    mins = [iv for iv in ivs if extreme.minimum(e2, s2, {"poly": text, "interval": [str(iv[0]), str(iv[1])]}, [], 1)]
+    maxs = [iv for iv in ivs if extreme.minimum(e2, s2, {"poly": text, "interval": [str(iv[0]), str(iv[1])]}, [], -1)]
+    assert len(mins) == 1 and len(maxs) == 1
+    import math
+    sample = [float(poly.evaluate(s2, [exact.QS(Fraction(3 * math.cos(a) * math.cos(b))), exact.QS(Fraction(2 * math.sin(a) * math.cos(b))),
+                                         exact.QS(Fraction(math.sin(b)))]).a) for a in [k / 7 for k in range(44)] for b in [k / 7 - 1.5 for k in range(22)]]
+    assert float(mins[0][0]) - 1e-9 <= min(sample) and max(sample) <= float(maxs[0][1]) + 1e-9
+    # a value near the min that is not a root of Δ
+    assert not extreme.minimum(e, s, {"poly": "u^2 - 160", "interval": ["12", "13"]}, [], 1)
