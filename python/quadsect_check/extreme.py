@@ -18,7 +18,10 @@ engine's critical set.
   a point p of E (exact, in Q(√d)) with S(p) < u gives min < u.  So the
   minimum, a root of Δ in (w, u), is ρ.  (u = ∞ when ρ is the largest root.)
 
-The maximum is the minimum of −S.  The point p is one of the answer's
+The maximum is the minimum of −S.  Where Δ ≡ 0 (det(S − v − λE) has a
+multiple root for every v: S = κE + c, or a repeated eigenvalue of the
+pencil's quadratic parts, as for S = xy on a sphere) the route only covers
+S = κE + c, S ≡ c on E, checked directly.  The point p is one of the answer's
 witnesses or found here by a search in floating point (a heuristic: only
 its exact value counts).
 """
@@ -69,8 +72,6 @@ def minimum(e, s, alg, witnesses, sign=1):
         shifted[3][3] -= v
         vals.append(_disc(P.u_trim(det_poly(shifted, me))))
     delta = _interpolate(vals)
-    if len(delta) < 2:
-        return False
     p = P.univariate(P.parse(alg.get("poly")))
     lo, hi = (parse_rational(x) for x in alg.get("interval"))
     if sign < 0:
@@ -79,6 +80,14 @@ def minimum(e, s, alg, witnesses, sign=1):
     psq = P.u_divmod(p, P.u_gcd(p, P.u_deriv(p)))[0]
     if len(psq) < 2 or _count_closed(P.sturm_sequence(psq), psq, lo, hi) != 1:
         return False
+    if len(delta) < 2:
+        # Δ ≡ 0: re-proved only when S − κE is a constant c (S ≡ c on E)
+        e0 = next(k for k in e if sum(k) > 0)
+        rest = P.add(sp, P.scale(e, sp.get(e0, Fraction(0)) / e[e0]), -1)
+        if any(sum(k) for k in rest):
+            return False
+        c = rest.get((0, 0, 0, 0), Fraction(0))
+        return P.u_eval(psq, c) == 0 and lo <= c <= hi
     g = P.u_gcd(psq, delta)
     if len(g) < 2 or _count_closed(P.sturm_sequence(g), g, lo, hi) != 1:
         return False  # the printed value is not a root of Δ

@@ -299,14 +299,18 @@ def rational_roots(f):
 
 def definite_member(a, b):
     """A rational t with A − tB definite (as a form in (x, y, z, 1)), or
-    None when no member of the pencil is definite: one candidate in each
-    gap between the real roots of det(A − tB) and beyond them."""
+    None when no member of the pencil is definite: one candidate strictly
+    inside each gap between the real roots of det(A − tB) and beyond them
+    (complete: definiteness can only change at a root)."""
+    from .sweep import _Root, _between
     from .tangent import _ldl_signs
 
     ma, mb = P.form_matrix(a), P.form_matrix(b)
-    _, _, intervals = real_roots(det_poly(ma, mb))
-    pts = sorted(x for iv in intervals for x in iv)
-    cands = [pts[0] - 1, pts[-1] + 1] + [(x + y) / 2 for x, y in zip(pts, pts[1:])] if pts else [Fraction(0)]
+    sqf, seq, intervals = real_roots(det_poly(ma, mb))
+    roots = [_Root(sqf, seq, lo, hi) for lo, hi in intervals]
+    # the inertia of A − tB is constant between consecutive roots: one
+    # rational strictly inside each gap, and one beyond each end
+    cands = [roots[0].lo - 1, roots[-1].hi + 1] + [_between(r, s) for r, s in zip(roots, roots[1:])] if roots else [Fraction(0)]
     for t in cands:
         s = _ldl_signs([[ma[i][j] - t * mb[i][j] for j in range(4)] for i in range(4)])
         if s is not None and 0 not in s and len(set(s)) == 1:

@@ -805,5 +805,10 @@ def test_extremes_by_the_discriminant():
     sample = [float(poly.evaluate(s2, [exact.QS(Fraction(3 * math.cos(a) * math.cos(b))), exact.QS(Fraction(2 * math.sin(a) * math.cos(b))),
                                          exact.QS(Fraction(math.sin(b)))]).a) for a in [k / 7 for k in range(44)] for b in [k / 7 - 1.5 for k in range(22)]]
     assert float(mins[0][0]) - 1e-9 <= min(sample) and max(sample) <= float(maxs[0][1]) + 1e-9
+    # S = E − 3 on the unit sphere: Δ ≡ 0, S ≡ −3 on E is both extremes; −2 is neither
+    e3, s3 = poly.parse("x^2+y^2+z^2-1"), poly.parse("x^2+y^2+z^2-4")
+    for sign in (1, -1):
+        assert extreme.minimum(e3, s3, {"poly": "u + 3", "interval": ["-3", "-3"]}, [], sign)
+        assert not extreme.minimum(e3, s3, {"poly": "u + 2", "interval": ["-2", "-2"]}, [], sign)
     # a value near the min that is not a root of Δ
     assert not extreme.minimum(e, s, {"poly": "u^2 - 160", "interval": ["12", "13"]}, [], 1)
