@@ -398,7 +398,17 @@ def check_natural(req, res):
             except NotChecked as e:
                 trusted.append(f"curve: no other real component; singular point kinds ({e})")
         elif unchecked:
-            trusted.append(f"{cls}: no real point besides the listed components")
+            try:  # two cones with a common vertex: at least the number of lines
+                from . import sweep
+
+                if not (data_a and data_a[0] == "cone" and cls == "lines"):
+                    raise NotChecked("not two cones")
+                n = sweep.common_vertex_lines(*data_a, B)
+                if n != counts["line"] or counts["conic"] or counts["point"]:
+                    raise CheckError(f"{counts['line']} lines listed, the common vertex's rulings give {n}")
+                checked.append("lines: as many as the rulings of one cone on which the other vanishes (common vertex)")
+            except NotChecked:
+                trusted.append(f"{cls}: no real point besides the listed components")
         else:
             why = _complete(A, B, res, comps)
             if why:
