@@ -32,36 +32,19 @@ from fractions import Fraction
 
 from . import poly as P
 from .exact import QS, parse_rational
-from .kernel import _det
-from .pencil import _interpolate, _isolate, definite_member, det_poly
+from .kernel import _det, _roots_in, sylvester
+from .pencil import _interpolate, definite_member, det_poly
 
 
 def _disc(h):
     """The resultant of h and h′ (a constant multiple of the discriminant)."""
-    d = P.u_deriv(h)
-    n, m = len(h) - 1, len(d) - 1
-    rows = [[Fraction(0)] * i + list(reversed(h)) + [Fraction(0)] * (m - 1 - i) for i in range(m)]
-    rows += [[Fraction(0)] * i + list(reversed(d)) + [Fraction(0)] * (n - 1 - i) for i in range(n)]
-    return _det(rows)
-
-
-def _roots(f):
-    from .sweep import _Root
-
-    sqf = P.u_divmod(f, P.u_gcd(f, P.u_deriv(f)))[0]
-    seq = P.sturm_sequence(sqf)
-    bound = 1 + max(abs(c / sqf[-1]) for c in sqf[:-1])
-    return [_Root(sqf, seq, lo, hi) for lo, hi in _isolate(seq, -bound, bound)]
-
-
-def _count_closed(seq, g, a, b):
-    return P.sturm_count(seq, a, b) + (P.u_eval(g, a) == 0)
+    return _det(sylvester(h, P.u_deriv(h)))
 
 
 def minimum(e, s, alg, witnesses, sign=1):
     """True when the printed extreme ``alg`` of ``sign``·S on E (the
     minimum for sign = 1, the maximum for −1) is re-proved as above."""
-    from .sweep import _between
+    from .sweep import _between, isolated_roots
     from .tangent import _ldl_signs
 
     sp = P.scale(s, Fraction(sign))
@@ -78,7 +61,7 @@ def minimum(e, s, alg, witnesses, sign=1):
         p = [c * (-1) ** i for i, c in enumerate(p)]
         lo, hi = -hi, -lo
     psq = P.u_divmod(p, P.u_gcd(p, P.u_deriv(p)))[0]
-    if len(psq) < 2 or _count_closed(P.sturm_sequence(psq), psq, lo, hi) != 1:
+    if len(psq) < 2 or _roots_in(P.sturm_sequence(psq), psq, lo, hi) != 1:
         return False
     if len(delta) < 2:
         # Δ ≡ 0: re-proved only when S − κE is a constant c (S ≡ c on E)
@@ -89,10 +72,10 @@ def minimum(e, s, alg, witnesses, sign=1):
         c = rest.get((0, 0, 0, 0), Fraction(0))
         return P.u_eval(psq, c) == 0 and lo <= c <= hi
     g = P.u_gcd(psq, delta)
-    if len(g) < 2 or _count_closed(P.sturm_sequence(g), g, lo, hi) != 1:
+    if len(g) < 2 or _roots_in(P.sturm_sequence(g), g, lo, hi) != 1:
         return False  # the printed value is not a root of Δ
     # ρ among the roots of Δ: the one that is a root of g inside [lo, hi]
-    roots = _roots(delta)
+    roots = isolated_roots(delta)
     gseq = P.sturm_sequence(g)
     j = None
     for i, r in enumerate(roots):

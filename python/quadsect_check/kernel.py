@@ -107,6 +107,20 @@ def check_roots(req, res):
     return checked, []
 
 
+def sylvester(a, b):
+    """The Sylvester matrix of a and b (ascending coefficients, formal
+    degrees len − 1): deg b rows of a's coefficients, deg a rows of b's."""
+    n, m = len(a) - 1, len(b) - 1
+    rows = []
+    for p, count in ((a, m), (b, n)):
+        for k in range(count):
+            row = [Fraction(0)] * (n + m)
+            for j, c in enumerate(reversed(p)):
+                row[k + j] = c
+            rows.append(row)
+    return rows
+
+
 def _expect(res, key, value):
     if res.get(key) != value or isinstance(res.get(key), bool):
         raise CheckError(f"{key} is {res.get(key)!r}, recomputed {value}")
@@ -187,18 +201,7 @@ def check_resultant(req, res):
             pt[w] = Fraction(val)
         a = [_eval_rat(c, pt) for c in fc]
         b = [_eval_rat(c, pt) for c in gc]
-        size = n + m
-        rows = []
-        for k in range(m):
-            row = [Fraction(0)] * size
-            for j, c in enumerate(reversed(a)):
-                row[k + j] = c
-            rows.append(row)
-        for k in range(n):
-            row = [Fraction(0)] * size
-            for j, c in enumerate(reversed(b)):
-                row[k + j] = c
-            rows.append(row)
+        rows = sylvester(a, b)
         if _det(rows) != _eval_rat(r, pt):
             raise CheckError(f"the resultant differs from the Sylvester determinant at {values}")
     return ["resultant (Sylvester determinants on a grid)", "degree"], []

@@ -559,6 +559,23 @@ def _coaxial_member(A, B):
     return None
 
 
+def _swept_quartic(A, B, data, branches=()):
+    """No member of rank ≤ 2 (else ``CheckError``), then the sweep over the
+    rulings of the cylinder (preferred) or the cone: ``sweep.curve_topology``'s
+    answer, or ``NotChecked`` with the first reason."""
+    from . import sweep
+
+    if not sweep.rank_two_free(P.form_matrix(A), P.form_matrix(B)):
+        raise CheckError("a member of the pencil has rank ≤ 2: the quadrics share a conic, not a quartic curve")
+    why = None
+    for i in sorted((i for i in (0, 1) if data[i]), key=lambda i: data[i][0] != "cylinder"):
+        try:
+            return sweep.curve_topology(*data[i], (A, B)[1 - i], branches)
+        except NotChecked as e:
+            why = why or e
+    raise why or NotChecked("no cylinder or cone")
+
+
 def _check_curve(A, B, data, comps):
     """A ``curve`` answer's topology: no member of the pencil has rank ≤ 2
     (so no conic, real or complex, lies on both quadrics; with no ruling on
@@ -566,26 +583,12 @@ def _check_curve(A, B, data, comps):
     and the sweep over the rulings of a cylinder or cone (module ``sweep``)
     gives the same number of real components, the same ``bounded`` flags
     and the same singular points (kind, isolated) as the answer."""
-    from . import sweep
-
     curves = [c for c in comps if c.get("type") == "curve"]
     if len(curves) != 1 or len(comps) != 1:
         raise NotChecked("a curve beside other components")
     c = curves[0]
-    if not sweep.rank_two_free(P.form_matrix(A), P.form_matrix(B)):
-        raise CheckError("a member of the pencil has rank ≤ 2: the quadrics share a conic, not a quartic curve")
-    eqs = {0: A, 1: B}
-    order = sorted((i for i in (0, 1) if data[i]), key=lambda i: data[i][0] != "cylinder")
-    why = None
     branches = c.get("branches") or []
-    for i in order:
-        try:
-            n, bounded, singular, located = sweep.curve_topology(*data[i], eqs[1 - i], branches)
-            break
-        except NotChecked as e:
-            why = why or e
-    else:
-        raise why or NotChecked("no cylinder or cone")
+    n, bounded, singular, located = _swept_quartic(A, B, data, branches)
     if c.get("degree") != 4:
         raise CheckError(f"degree {c.get('degree')!r} for an irreducible quartic")
     if c.get("real_components") != n:
@@ -709,19 +712,10 @@ def _counts_only(A, B, data, res):
             return why
         raise NotChecked("no member proves the intersection empty")
     if cls == "curve":
-        from . import sweep
-
-        if not sweep.rank_two_free(P.form_matrix(A), P.form_matrix(B)):
-            raise CheckError("a member of the pencil has rank ≤ 2: the quadrics share a conic, not a quartic curve")
-        order = sorted((i for i in (0, 1) if data[i]), key=lambda i: data[i][0] != "cylinder")
-        for i in order:
-            try:
-                _, _, singular, _ = sweep.curve_topology(*data[i], (A, B)[1 - i])
-                break
-            except NotChecked:
-                continue
-        else:
-            raise NotChecked("the sweep's preconditions")
+        try:
+            _, _, singular, _ = _swept_quartic(A, B, data)
+        except NotChecked:
+            raise NotChecked("the sweep's preconditions") from None
         got = (0, 0, sum(iso for _, iso in singular))
         if got != want:
             raise CheckError(f"counts {want}, the sweep finds {got}")

@@ -302,12 +302,11 @@ def definite_member(a, b):
     None when no member of the pencil is definite: one candidate strictly
     inside each gap between the real roots of det(A − tB) and beyond them
     (complete: definiteness can only change at a root)."""
-    from .sweep import _Root, _between
+    from .sweep import _between, isolated_roots
     from .tangent import _ldl_signs
 
     ma, mb = P.form_matrix(a), P.form_matrix(b)
-    sqf, seq, intervals = real_roots(det_poly(ma, mb))
-    roots = [_Root(sqf, seq, lo, hi) for lo, hi in intervals]
+    roots = isolated_roots(det_poly(ma, mb))
     # the inertia of A − tB is constant between consecutive roots: one
     # rational strictly inside each gap, and one beyond each end
     cands = [roots[0].lo - 1, roots[-1].hi + 1] + [_between(r, s) for r, s in zip(roots, roots[1:])] if roots else [Fraction(0)]

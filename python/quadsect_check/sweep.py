@@ -50,7 +50,7 @@ from fractions import Fraction
 from functools import cmp_to_key
 
 from . import poly as P
-from .exact import QS, CheckError, NotChecked, cross
+from .exact import QS, CheckError, NotChecked, cross, dot
 from .kernel import _yun
 from .pencil import _interpolate, _isolate, det_poly
 
@@ -163,6 +163,14 @@ class _Root:
             self.refine()
         v = P.u_eval(h, self.hi)
         return (v > 0) - (v < 0)
+
+
+def isolated_roots(f):
+    """The distinct real roots of f as ``_Root``s, ascending."""
+    from .pencil import real_roots
+
+    sqf, seq, intervals = real_roots(f)
+    return [_Root(sqf, seq, lo, hi) for lo, hi in intervals]
 
 
 def _compare(r, s):
@@ -388,7 +396,6 @@ def _locate(branch, sw, mode, roots, order, events, s_main):
     k, kk = [QS(c) for c in sw.k], QS(sum(c * c for c in sw.k))
     base = [QS(c) for c in sw.base]
     rel = [x - y for x, y in zip(r, base)]
-    dot = lambda p, q: sum((x * y for x, y in zip(p, q)), QS(0))  # noqa: E731
     s = dot(d, k) / kk
     if s.is_zero():
         raise NotChecked("a branch's ruling is not a ruling of the swept quadric")
