@@ -15,10 +15,12 @@ rotations, planes, quadrics (ellipsoid pairs), cubics and quartics,
 intersecting, separated and touching, and surfaces with repeated factors —
 a seeded random sample of ellipsoid pairs and of quadric/cubic surfaces;
 roots and resultants from benches/data/kernel_inputs.json (those of
-moderate size) and a few by hand.
+moderate size) and a few by hand; ellipsoid contacts of every kind by hand
+and a seeded random sample of poses of doubles.
 """
 
 import json
+import math
 import random
 import sys
 from fractions import Fraction
@@ -210,6 +212,68 @@ def kernel_lines():
     yield line(id="bad-input", op="roots", poly="x^")
 
 
+ID3 = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+
+
+def pose(c, r, rot=ID3):
+    return {"center": c, "semi_axes": r, "rotation": rot}
+
+
+def _rational_pose():
+    """An ellipsoid (2, 1, 1) rotated by a rational rotation R and a unit
+    sphere at c + R·(3, 0, 0): touching at c + R·(2, 0, 0) (exact strings)."""
+    rot, c = cayley(Fraction(1, 3), Fraction(1, 4), Fraction(-1, 2)), [Fraction(1), Fraction(-2), Fraction(1, 2)]
+    far = [c[i] + 3 * rot[i][0] for i in range(3)]
+    return (pose([q(x) for x in c], ["2", "1", "1"], [[q(x) for x in row] for row in rot]),
+            pose([q(x) for x in far], ["1", "1", "1"]))
+
+
+CONTACT = [
+    # touching from outside: spheres, an ellipsoid's tip, a rational rotation
+    (pose([0, 0, 0], [1, 1, 1]), pose([2, 0, 0], [1, 1, 1])),
+    (pose([0, 0, 0], [2, 1, 1]), "(x-3)^2+y^2+z^2-1"),
+    _rational_pose(),
+    # one inside the other
+    ("x^2+y^2+z^2-1", pose([0.1, 0, 0], [0.5, 0.3, 0.4])),
+    (pose([0, 0.2, 0], ["1/2", "1/3", "1/4"], [[0, 1, 0], [-1, 0, 0], [0, 0, 1]]), "1 - x^2/4 - y^2/4 - z^2/9"),
+    # touching from inside: at a point, the osculating sphere of a tip, two points, a circle
+    ("x^2+y^2+z^2-1", "(x-1)^2+y^2+z^2-4"),
+    (pose([0, 0, 0], [2, 1, 1]), pose(["7/4", 0, 0], ["1/4", "1/4", "1/4"])),
+    (pose([0, 0, 0], [2, 1, 1]), pose(["3/2", 0, 0], ["1/2", "1/2", "1/2"])),
+    (pose([0, 0, 0], [2, 1.5, 1]), "x^2+y^2+z^2-1"),
+    ("x^2+y^2+z^2-1", pose([0, 0, 0], [1, 1, 2])),
+    # the same ellipsoid
+    (pose([0, 0, 0], [2, 1, 1]), "x^2/4+y^2+z^2-1"),
+    ("1-x^2-y^2-z^2", "2x^2+2y^2+2z^2-2"),
+    # the surfaces cross; apart
+    ("x^2+y^2+z^2-1", pose(["1/3", 0, 0], ["1/2", 1, 1])),
+    ("x^2+y^2+z^2-1", pose([0, 0, 0], [2, 0.5, 0.5])),
+    (pose([0, 0, 0], [1, 2, 1]), pose([2.5, 0.3, 0], [1, 1, 1], [[0.36, 0.48, -0.8], [-0.8, 0.6, 0], [0.48, 0.64, 0.6]])),
+]
+
+
+def quaternion_rotation(rng):
+    """The rotation of a random unit quaternion, in doubles (not exactly
+    orthogonal: the ellipsoid is the one these doubles define)."""
+    w, x, y, z = (rng.gauss(0, 1) for _ in range(4))
+    n = math.sqrt(w * w + x * x + y * y + z * z)
+    w, x, y, z = w / n, x / n, y / n, z / n
+    return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+
+
+def contact_lines(rng, n=15):
+    """The contacts by hand, then n random pairs of poses of doubles
+    (centres in [−2, 2]³, semi-axes in [0.2, 1.2])."""
+    for i, (a, b) in enumerate(CONTACT):
+        yield line(id=f"contact:{i}", op="ellipsoid-contact", a=a, b=b)
+    for i in range(n):
+        a, b = (pose([rng.uniform(-2, 2) for _ in range(3)], [rng.uniform(0.2, 1.2) for _ in range(3)],
+                     quaternion_rotation(rng)) for _ in range(2))
+        yield line(id=f"contact-random:{i}", op="ellipsoid-contact", a=a, b=b)
+
+
 def main():
     rng = random.Random(20261204)
     out = sys.stdout
@@ -227,6 +291,8 @@ def main():
     for l in tangent_lines(rng):
         out.write(l + "\n")
     for l in kernel_lines():
+        out.write(l + "\n")
+    for l in contact_lines(random.Random(20261206)):
         out.write(l + "\n")
 
 

@@ -155,6 +155,7 @@ pub mod budget;
 #[cfg(feature = "cli")]
 #[doc(hidden)]
 pub mod cli;
+pub mod contact;
 mod elim;
 mod error;
 mod geom;

@@ -30,6 +30,11 @@ pub(crate) enum Request {
         b: Natural,
         components: bool,
     },
+    /// Two solid ellipsoids: separated, touching or overlapping.
+    EllipsoidContact {
+        a: crate::contact::ExactEllipsoid,
+        b: crate::contact::ExactEllipsoid,
+    },
     /// Real roots of a univariate polynomial.
     Roots { poly: String },
     /// A resultant.
@@ -41,15 +46,17 @@ pub(crate) enum Request {
 pub(crate) enum Answer {
     Tangent(TangentReport),
     Natural(NaturalReport),
+    Contact(crate::contact::ContactReport),
     Roots(RootsReport),
     Resultant(ResultantReport),
 }
 
 /// The operations by name, with the fields of their batch lines (besides
 /// [`LINE_FIELDS`]).
-pub(crate) const OPS: [(&str, &[&str]); 4] = [
+pub(crate) const OPS: [(&str, &[&str]); 5] = [
     ("tangent", &["ellipsoid", "surface", "values", "float"]),
     ("natural", &["a", "b", "components", "float"]),
+    ("ellipsoid-contact", &["a", "b"]),
     ("roots", &["poly"]),
     ("resultant", &["f", "g", "var"]),
 ];
@@ -106,6 +113,9 @@ impl Request {
                 options.components = *components;
                 Answer::Natural(crate::natural::classify_with(a, b, &options)?)
             }
+            Request::EllipsoidContact { a, b } => {
+                Answer::Contact(crate::contact::contact_report(a, b)?)
+            }
             Request::Roots { poly } => {
                 let p = crate::poly::parse_poly(poly)?;
                 Answer::Roots(crate::kernel::roots_of(&p)?)
@@ -142,6 +152,7 @@ impl fmt::Display for Answer {
         match self {
             Answer::Tangent(r) => fmt::Display::fmt(r, f),
             Answer::Natural(r) => fmt::Display::fmt(r, f),
+            Answer::Contact(r) => fmt::Display::fmt(r, f),
             Answer::Roots(r) => fmt::Display::fmt(r, f),
             Answer::Resultant(r) => fmt::Display::fmt(r, f),
         }
@@ -204,6 +215,132 @@ mod json {
             other => crate::natural::types::from_json_in(other, mode),
         }
         .map_err(|e| e.context(&format!("in \"{name}\"")))
+    }
+
+    /// An ellipsoid of `ellipsoid-contact`: `{"center", "semi_axes",
+    /// "rotation"}` (JSON numbers are the doubles they denote, strings exact
+    /// numbers) or a quadric polynomial as a string.
+    fn contact_ellipsoid(
+        obj: &Map<String, Value>,
+        name: &str,
+    ) -> Result<crate::contact::ExactEllipsoid, Error> {
+        use crate::contact::{ExactEllipsoid, Pose};
+        let ctx = |e: Error| e.context(&format!("in \"{name}\""));
+        let v = field(obj, name)?;
+        let o = match v {
+            Value::String(s) => return s.parse::<ExactEllipsoid>().map_err(ctx),
+            Value::Object(o) => o,
+            _ => {
+                return Err(Error::new(
+                    ErrorKind::BadField,
+                    format!(
+                        "field \"{name}\" must be an object {{\"center\", \"semi_axes\", \"rotation\"}} or a quadric polynomial string"
+                    ),
+                ));
+            }
+        };
+        const KEYS: [&str; 3] = ["center", "semi_axes", "rotation"];
+        if let Some(k) = o.keys().find(|k| !KEYS.contains(&k.as_str())) {
+            return Err(Error::new(
+                ErrorKind::BadField,
+                format!(
+                    "unknown key {} in \"{name}\" (expected center, semi_axes, rotation)",
+                    shown(&Value::from(k.as_str()))
+                ),
+            ));
+        }
+        // numbers: (exact value, the double when given as a JSON number)
+        let num = |v: &Value, at: &str| -> Result<(crate::number::Q, Option<f64>), Error> {
+            match v {
+                Value::Number(n) => {
+                    let x = n.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                        Error::new(
+                            ErrorKind::Number,
+                            format!("{at}: {n} is not a finite double"),
+                        )
+                    })?;
+                    Ok((crate::number::Q::from_float(x).unwrap(), Some(x)))
+                }
+                Value::String(s) => {
+                    Ok((crate::parse_rational(s).map_err(|e| e.context(at))?, None))
+                }
+                _ => Err(Error::new(
+                    ErrorKind::BadField,
+                    format!("{at} must be a number or a string holding one"),
+                )),
+            }
+        };
+        let vec3 = |key: &str| -> Result<Vec<(crate::number::Q, Option<f64>)>, Error> {
+            let at = format!("\"{name}\".{key}");
+            match o.get(key) {
+                None => Err(Error::new(
+                    ErrorKind::MissingField,
+                    format!("missing key {at}"),
+                )),
+                Some(Value::Array(xs)) if xs.len() == 3 => xs
+                    .iter()
+                    .enumerate()
+                    .map(|(i, x)| num(x, &format!("{at}[{i}]")))
+                    .collect(),
+                Some(_) => Err(Error::new(
+                    ErrorKind::BadField,
+                    format!("{at} must be an array of 3 numbers"),
+                )),
+            }
+        };
+        let c = vec3("center")?;
+        let r = vec3("semi_axes")?;
+        let rows = match o.get("rotation") {
+            None => {
+                return Err(Error::new(
+                    ErrorKind::MissingField,
+                    format!("missing key \"{name}\".rotation"),
+                ));
+            }
+            Some(Value::Array(rows)) if rows.len() == 3 => rows
+                .iter()
+                .enumerate()
+                .map(|(i, row)| match row {
+                    Value::Array(xs) if xs.len() == 3 => xs
+                        .iter()
+                        .enumerate()
+                        .map(|(j, x)| num(x, &format!("\"{name}\".rotation[{i}][{j}]")))
+                        .collect::<Result<Vec<_>, Error>>(),
+                    _ => Err(Error::new(
+                        ErrorKind::BadField,
+                        format!("\"{name}\".rotation[{i}] must be an array of 3 numbers"),
+                    )),
+                })
+                .collect::<Result<Vec<_>, Error>>()?,
+            Some(_) => {
+                return Err(Error::new(
+                    ErrorKind::BadField,
+                    format!("\"{name}\".rotation must be a 3×3 array (rows)"),
+                ));
+            }
+        };
+        let all_doubles = c
+            .iter()
+            .chain(&r)
+            .chain(rows.iter().flatten())
+            .all(|x| x.1.is_some());
+        if all_doubles {
+            let d = |x: &(crate::number::Q, Option<f64>)| x.1.unwrap();
+            let p = Pose::new(
+                [d(&c[0]), d(&c[1]), d(&c[2])],
+                [d(&r[0]), d(&r[1]), d(&r[2])],
+                std::array::from_fn(|i| std::array::from_fn(|j| d(&rows[i][j]))),
+            )
+            .map_err(ctx)?;
+            return Ok(ExactEllipsoid::from_pose(&p));
+        }
+        let q = |x: &(crate::number::Q, Option<f64>)| x.0.clone();
+        ExactEllipsoid::from_pose_exact(
+            std::array::from_fn(|i| q(&c[i])),
+            std::array::from_fn(|i| q(&r[i])),
+            std::array::from_fn(|i| std::array::from_fn(|j| q(&rows[i][j]))),
+        )
+        .map_err(ctx)
     }
 
     /// A field name or value as shown in a message: quoted and escaped
@@ -321,6 +458,10 @@ mod json {
                     b: natural(obj, "b", mode(obj)?)?,
                     components: flag(obj, "components", true)?,
                 },
+                "ellipsoid-contact" => Request::EllipsoidContact {
+                    a: contact_ellipsoid(obj, "a")?,
+                    b: contact_ellipsoid(obj, "b")?,
+                },
                 "roots" => Request::Roots {
                     poly: text(obj, "poly")?,
                 },
@@ -339,6 +480,7 @@ mod json {
             match self {
                 Answer::Tangent(r) => r.serialize(s),
                 Answer::Natural(r) => r.serialize(s),
+                Answer::Contact(r) => crate::report::contact_json(r).serialize(s),
                 Answer::Roots(r) => r.serialize(s),
                 Answer::Resultant(r) => r.serialize(s),
             }
@@ -351,6 +493,7 @@ mod json {
             match self {
                 Answer::Tangent(r) => crate::report::tangent_json(r),
                 Answer::Natural(r) => crate::report::natural_json(r),
+                Answer::Contact(r) => crate::report::contact_json(r),
                 Answer::Roots(r) => crate::report::roots_json(r),
                 Answer::Resultant(r) => crate::report::resultant_json(r),
             }

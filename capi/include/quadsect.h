@@ -522,6 +522,11 @@ typedef struct qs_natural_components {
 } qs_natural_components;
 
 /**
+ * The contact of two solid ellipsoids (`QS_CONTACT_…`).
+ */
+typedef int32_t qs_contact;
+
+/**
  * A sphere: `point` is the centre, `param` the squared radius.
  */
 #define QS_SPHERE 0
@@ -755,6 +760,21 @@ typedef struct qs_natural_components {
  * Two real branches touch.
  */
 #define QS_SINGULAR_TACNODE 3
+
+/**
+ * No common point.
+ */
+#define QS_CONTACT_SEPARATED 0
+
+/**
+ * Exactly one common point, interiors disjoint.
+ */
+#define QS_CONTACT_TOUCHING 1
+
+/**
+ * A common interior point.
+ */
+#define QS_CONTACT_OVERLAPPING 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -1082,6 +1102,39 @@ int qs_natural_components_f64(const struct qs_natural_f64 *a,
  * freed only once.
  */
 void qs_natural_components_free(struct qs_natural_components *c);
+
+/**
+ * Whether two solid ellipsoids given in doubles are separated, touching
+ * or overlapping, exactly (a floating-point filter, exact arithmetic when
+ * it cannot decide).  Writes `*out` and returns 0; 2 for bad input (NaN,
+ * infinity, a semi-axis ≤ 0, a singular matrix: `*out` is then
+ * `QS_CONTACT_SEPARATED` and `*err` says why), 1 internal.
+ *
+ * # Safety
+ * `a`, `b` are NULL or valid; `out` is NULL or writable; `err` is NULL or
+ * points to a writable pointer.
+ */
+int qs_ellipsoid_contact_f64(const struct qs_ellipsoid_f64 *a,
+                             const struct qs_ellipsoid_f64 *b,
+                             qs_contact *out,
+                             struct qs_error **err);
+
+/**
+ * The contact of `n` pairs `(a[i], b[i])` into `out[i]` (`QS_CONTACT_…`
+ * codes as bytes), on `threads` threads (0: all cores).  Returns 0; 2 when
+ * a pair is bad (`*err` names its index; the answers of the other pairs
+ * are then unspecified), 1 internal.
+ *
+ * # Safety
+ * `a`, `b` point to `n` readable `qs_ellipsoid_f64` (or are NULL with
+ * `n = 0`); `out` points to `n` writable bytes; `err` as above.
+ */
+int qs_ellipsoid_contact_f64_array(size_t n,
+                                   const struct qs_ellipsoid_f64 *a,
+                                   const struct qs_ellipsoid_f64 *b,
+                                   int8_t *out,
+                                   size_t threads,
+                                   struct qs_error **err);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -31,6 +31,8 @@ pub mod options;
 pub mod typed;
 // after typed: its section of the header follows qs_natural_classify_f64
 pub mod components;
+// after components: the ellipsoid pairs
+pub mod contact;
 
 use std::ffi::c_char;
 

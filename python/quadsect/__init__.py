@@ -59,6 +59,7 @@ from ._components import (
     SingularPoint,
     _component,
 )
+from ._contact import Contact, ContactReport, ellipsoid_contact, ellipsoid_contact_pair
 from ._errors import BudgetError, InputError, InternalError, QuadsectError
 from ._quadsect import QuadraticIrrational, RealAlgebraic, answer_line, exact
 
@@ -116,6 +117,11 @@ __all__ = [
     "Curve",
     "SingularPoint",
     "CurveBranch",
+    # ellipsoid contact
+    "ellipsoid_contact",
+    "ellipsoid_contact_pair",
+    "Contact",
+    "ContactReport",
     # results
     "TangentResult",
     "NaturalResult",

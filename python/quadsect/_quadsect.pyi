@@ -157,3 +157,7 @@ def roots(
 def resultant(
     f: str, g: str, var: str, time_limit: Optional[float] = None
 ) -> Tuple[str, str]: ...
+
+def ellipsoid_contact_bytes(
+    ca: bytes, ra: bytes, ma: bytes, cb: bytes, rb: bytes, mb: bytes, threads: int = 0
+) -> bytes: ...

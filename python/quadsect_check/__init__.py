@@ -15,6 +15,9 @@ see docs/contract.md §7).  ``rejected``: a claim is wrong, or its
 certificate is missing, malformed or not for this input (``reason`` says
 which).
 
+The ops checked: ``natural`` (module natural), ``tangent`` (tangent),
+``ellipsoid-contact`` (contact), ``roots`` and ``resultant`` (kernel).
+
 Usage: ``python3 -m quadsect_check FILE`` (``-``: standard input), or
 :func:`check_answer` on one parsed answer line.
 """
@@ -22,6 +25,7 @@ Usage: ``python3 -m quadsect_check FILE`` (``-``: standard input), or
 import json
 import sys
 
+from .contact import check_contact
 from .exact import CheckError, NotChecked
 from .kernel import check_resultant, check_roots
 from .natural import check_natural
@@ -36,6 +40,7 @@ if hasattr(sys, "set_int_max_str_digits"):
 _OPS = {
     "natural": check_natural,
     "tangent": check_tangent,
+    "ellipsoid-contact": check_contact,
     "roots": check_roots,
     "resultant": check_resultant,
 }

@@ -19,6 +19,7 @@
 use pyo3::prelude::*;
 
 mod batch;
+mod contact;
 mod guard;
 mod jobs;
 mod natural;
@@ -46,5 +47,6 @@ fn _quadsect(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(jobs::roots, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::resultant, m)?)?;
     m.add_function(wrap_pyfunction!(batch::answer_line, m)?)?;
+    m.add_function(wrap_pyfunction!(contact::ellipsoid_contact_bytes, m)?)?;
     Ok(())
 }

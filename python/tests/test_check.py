@@ -3,8 +3,10 @@
 The corpus of scripts/check_corpus.py is answered once per session by
 `quadsect batch --echo`; every answer must be verified or partial, and every
 answer corrupted by one of the mutators below (a wrong class, count, conic,
-line, point, branch, witness, interval, coefficient, or the certificate of
-another input) must be rejected."""
+line, point, branch, witness, interval, coefficient, contact or kind, a λ or
+μ, an interior point, a and b exchanged, or the certificate of another
+input) must be rejected.  Section 4: ellipsoid-contact on a larger random
+sample of poses and on hand-made inputs."""
 
 import copy
 import json
@@ -30,7 +32,8 @@ from quadsect_check import exact, natural, poly
 SAMPLE = 25
 
 CLASSES = ["same-surface", "curve", "conics", "conic-and-line", "lines", "points", "empty"]
-GEOMETRY = {"natural": ("a", "b"), "tangent": ("ellipsoid", "surface"), "roots": ("poly",), "resultant": ("f", "g", "var")}
+GEOMETRY = {"natural": ("a", "b"), "tangent": ("ellipsoid", "surface"), "roots": ("poly",), "resultant": ("f", "g", "var"),
+            "ellipsoid-contact": ("a", "b")}
 
 
 def quadsect_binary():
@@ -81,11 +84,11 @@ def test_corpus_has_no_rejection(answers, verdicts):
     for a, req in answers:
         if a.get("ok"):
             by_op.setdefault(req["op"], []).append((a, verdicts[a["id"]]))
-    for op in ("natural", "tangent", "roots", "resultant"):
+    for op in ("natural", "tangent", "roots", "resultant", "ellipsoid-contact"):
         assert by_op.get(op), f"no {op} answer in the corpus"
-    not_verified = [(a["id"], v["status"], v["trusted"]) for op in ("roots", "resultant") for a, v in by_op[op]
-                    if v["status"] != "verified"]
-    assert not not_verified, f"roots/resultant answers not verified: {not_verified}"
+    not_verified = [(a["id"], v["status"], v["trusted"]) for op in ("roots", "resultant", "ellipsoid-contact")
+                    for a, v in by_op[op] if v["status"] != "verified"]
+    assert not not_verified, f"roots/resultant/ellipsoid-contact answers not verified: {not_verified}"
     inter = [(a, v) for a, v in by_op["tangent"] if a["result"].get("verdict") == "intersecting"]
     assert inter
     bad = [a["id"] for a, v in inter if not any(c.startswith("intersecting:") for c in v["checked"])]
@@ -427,6 +430,115 @@ def mut_member_plane(answer):
     return _variants(answer, edit, range(len(planes)))
 
 
+# ellipsoid-contact
+
+CONTACTS = [("separated", "separated"), ("touching", "externally-touching")] + [
+    ("overlapping", k) for k in ("surfaces-cross", "A-inside-B", "B-inside-A", "internally-touching", "identical")]
+
+
+def _contact_cert(answer):
+    r = answer["result"] if answer.get("ok") and _op(answer) == "ellipsoid-contact" else None
+    return (r, r["certificate"]) if r is not None else (None, None)
+
+
+def _contact_edits(answer, edits):
+    """One deep copy per edit, changed by ``edit(certificate_copy)``."""
+    out = []
+    for edit in edits:
+        m = copy.deepcopy(answer)
+        edit(m["result"]["certificate"])
+        out.append(m)
+    return out
+
+
+def mut_contact_flip(answer):
+    """Every other (contact, kind) pair."""
+    r, _ = _contact_cert(answer)
+    if r is None:
+        return []
+    out = []
+    for c, k in CONTACTS:
+        if (c, k) != (r["contact"], r["kind"]):
+            m = copy.deepcopy(answer)
+            m["result"].update(contact=c, kind=k)
+            out.append(m)
+    return out
+
+
+def mut_contact_lambda(answer):
+    """λ ≤ 0; λ so small (large) that det(λA + B) has the sign of det B
+    (of λ⁴·det A), negative for an ellipsoid; a touching λ doubled."""
+    r, cert = _contact_cert(answer)
+    if r is None or r["contact"] == "overlapping":
+        return []
+    ks = [-1, 0, Fraction(1, 10**30), 10**30] if r["contact"] == "separated" else [-1, 2]
+    return _contact_edits(answer, [lambda c, k=k: c.__setitem__("lambda", _scale(c["lambda"], k)) for k in ks])
+
+
+def mut_contact_point(answer):
+    """The touching point moved off the surfaces, the common interior point
+    far outside, the evidence's surface point moved, a_only and b_only
+    exchanged."""
+    r, cert = _contact_cert(answer)
+    if r is None or r["contact"] == "separated":
+        return []
+    nudge = lambda pt: pt.__setitem__(0, _shift(pt[0], Fraction(1, 1000)))  # noqa: E731
+    if r["contact"] == "touching":
+        return _contact_edits(answer, [lambda c: nudge(c["point"])])
+    edits = [lambda c: c.__setitem__("point", ["100", "100", "100"])]
+    ke = cert.get("kind_evidence") or {}
+    if ke.get("type") == "semidefinite" and ke.get("point"):
+        edits.append(lambda c: nudge(c["kind_evidence"]["point"]))
+    if ke.get("type") == "cross" and ke.get("a_only") and ke.get("b_only"):
+        edits.append(lambda c: c["kind_evidence"].update(a_only=ke["b_only"], b_only=ke["a_only"]))
+    return _contact_edits(answer, edits)
+
+
+def mut_contact_evidence(answer):
+    """μ negated; the semidefinite sign flipped; B = 2μA claimed."""
+    r, cert = _contact_cert(answer)
+    ke = (cert or {}).get("kind_evidence") or {}
+    if ke.get("type") not in ("definite", "semidefinite", "identical"):
+        return []
+    edits = [lambda c: c["kind_evidence"].__setitem__("mu", _scale(ke["mu"], -1))]
+    if ke["type"] == "semidefinite":
+        edits.append(lambda c: c["kind_evidence"].__setitem__("sign", {"negative": "positive"}.get(ke["sign"], "negative")))
+    if ke["type"] == "identical":
+        edits.append(lambda c: c["kind_evidence"].__setitem__("mu", _scale(ke["mu"], 2)))
+    return _contact_edits(answer, edits)
+
+
+def _is_one(v):
+    return Fraction(v["a"]) == 1 and Fraction(v["b"]) == 0 if isinstance(v, dict) else Fraction(v) == 1
+
+
+def contact_symmetric(answer):
+    """Whether the certificate proves the claim for (b, a) as well: a
+    separating λ may; a touching λ = 1, B = 1·A, a cross without both
+    points do.  Every other claim is not symmetric: A-inside-B becomes
+    B-inside-A; λ∇q_A + ∇q_B = 0 and λ∇q_B + ∇q_A = 0 need λ² = 1;
+    B − μA ≤ 0 and A − μB ≤ 0 give (μ² − 1)B ≥ 0, so μ = 1 and A = B."""
+    r, cert = _contact_cert(answer)
+    ke = cert.get("kind_evidence") or {}
+    return (r["contact"] == "separated" or (r["contact"] == "touching" and _is_one(cert["lambda"]))
+            or (ke.get("type") == "identical" and _is_one(ke["mu"]))
+            or (ke.get("type") == "cross" and not (ke.get("a_only") and ke.get("b_only"))))
+
+
+def swap_ab(answer):
+    m = copy.deepcopy(answer)
+    req = json.loads(m["request"])
+    req["a"], req["b"] = req["b"], req["a"]
+    m["request"] = json.dumps(req)
+    return m
+
+
+def mut_contact_swap_ab(answer):
+    """a and b exchanged in the request (where the claim is not symmetric)."""
+    r, _ = _contact_cert(answer)
+    return [] if r is None or contact_symmetric(answer) else [swap_ab(answer)]
+
+
 # roots
 
 
@@ -527,6 +639,8 @@ def _has_claims(answer):
         return cert.get("witness_negative") is not None or cert.get("witness_positive") is not None
     if op == "roots":
         return bool(r.get("intervals"))
+    if op == "ellipsoid-contact":  # a separating λ may separate another pair too
+        return r.get("contact") != "separated"
     return True
 
 
@@ -570,6 +684,7 @@ MUTATORS = [
     mut_s_lemma, mut_member_plane, mut_tangent_extreme,
     mut_roots_shift, mut_roots_count, mut_roots_multiplicity, mut_roots_descartes, mut_roots_drop,
     mut_resultant_value, mut_resultant_degree,
+    mut_contact_flip, mut_contact_lambda, mut_contact_point, mut_contact_evidence, mut_contact_swap_ab,
 ]
 
 
@@ -579,7 +694,7 @@ def _stratum(answer):
     r = answer.get("result") or {}
     comps = r.get("components") or []
     kinds = tuple(sorted({(c.get("type"), c.get("conic")) for c in comps if isinstance(c, dict)}, key=str))
-    return (_op(answer), r.get("class") or r.get("verdict"), kinds)
+    return (_op(answer), r.get("class") or r.get("verdict") or r.get("kind"), kinds)
 
 
 def _sample(pairs, n):
@@ -812,3 +927,140 @@ def test_extremes_by_the_discriminant():
         assert not extreme.minimum(e3, s3, {"poly": "u + 2", "interval": ["-2", "-2"]}, [], sign)
     # a value near the min that is not a root of Δ
     assert not extreme.minimum(e, s, {"poly": "u^2 - 160", "interval": ["12", "13"]}, [], 1)
+
+
+# ---- 4. ellipsoid-contact ------------------------------------------------
+
+CONTACT_MUTATORS = [mut_contact_flip, mut_contact_lambda, mut_contact_point, mut_contact_evidence, mut_contact_swap_ab]
+
+CONTACT_EXAMPLES = [
+    {"a": {"center": [0, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+     "b": {"center": [2, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}},
+    {"a": {"center": [0, 0, 0], "semi_axes": [1, 2, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+     "b": {"center": [2.5, 0.3, 0], "semi_axes": [1, 1, 1], "rotation": [[0.36, 0.48, -0.8], [-0.8, 0.6, 0], [0.48, 0.64, 0.6]]}},
+    {"a": "x^2+y^2+z^2-1", "b": {"center": ["1/3", 0, 0], "semi_axes": ["1/2", 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}},
+    {"a": "x^2+y^2+z^2-1", "b": "(x-1)^2+y^2+z^2-4"},
+    # exactly touching at (1.1, 0, 0) with exact decimals; as JSON numbers (doubles) the
+    # centres are 2 + 8.3e-17 apart: separated, the touching certificate rejected (below)
+    {"a": {"center": ["0.1", 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+     "b": {"center": ["2.1", 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}},
+    {"a": {"center": [0.1, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+     "b": {"center": [2.1, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}},
+    # a non-orthogonal matrix, exact decimal strings and an exponent
+    {"a": {"center": ["1e-3", "-0.25", 0], "semi_axes": ["0.5", 1, "3/4"], "rotation": [[2, 1, 0], [0, 1, 0], [0, "1/3", 1]]},
+     "b": "x^2 + 2y^2 + 3z^2 - 1"},
+]
+
+
+def _corpus_script():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("check_corpus", REPO / "scripts" / "check_corpus.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.fixture(scope="module")
+def contact_answers():
+    """The contacts by hand of scripts/check_corpus.py, 100 random pairs of
+    poses of doubles (another seed than the corpus's) and the examples
+    above, answered by the CLI: [(answer, verdict)]."""
+    import random
+
+    binary = quadsect_binary()
+    if binary is None:
+        pytest.skip("no quadsect CLI: set QUADSECT_BIN or run `cargo build --release` (target/release/quadsect)")
+    lines = list(_corpus_script().contact_lines(random.Random(7), 100))
+    lines += [json.dumps({"id": f"contact-example:{i}", "op": "ellipsoid-contact", **ex}) for i, ex in enumerate(CONTACT_EXAMPLES)]
+    out = subprocess.run([str(binary), "batch", "--echo", "-"], input="\n".join(lines) + "\n",
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    answers = [json.loads(l) for l in out.stdout.splitlines() if l.strip()]
+    assert len(answers) == len(lines) and all(a.get("ok") for a in answers), [a for a in answers if not a.get("ok")][:3]
+    return [(a, quadsect_check.check_answer(a)) for a in answers]
+
+
+def test_contact_answers_verified(contact_answers):
+    rejected = [(a["id"], v["reason"]) for a, v in contact_answers if v["status"] == "rejected"]
+    assert not rejected, f"engine answers rejected: {rejected}"
+    # partial only for a kind whose evidence lacks a point (named)
+    partial = [(a["id"], v["trusted"]) for a, v in contact_answers if v["status"] == "partial"]
+    assert all(t and all(x.startswith(("surfaces-cross: ", "internally-touching: ")) for x in t) for _, t in partial), partial
+    assert len(partial) <= len(contact_answers) // 20, partial
+    kinds = {a["result"]["kind"] for a, _ in contact_answers}
+    assert kinds == {k for _, k in CONTACTS}, kinds
+    assert {a["result"]["route"] for a, _ in contact_answers} == {"filter", "exact"}
+    # touching from inside without a point in the evidence (the osculating sphere of a tip,
+    # two points, a circle): the checker finds one in the kernel of B − μA
+    found = [a["id"] for a, v in contact_answers if any("found in the kernel" in c for c in v["checked"])]
+    assert {"contact:7", "contact:8", "contact:9"} <= set(found), found
+    by_id = {a["id"]: a["result"] for a, _ in contact_answers}
+    assert by_id["contact-example:0"]["contact"] == "touching"
+    assert by_id["contact-example:1"]["contact"] == "separated"
+    assert by_id["contact-example:3"]["kind"] == "internally-touching"
+    assert by_id["contact-example:4"]["contact"] == "touching" and by_id["contact-example:5"]["contact"] == "separated"
+
+
+def test_contact_mutations_rejected(contact_answers):
+    applied, survivors = {}, []
+    for mut in CONTACT_MUTATORS:
+        applied[mut.__name__] = 0
+        for a, v in contact_answers:
+            if v["status"] == "rejected":
+                continue
+            for m in mut(a):
+                applied[mut.__name__] += 1
+                w = check(m)
+                if w["status"] != "rejected":
+                    survivors.append((mut.__name__, a["id"], w["status"], w["trusted"]))
+    print("mutated contact answers checked:", applied)
+    assert all(n >= 5 for n in applied.values()), applied
+    assert not survivors, survivors
+    # a symmetric certificate stays valid for (b, a): touching spheres (λ = 1), B = 1·A
+    sym = [a for a, v in contact_answers if v["status"] == "verified" and a["result"]["contact"] != "separated" and contact_symmetric(a)]
+    assert len(sym) >= 3 and all(check(swap_ab(a))["status"] == "verified" for a in sym)
+    # a strict containment passed off as touching from inside: B − μA is
+    # semidefinite, but no common surface point exists (partial without
+    # one, rejected with one)
+    inside = [a for a, v in contact_answers if v["status"] == "verified" and a["result"]["kind"] in ("A-inside-B", "B-inside-A")]
+    assert inside
+    for a in inside:
+        m = copy.deepcopy(a)
+        ke = m["result"]["certificate"]["kind_evidence"]
+        sign = "negative" if a["result"]["kind"] == "A-inside-B" else "positive"
+        m["result"]["kind"] = "internally-touching"
+        m["result"]["certificate"]["kind_evidence"] = {"type": "semidefinite", "mu": ke["mu"], "sign": sign, "point": None}
+        v = check(m)
+        assert v["status"] == "partial" and v["trusted"] == ["internally-touching: the surfaces meet (no common point given)"], v
+        m["result"]["certificate"]["kind_evidence"]["point"] = m["result"]["certificate"]["point"]
+        assert check(m)["status"] == "rejected"
+    # the exact-decimal touching certificate is not one for the doubles 0.1, 2.1
+    by_id = {a["id"]: a for a, _ in contact_answers}
+    m = copy.deepcopy(by_id["contact-example:4"])
+    m["request"] = json.dumps({**json.loads(by_id["contact-example:5"]["request"]), "id": m["id"]})
+    assert check(m)["status"] == "rejected"
+
+
+def test_contact_canonical_forms():
+    from quadsect_check import contact
+
+    form = lambda e: contact.ellipsoid_form(e, "a")  # noqa: E731
+    P = poly.parse
+    # R's columns are the axes: the long semi-axis 2 along R·e₁ = (0, −1, 0)
+    assert form({"center": [1, 2, 3], "semi_axes": [2, 1, 1], "rotation": [[0, 1, 0], [-1, 0, 0], [0, 0, 1]]}) == P(
+        "(x-1)^2 + (y-2)^2/4 + (z-3)^2 - 1")
+    # any invertible matrix, used as Rᵀ: R = diag(2, 1, 1) gives (2x)² + y² + z² ≤ 1
+    assert form({"center": [0, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[2, 0, 0], [0, 1, 0], [0, 0, 1]]}) == P("4*x^2+y^2+z^2-1")
+    # JSON numbers are doubles, strings exact
+    assert form({"center": [0.1, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}) != P("(x-0.1)^2+y^2+z^2-1")
+    assert form({"center": ["0.1", 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}) == P("(x-0.1)^2+y^2+z^2-1")
+    assert form("1 - x^2 - y^2/4 - z^2") == P("x^2 + y^2/4 + z^2 - 1")  # negative inside
+    bad = [{"center": [0, 0, 0], "semi_axes": [1, 0, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+           {"center": [0, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [1, 1, 0]]},
+           {"center": [0, 0, 0], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0]]},
+           {"center": [0, 0, True], "semi_axes": [1, 1, 1], "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+           "x^2 + y^2 - z^2 - 1", "x^2 + y^2 + z^2 + 1", "x^2 + y^2 + z^2", "x^2 + y^2 - 1", "x^3 + y^2 + z^2 - 1", 5]
+    for e in bad:
+        with pytest.raises(exact.CheckError):
+            form(e)

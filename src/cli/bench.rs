@@ -896,11 +896,20 @@ pub fn run(
 ) -> Result<Vec<Row>, Error> {
     let mut rows = Vec::new();
     let all = suite == "all";
-    if !["all", "kernel", "tangent", "nonreduced", "natural"].contains(&suite) {
+    if ![
+        "all",
+        "kernel",
+        "tangent",
+        "nonreduced",
+        "natural",
+        "contact",
+    ]
+    .contains(&suite)
+    {
         return Err(Error::new(
             ErrorKind::Input,
             format!(
-                "unknown benchmark suite \"{suite}\" (kernel, tangent, nonreduced, natural or all)"
+                "unknown benchmark suite \"{suite}\" (kernel, tangent, nonreduced, natural, contact or all)"
             ),
         ));
     }
@@ -928,6 +937,9 @@ pub fn run(
     if all || suite == "natural" {
         natural_suite(&mut rows)?;
         pairs_suite(pairs_path, &mut rows)?;
+    }
+    if suite == "contact" {
+        super::bench_contact::contact_suite(pairs_path, &mut rows)?;
     }
     Ok(rows)
 }

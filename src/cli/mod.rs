@@ -10,6 +10,7 @@ use std::process::ExitCode;
 pub mod alloc;
 pub mod bench;
 pub(crate) mod bench_cases;
+mod bench_contact;
 pub mod examples;
 mod limits;
 
@@ -116,7 +117,8 @@ enum Command {
     /// point method and the natural-quadric deciders.
     Bench {
         /// kernel, tangent, nonreduced (surfaces with a repeated factor),
-        /// natural or all.
+        /// natural, contact (ellipsoid pairs; --pairs takes a JSON-lines file
+        /// of scripts/bench_contact.py) or all (all but contact).
         #[arg(default_value = "all")]
         suite: String,
         /// Kernel inputs (JSON; default: the copy shipped in the binary,
@@ -135,6 +137,21 @@ enum Command {
         /// and cases.jsonl with E and S), for scripts/bench_msolve.py.
         #[arg(long, value_name = "DIR")]
         dump_systems: Option<std::path::PathBuf>,
+    },
+    /// Ellipsoid pairs (JSON lines, file or - for stdin): separated, touching or
+    /// overlapping, exactly, with a certificate; one answer line per pair.
+    #[command(after_help = ELLIPSOIDS_HELP)]
+    Ellipsoids {
+        /// Input file; standard input when absent or "-".
+        file: Option<String>,
+        /// Worker threads (default: all cores).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+        /// Put each request line, verbatim, into its answer as "request".
+        #[arg(long)]
+        echo: bool,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// JSON lines in (file or - for stdin), one JSON answer line out per input line.
     #[command(after_help = BATCH_HELP)]
@@ -164,6 +181,7 @@ line is {\"id\": …, \"ok\": true, \"result\": {…}} or {\"id\": …, \"ok\": 
 Ops and their fields:
   tangent     ellipsoid, surface; optional values (false: the verdict only), float
   natural     a, b (short syntax or JSON object); optional components, float
+  ellipsoid-contact  a, b (see quadsect ellipsoids --help)
   roots       poly
   resultant   f, g, var
 Fields of every line (all optional):
@@ -179,6 +197,41 @@ With --echo each answer also has \"request\": the input line, verbatim, as a JSO
 
 Exit status: 0 when every line was answered, whatever the answers (bad lines, exhausted
 budgets and internal failures are error lines); 2 when the input cannot be read.";
+
+/// `quadsect ellipsoids --help`, after the options.
+const ELLIPSOIDS_HELP: &str = "\
+Each line: {\"id\": …, \"a\": E, \"b\": E} (\"op\": \"ellipsoid-contact\" is implied; the lines
+of `quadsect batch` with that op are read as they are). E is
+  {\"center\": [x, y, z], \"semi_axes\": [r1, r2, r3], \"rotation\": [[…], […], […]]}
+— the ellipsoid { c + R·diag(r)·u : |u| <= 1 } for any invertible matrix R (rows); JSON
+numbers are the doubles they denote, strings exact numbers (\"1/3\", \"0.1\") — or a
+quadric polynomial string such as \"x^2 + y^2/4 + z^2 - 1\".
+Answer: {\"id\", \"ok\": true, \"result\": {\"contact\": \"separated\"|\"touching\"|\"overlapping\",
+\"kind\", \"route\", \"certificate\"}} (docs/contract.md, \"Ellipsoid contact\").";
+
+/// The lines of `quadsect ellipsoids`: a JSON object without `op` gets
+/// `"op": "ellipsoid-contact"` in front of its fields (the rest verbatim).
+fn with_contact_op(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + text.len() / 8);
+    for line in text.lines() {
+        let t = line.trim_start();
+        let lacks_op = t.starts_with('{')
+            && matches!(serde_json::from_str::<serde_json::Value>(t),
+                Ok(serde_json::Value::Object(ref o)) if !o.contains_key("op"));
+        if lacks_op {
+            let rest = t[1..].trim_start();
+            out.push_str("{\"op\":\"ellipsoid-contact\"");
+            if !rest.starts_with('}') {
+                out.push(',');
+            }
+            out.push_str(rest);
+        } else {
+            out.push_str(line);
+        }
+        out.push('\n');
+    }
+    out
+}
 
 /// Prints the JSON or the human form (only the one asked for is built).
 /// The JSON is serialized straight into a buffered standard output (no
@@ -296,6 +349,32 @@ fn run(cli: Cli) -> Result<(), Error> {
         } => {
             let rows = bench::run(&suite, inputs.as_deref(), pairs.as_deref())?;
             emit(json, || bench::to_json(&rows), || bench::to_markdown(&rows));
+        }
+        Command::Ellipsoids {
+            file,
+            threads,
+            echo,
+            limits,
+        } => {
+            let text = match file.as_deref() {
+                None | Some("-") => std::io::read_to_string(std::io::stdin()),
+                Some(path) => std::fs::read_to_string(path),
+            }
+            .map_err(|e| Error::new(ErrorKind::Io, format!("cannot read the pairs: {e}")))?;
+            let mut opts = crate::batch::BatchOptions {
+                budget: limits.budget(),
+                progress: std::io::stderr().is_terminal(),
+                echo,
+                ..Default::default()
+            };
+            if let Some(n) = threads {
+                opts.threads = n.max(1);
+                opts.lookahead = crate::batch::DEFAULT_LOOKAHEAD * opts.threads;
+            }
+            let input = std::io::Cursor::new(with_contact_op(&text).into_bytes());
+            let out = std::io::BufWriter::new(std::io::stdout().lock());
+            crate::batch::run_batch_with(input, out, &opts)
+                .map_err(|e| Error::new(ErrorKind::Io, format!("I/O error: {e}")))?;
         }
         Command::Batch {
             file,

@@ -8,8 +8,8 @@ mod text;
 
 #[cfg(feature = "serde")]
 pub use json::{
-    alg_json, natural_input_json, natural_json, natural_json_text, resultant_json, roots_json,
-    tangent_json,
+    alg_json, contact_json, natural_input_json, natural_json, natural_json_text, resultant_json,
+    roots_json, tangent_json,
 };
 pub use text::{natural_human, roots_human, tangent_human, upoly_string};
 

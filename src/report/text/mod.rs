@@ -1,6 +1,7 @@
 //! Human-readable text: aligned summaries with decimal approximations
 //! beside the exact values.
 
+mod contact;
 mod kernel;
 mod natural;
 mod tangent;

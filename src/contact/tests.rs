@@ -1,0 +1,352 @@
+//! Unit tests of the contact predicate: closed forms, the three routes'
+//! agreement, the certificates, the kinds.
+
+use super::*;
+use crate::number::qsqrt::QSqrt as S;
+
+const ID: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
+fn pose(c: [f64; 3], r: [f64; 3], m: [[f64; 3]; 3]) -> Pose {
+    Pose::new(c, r, m).unwrap()
+}
+
+fn sphere(x: f64, r: f64) -> Pose {
+    pose([x, 0.0, 0.0], [r, r, r], ID)
+}
+
+/// A rotation from a unit quaternion (doubles, not exactly orthogonal).
+fn rot(q: [f64; 4]) -> [[f64; 3]; 3] {
+    let n = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt();
+    let [w, x, y, z] = q.map(|v| v / n);
+    [
+        [
+            1.0 - 2.0 * (y * y + z * z),
+            2.0 * (x * y - w * z),
+            2.0 * (x * z + w * y),
+        ],
+        [
+            2.0 * (x * y + w * z),
+            1.0 - 2.0 * (x * x + z * z),
+            2.0 * (y * z - w * x),
+        ],
+        [
+            2.0 * (x * z - w * y),
+            2.0 * (y * z + w * x),
+            1.0 - 2.0 * (x * x + y * y),
+        ],
+    ]
+}
+
+/// The exact route alone.
+fn exact_only(a: &Pose, b: &Pose) -> Contact {
+    let (ea, eb) = (ExactEllipsoid::from_pose(a), ExactEllipsoid::from_pose(b));
+    exact::decide(&ea.form, &eb.form, None, false).unwrap().0
+}
+
+/// Re-checks a certificate with exact arithmetic of its own (the checker's
+/// claims, on the canonical forms).
+fn check(a: &ExactEllipsoid, b: &ExactEllipsoid, r: &ContactReport) {
+    let (am, bm) = (a.form_matrix(), b.form_matrix());
+    match r.certificate() {
+        Certificate::Separated { lambda } => {
+            assert!(lambda.is_positive());
+            let f = exact::quartic(&am, &bm);
+            assert!(exact::eval(&f, lambda).is_positive());
+        }
+        Certificate::Touching { lambda, point } => {
+            assert!(lambda.signum() > 0);
+            let q = |m: &[[Q; 4]; 4]| {
+                let x = [
+                    point[0].clone(),
+                    point[1].clone(),
+                    point[2].clone(),
+                    S::rational(Q::one()),
+                ];
+                let mut s = S::rational(Q::zero());
+                for i in 0..4 {
+                    for j in 0..4 {
+                        s = s.add(&x[i].mul(&x[j]).scale(&m[i][j]));
+                    }
+                }
+                s
+            };
+            assert!(q(&am).is_zero() && q(&bm).is_zero());
+        }
+        Certificate::Overlapping { point, .. } => {
+            assert!(exact::value(&a.form, point).is_negative());
+            assert!(exact::value(&b.form, point).is_negative());
+        }
+    }
+}
+
+fn report(a: &Pose, b: &Pose) -> ContactReport {
+    let (ea, eb) = (ExactEllipsoid::from_pose(a), ExactEllipsoid::from_pose(b));
+    let r = contact_report(&ea, &eb).unwrap();
+    check(&ea, &eb, &r);
+    r
+}
+
+#[test]
+fn spheres_at_every_distance() {
+    let a = sphere(0.0, 1.0);
+    for (x, want) in [
+        (3.0, Contact::Separated),
+        (2.0 + 1e-15, Contact::Separated),
+        (2.0, Contact::Touching),
+        (2.0 - 1e-15, Contact::Overlapping),
+        (1.0, Contact::Overlapping),
+        (0.0, Contact::Overlapping),
+    ] {
+        let b = sphere(x, 1.0);
+        assert_eq!(contact(&a, &b).unwrap(), want, "x = {x}");
+        assert_eq!(exact_only(&a, &b), want, "exact, x = {x}");
+        assert_eq!(report(&a, &b).contact(), want, "report, x = {x}");
+    }
+}
+
+#[test]
+fn the_filter_decides_clear_pairs_and_leaves_touching_ones() {
+    let a = sphere(0.0, 1.0);
+    assert!(filter::decide(&a, &sphere(2.5, 1.0)).is_some());
+    assert!(filter::decide(&a, &sphere(1.5, 1.0)).is_some());
+    assert!(filter::decide(&a, &sphere(2.0, 1.0)).is_none());
+    // the filter's answers are the exact ones
+    let b = pose(
+        [1.7, 0.4, -0.3],
+        [0.5, 1.2, 0.8],
+        rot([0.3, 0.1, -0.7, 0.2]),
+    );
+    let f = filter::decide(&a, &b).unwrap().contact();
+    assert_eq!(f, exact_only(&a, &b));
+}
+
+#[test]
+fn kinds_of_overlap() {
+    let a = sphere(0.0, 1.0);
+    let cases = [
+        (sphere(0.1, 3.0), Kind::AInsideB),
+        (sphere(0.1, 0.2), Kind::BInsideA),
+        (sphere(1.0, 2.0), Kind::InternallyTouching),
+        (sphere(1.0, 1.0), Kind::SurfacesCross),
+        (sphere(0.0, 1.0), Kind::Identical),
+        (
+            pose([0.0, 0.0, 0.0], [2.0, 0.5, 0.5], ID),
+            Kind::SurfacesCross,
+        ),
+        (
+            pose([0.0, 0.0, 0.0], [1.0, 0.5, 0.5], ID),
+            Kind::InternallyTouching,
+        ),
+    ];
+    for (b, want) in cases {
+        let r = report(&a, &b);
+        assert_eq!(r.contact(), Contact::Overlapping);
+        assert_eq!(r.kind(), want, "{b:?}");
+        if let Certificate::Overlapping {
+            evidence: Some(Evidence::Cross { a_only, b_only }),
+            ..
+        } = r.certificate()
+        {
+            assert!(a_only.is_some() && b_only.is_some());
+        }
+    }
+}
+
+#[test]
+fn touching_rotated_ellipsoids_along_an_axis() {
+    // an ellipsoid with semi-axes (2, 1, 1) along x at the origin and a
+    // unit sphere at (3, 0, 0): touching at (2, 0, 0)
+    let a = pose([0.0; 3], [2.0, 1.0, 1.0], ID);
+    let b = sphere(3.0, 1.0);
+    let r = report(&a, &b);
+    assert_eq!(r.contact(), Contact::Touching);
+    if let Certificate::Touching { point, .. } = r.certificate() {
+        assert_eq!(point[0], S::rational(Q::from_integer(2.into())));
+    } else {
+        panic!("no touching certificate");
+    }
+    // the same with the matrix a permutation (x ↔ y): separated then
+    let swap = [[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]];
+    let a2 = pose([0.0; 3], [2.0, 1.0, 1.0], swap);
+    assert_eq!(contact(&a2, &b).unwrap(), Contact::Separated);
+}
+
+#[test]
+fn random_pairs_agree_with_the_exact_route() {
+    // a deterministic pseudo-random sweep: the filter+exact answer equals
+    // the exact one on every pair, and the filter decides most
+    let mut s: u64 = 0x9E3779B97F4A7C15;
+    let mut next = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut decided = 0;
+    for _ in 0..300 {
+        let mut p = || {
+            let c = [4.0 * next() - 2.0, 4.0 * next() - 2.0, 4.0 * next() - 2.0];
+            let r = [0.2 + next(), 0.2 + next(), 0.2 + next()];
+            let q = [next() - 0.5, next() - 0.5, next() - 0.5, next() - 0.5];
+            pose(c, r, rot(q))
+        };
+        let (a, b) = (p(), p());
+        let want = exact_only(&a, &b);
+        assert_eq!(contact(&a, &b).unwrap(), want);
+        if filter::decide(&a, &b).is_some() {
+            decided += 1;
+        }
+    }
+    assert!(decided >= 295, "the filter decided only {decided} of 300");
+}
+
+#[test]
+fn bad_poses_are_errors() {
+    assert!(Pose::new([0.0; 3], [1.0, 0.0, 1.0], ID).is_err());
+    assert!(Pose::new([f64::NAN, 0.0, 0.0], [1.0; 3], ID).is_err());
+    let singular = [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 0.0, 1.0]];
+    let e = Pose::new([0.0; 3], [1.0; 3], singular).unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::NotAnEllipsoid);
+}
+
+#[test]
+fn bulk_matches_single_pairs() {
+    let a = [sphere(0.0, 1.0), sphere(0.0, 1.0), sphere(0.0, 1.0)];
+    let b = [sphere(3.0, 1.0), sphere(2.0, 1.0), sphere(1.0, 1.0)];
+    let flat = |p: &[Pose]| {
+        let c: Vec<f64> = p.iter().flat_map(|x| x.center).collect();
+        let r: Vec<f64> = p.iter().flat_map(|x| x.semi_axes).collect();
+        let m: Vec<f64> = p.iter().flat_map(|x| x.matrix.concat()).collect();
+        (c, r, m)
+    };
+    let (ca, ra, ma) = flat(&a);
+    let (cb, rb, mb) = flat(&b);
+    let mut out = [Contact::Overlapping; 3];
+    contact_many(
+        Poses {
+            center: &ca,
+            semi_axes: &ra,
+            matrix: &ma,
+        },
+        Poses {
+            center: &cb,
+            semi_axes: &rb,
+            matrix: &mb,
+        },
+        &mut out,
+        2,
+    )
+    .unwrap();
+    assert_eq!(
+        out,
+        [Contact::Separated, Contact::Touching, Contact::Overlapping]
+    );
+    // a bad row is named
+    let bad_r = vec![1.0, 1.0, 1.0, 1.0, -1.0, 1.0, 1.0, 1.0, 1.0];
+    let e = contact_many(
+        Poses {
+            center: &ca,
+            semi_axes: &bad_r,
+            matrix: &ma,
+        },
+        Poses {
+            center: &cb,
+            semi_axes: &rb,
+            matrix: &mb,
+        },
+        &mut out,
+        1,
+    )
+    .unwrap_err();
+    assert!(e.message().contains("row 1"), "{}", e.message());
+}
+
+#[test]
+fn quadric_input_is_the_same_ellipsoid() {
+    let a: ExactEllipsoid = "x^2 + y^2 + z^2 - 1".parse().unwrap();
+    let neg: ExactEllipsoid = "1 - x^2 - y^2 - z^2".parse().unwrap();
+    let b: ExactEllipsoid = "(x-2)^2 + y^2/4 + z^2 - 1".parse().unwrap();
+    assert_eq!(contact_report(&a, &b).unwrap().contact(), Contact::Touching);
+    assert_eq!(
+        contact_report(&neg, &b).unwrap().contact(),
+        Contact::Touching
+    );
+    assert!("x^2 + y^2 - z^2 - 1".parse::<ExactEllipsoid>().is_err());
+    assert!("x^2 + y^2 + z^2 + 1".parse::<ExactEllipsoid>().is_err());
+}
+
+/// The surfaces' relation the tangent point method decides, from a kind.
+fn surfaces(kind: Kind) -> crate::tangent::Verdict {
+    use crate::tangent::Verdict;
+    match kind {
+        Kind::Separated | Kind::AInsideB | Kind::BInsideA => Verdict::Separated,
+        Kind::ExternallyTouching | Kind::InternallyTouching => Verdict::Touching,
+        _ => Verdict::Intersecting,
+    }
+}
+
+#[test]
+fn agrees_with_the_tangent_point_method() {
+    // the tangent point method decides how A's surface meets B's surface
+    // (a different algorithm: critical values of q_B on A): random
+    // rotated pairs, exactly touching reflected pairs, spheres inside
+    let mut s: u64 = 0x1234_5678_9ABC_DEF1;
+    let mut next = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut pairs = vec![
+        (sphere(0.0, 1.0), sphere(0.5, 3.0)),
+        (sphere(0.0, 1.0), sphere(1.0, 2.0)),
+        (sphere(0.0, 1.0), sphere(2.0, 1.0)),
+    ];
+    for i in 0..24 {
+        let q = [next() - 0.5, next() - 0.5, next() - 0.5, next() - 0.5];
+        let m = rot(q).map(|row| row.map(|x| x as f32 as f64));
+        let c = [0; 3].map(|_| ((2.0 * next() - 1.0) * 64.0).round() / 64.0);
+        let r = [
+            [0.5, 1.0, 2.0][i % 3],
+            0.25 + (next() * 16.0).round() / 16.0,
+            0.5,
+        ];
+        let a = pose(c, r, m);
+        if i % 2 == 0 {
+            // exactly touching: B = A reflected through p = c + r₀·R e₁
+            let p: [f64; 3] = std::array::from_fn(|k| c[k] + r[0] * m[k][0]);
+            let b = pose(
+                std::array::from_fn(|k| 2.0 * p[k] - c[k]),
+                r,
+                m.map(|row| row.map(|x| -x)),
+            );
+            pairs.push((a, b));
+        } else {
+            let b = pose(
+                [2.0 * next() - 1.0, 2.0 * next() - 1.0, 2.0 * next() - 1.0],
+                [0.3 + next(), 0.3 + next(), 0.3 + next()],
+                rot([next() - 0.5, next() - 0.5, next() - 0.5, next() - 0.5]),
+            );
+            pairs.push((a, b));
+        }
+    }
+    for (a, b) in pairs {
+        let r = report(&a, &b);
+        let e = |p: &Pose| {
+            crate::tangent::Ellipsoid::from_frame(
+                p.center.map(qf),
+                p.semi_axes.map(qf),
+                p.matrix.map(|row| row.map(qf)),
+            )
+            .unwrap()
+        };
+        let sb = e(&b).polynomial();
+        let t = crate::tangent::decide(&e(&a), &sb).unwrap();
+        assert_eq!(
+            t.verdict(),
+            surfaces(r.kind()),
+            "{a:?} {b:?}: {:?}",
+            r.kind()
+        );
+    }
+}
