@@ -851,6 +851,10 @@ mod tests {
             json!({"id": 3, "op": "roots", "poly": "x^2-2", "time_limit": 5, "memory_limit": 256}),
             json!({"id": 4, "op": "resultant", "f": "x^2+y^2-1", "g": "x-y", "var": "x",
                    "time_limit": 5, "memory_limit": 256}),
+            json!({"id": 5, "op": "ellipsoid-contact", "a": "x^2+y^2+z^2-1",
+                   "b": {"center": [2, 0, 0], "semi_axes": ["1", 1, 1],
+                         "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+                   "time_limit": 5, "memory_limit": 256}),
         ];
         assert_eq!(lines.len(), crate::request::OPS.len());
         for line in lines {

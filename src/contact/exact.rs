@@ -437,8 +437,16 @@ pub(crate) fn classify_quartic(f: &ZPoly) -> Contact {
 /// power of two (both ellipsoids scaled alike), so that every input is an
 /// integer; `f` is then a polynomial over Z with the roots of the
 /// canonical one scaled by `ρ_B/ρ_A > 0`.
-pub(crate) fn decide_poses(a: &super::Pose, b: &super::Pose) -> Contact {
-    use super::program::{pencil, pose_form};
+///
+/// The filter's hints are tried first: `f(λ̃) > 0` at the scaled λ* proves
+/// separation, both forms negative at the candidate point prove overlap
+/// (two exact evaluations); the roots' multiplicities decide otherwise.
+pub(crate) fn decide_poses(
+    a: &super::Pose,
+    b: &super::Pose,
+    hints: &super::filter::Hints,
+) -> Contact {
+    use super::program::{pencil, pose_form, pose_value};
     // x = m·2^e
     let dec = |x: f64| -> (BigInt, i32) {
         if x == 0.0 {
@@ -474,6 +482,9 @@ pub(crate) fn decide_poses(a: &super::Pose, b: &super::Pose) -> Contact {
         l = l.max(-min_e(&p.center));
         l = l.max(-min_e(&p.semi_axes) - kp);
     }
+    if let Some(x) = &hints.point {
+        l = l.max(-min_e(x));
+    }
     let ints = |p: &super::Pose, kp: i32| {
         let m: [[BigInt; 3]; 3] = p.matrix.map(|row| row.map(|x| shift(&dec(x), kp)));
         let r: [BigInt; 3] = p.semi_axes.map(|x| shift(&dec(x), l + kp));
@@ -482,11 +493,34 @@ pub(crate) fn decide_poses(a: &super::Pose, b: &super::Pose) -> Contact {
     };
     let (ma, ra, ca) = ints(a, k[0]);
     let (mb, rb, cb) = ints(b, k[1]);
-    let (wa, rho_a, _) = pose_form(&ra, &ma);
-    let (wb, rho_b, _) = pose_form(&rb, &mb);
+    let (wa, rho_a, ka) = pose_form(&ra, &ma);
+    let (wb, rho_b, kb) = pose_form(&rb, &mb);
+    if let Some(x) = &hints.point {
+        // q̃ = 2^(6(L+k))·q: the signs at 2^L·x are those of the forms at x
+        let xs: [BigInt; 3] = x.map(|v| shift(&dec(v), l));
+        if pose_value(&ka, &rho_a, &ca, &xs).is_negative()
+            && pose_value(&kb, &rho_b, &cb, &xs).is_negative()
+        {
+            return Contact::Overlapping;
+        }
+    }
     let t: [BigInt; 3] = std::array::from_fn(|i| &cb[i] - &ca[i]);
     let p = pencil(wa, rho_a, wb, rho_b, t);
-    classify_quartic(&ZPoly::new(p.f.to_vec()))
+    let f = ZPoly::new(p.f.to_vec());
+    if let Some(lam) = hints.lambda.filter(|v| v.is_finite() && *v > 0.0) {
+        // λ̃ = λ·2^(6(k_B − k_A)) (the scales of the module doc)
+        let (m, e) = dec(lam);
+        let e = e as i64 + 6 * (k[1] - k[0]) as i64;
+        let q = if e >= 0 {
+            Q::from_integer(m << e as usize)
+        } else {
+            Q::new(m, BigInt::one() << (-e) as usize)
+        };
+        if f.sign_at(&q) > 0 {
+            return Contact::Separated;
+        }
+    }
+    classify_quartic(&f)
 }
 
 /// A rational λ > 0 with f(λ) > 0, between sorted positive roots.

@@ -90,9 +90,11 @@ fn evals(f: &[f64; 5], h: &[f64; 4], l: f64) -> (f64, f64, f64, f64, f64, f64) {
     (f0, f1, f2, h0, h1, h2)
 }
 
-/// The maximiser of m = f/h on λ > 0 (numeric; `None` when m' < 0 already
-/// at 0⁺, i.e. c_B lies in A).
-fn maximiser(f: &[f64; 5], h: &[f64; 4], start: f64) -> Option<f64> {
+/// The maximiser of m = f/h on λ > 0 (numeric, to about 2⁻³⁰ relative;
+/// `None` when m' < 0 already at 0⁺, i.e. c_B lies in A).  `done(λ)`,
+/// asked at every iterate, stops the search early (a λ that already
+/// proves the answer).
+fn maximiser(f: &[f64; 5], h: &[f64; 4], start: f64, done: impl Fn(f64) -> bool) -> Option<f64> {
     let g = |l: f64| {
         let (f0, f1, f2, h0, h1, h2) = evals(f, h, l);
         (f1 * h0 - f0 * h1, f2 * h0 - f0 * h2)
@@ -107,6 +109,9 @@ fn maximiser(f: &[f64; 5], h: &[f64; 4], start: f64) -> Option<f64> {
     } else {
         1.0
     };
+    if done(l) {
+        return Some(l);
+    }
     if g(l).0 > 0.0 {
         lo = l;
         let mut step = 2.0f64;
@@ -138,9 +143,13 @@ fn maximiser(f: &[f64; 5], h: &[f64; 4], start: f64) -> Option<f64> {
             step *= step;
         }
     }
-    // safeguarded Newton on G
+    // safeguarded Newton on G, to ~10⁻⁹ relative (λ* needs only to lie
+    // where f > 0: a band of relative width ≈ √ε at distance ε from touching)
     let mut x = (lo * hi).sqrt();
     for _ in 0..80 {
+        if done(x) {
+            break;
+        }
         let (gv, gd) = g(x);
         if gv > 0.0 {
             lo = x;
@@ -151,17 +160,19 @@ fn maximiser(f: &[f64; 5], h: &[f64; 4], start: f64) -> Option<f64> {
             break;
         }
         let mut nx = x - gv / gd;
-        if !(nx > lo && nx < hi) || gd >= 0.0 {
+        let newton = nx > lo && nx < hi && gd < 0.0;
+        if !newton {
             nx = if hi / lo > 4.0 {
                 (lo * hi).sqrt()
             } else {
                 0.5 * (lo + hi)
             };
         }
-        if nx == x {
+        let small = newton && (nx - x).abs() <= 1e-9 * x;
+        x = nx;
+        if small {
             break;
         }
-        x = nx;
     }
     Some(x)
 }
@@ -176,8 +187,18 @@ fn certify_positive(f: &[f64; 5], e: &[f64; 5], l: f64) -> bool {
     v.is_finite() && bound.is_finite() && v > bound
 }
 
-/// The filter: `Some` when doubles prove the answer.
-pub(crate) fn decide(a: &Pose, b: &Pose) -> Option<Filtered> {
+/// What the filter found when it could not prove the answer: the dual
+/// maximiser and the candidate point, for the exact route to try first.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Hints {
+    /// λ* (scaled forms).
+    pub lambda: Option<f64>,
+    /// A point that should be inside both.
+    pub point: Option<[f64; 3]>,
+}
+
+/// The filter: `Ok` when doubles prove the answer, else the hints.
+pub(crate) fn decide(a: &Pose, b: &Pose) -> Result<Filtered, Hints> {
     let (ma, rho_a, ka) = pose_form(&a.semi_axes, &a.matrix);
     let (mb, rho_b, kb) = pose_form(&b.semi_axes, &b.matrix);
     let t: [f64; 3] = std::array::from_fn(|i| b.center[i] - a.center[i]);
@@ -188,14 +209,14 @@ pub(crate) fn decide(a: &Pose, b: &Pose) -> Option<Filtered> {
     let pm: Pencil<Mag> = pencil(mma, mrho_a, mmb, mrho_b, tm);
     let e: [f64; 5] = std::array::from_fn(|k| err(pm.f[k].0));
     if !p.rho.iter().all(|r| r.is_finite() && *r > 0.0) {
-        return None;
+        return Err(Hints::default());
     }
     let start = p.rho[1] / p.rho[0];
-    let lstar = maximiser(&p.f, &p.h, start);
+    let lstar = maximiser(&p.f, &p.h, start, |l| certify_positive(&p.f, &e, l));
     if let Some(l) = lstar
         && certify_positive(&p.f, &e, l)
     {
-        return Some(Filtered::Separated { lambda: l });
+        return Ok(Filtered::Separated { lambda: l });
     }
     // overlapping? a point inside both, certified
     let sa = Both {
@@ -222,18 +243,31 @@ pub(crate) fn decide(a: &Pose, b: &Pose) -> Option<Filtered> {
     };
     let Some(l) = lstar else {
         // c_B lies in A (m' ≤ 0 at 0⁺)
-        return inside_both(&b.center).then_some(Filtered::Overlapping { point: b.center });
+        return if inside_both(&b.center) {
+            Ok(Filtered::Overlapping { point: b.center })
+        } else {
+            Err(Hints {
+                lambda: None,
+                point: Some(b.center),
+            })
+        };
+    };
+    let hints = Hints {
+        lambda: Some(l),
+        point: None,
     };
     // x_λ relative to c_A: (λM_A + M_B) y = M_B t
     let hm: [f64; 6] = std::array::from_fn(|i| l * p.ma[i] + p.mb[i]);
     let u = super::program::sym_vec(&p.mb, &t);
-    let y = solve_sym(&hm, &u)?;
+    let Some(y) = solve_sym(&hm, &u) else {
+        return Err(hints);
+    };
     let qa_y = quad(&p.ma, &y) - p.rho[0];
     let d: [f64; 3] = std::array::from_fn(|i| y[i] - t[i]);
     let qb_y = quad(&p.mb, &d) - p.rho[1];
     let qb_0 = quad(&p.mb, &t) - p.rho[1]; // q_B at c_A
     if qb_y.is_nan() || qb_y >= 0.0 {
-        return None;
+        return Err(hints);
     }
     // y' = (1 − s)·y: q_B(y') ≤ (1 − s) q_B(y) + s q_B(0) < 0 for s < s₀
     let s = if qb_0 < 0.0 {
@@ -244,14 +278,17 @@ pub(crate) fn decide(a: &Pose, b: &Pose) -> Option<Filtered> {
     let s = s.max((2.0 * qa_y / p.rho[0]).max(0.0)).min(1.0);
     let x: [f64; 3] = std::array::from_fn(|i| a.center[i] + (1.0 - s) * y[i]);
     if inside_both(&x) {
-        return Some(Filtered::Overlapping { point: x });
+        return Ok(Filtered::Overlapping { point: x });
     }
-    for x in [a.center, b.center] {
-        if inside_both(&x) {
-            return Some(Filtered::Overlapping { point: x });
+    for c in [a.center, b.center] {
+        if inside_both(&c) {
+            return Ok(Filtered::Overlapping { point: c });
         }
     }
-    None
+    Err(Hints {
+        lambda: Some(l),
+        point: x.iter().all(|v| v.is_finite()).then_some(x),
+    })
 }
 
 /// True when the determinant of `m` is certainly non-zero in doubles.
@@ -302,7 +339,7 @@ pub fn wwk_f64(a: &Pose, b: &Pose, tol: f64) -> Contact {
     // from the maximiser of m (as a physics code would: one bracketed
     // search), compared with the tolerance relative to the coefficients
     let scale = p.f.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    let Some(l) = maximiser(&p.f, &p.h, rho_b / rho_a) else {
+    let Some(l) = maximiser(&p.f, &p.h, rho_b / rho_a, |_| false) else {
         return Contact::Overlapping;
     };
     let v = evals(&p.f, &p.h, l).0 / (scale * (1.0 + l).powi(4));

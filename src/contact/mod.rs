@@ -410,22 +410,22 @@ impl ContactReport {
 /// The contact of two poses: the doubles' filter, exact when it cannot
 /// decide.  Errors only on an internal failure.
 pub fn contact(a: &Pose, b: &Pose) -> Result<Contact, Error> {
-    if let Some(r) = filter::decide(a, b) {
-        return Ok(r.contact());
+    match filter::decide(a, b) {
+        Ok(r) => Ok(r.contact()),
+        Err(hints) => Ok(exact::decide_poses(a, b, &hints)),
     }
-    Ok(exact::decide_poses(a, b))
 }
 
 /// The contact of two poses by the exact route alone (no filter): the
 /// independent decider of the tests and the benchmarks' labels.
 pub fn contact_exact(a: &Pose, b: &Pose) -> Result<Contact, Error> {
-    Ok(exact::decide_poses(a, b))
+    Ok(exact::decide_poses(a, b, &filter::Hints::default()))
 }
 
 /// True when the doubles' filter alone decides the pair (no exact
 /// arithmetic) — for benchmarks.
 pub fn filter_decides(a: &Pose, b: &Pose) -> bool {
-    filter::decide(a, b).is_some()
+    filter::decide(a, b).is_ok()
 }
 
 /// The contact of two exact ellipsoids with its kind and certificate.
@@ -433,7 +433,7 @@ pub fn contact_report(a: &ExactEllipsoid, b: &ExactEllipsoid) -> Result<ContactR
     let mut route = "exact";
     let mut hint = None;
     if let (Some(pa), Some(pb)) = (&a.pose, &b.pose)
-        && let Some(f) = filter::decide(pa, pb)
+        && let Ok(f) = filter::decide(pa, pb)
     {
         route = "filter";
         hint = Some(match f {
