@@ -319,17 +319,27 @@ mod json {
                 ));
             }
         };
-        let all_doubles = c
+        // every number exactly a double (a JSON number, or an exact string
+        // such as "0.5" or "3"): the pose of doubles, whose filter applies
+        let as_double = |x: &(crate::number::Q, Option<f64>)| {
+            x.1.or_else(|| {
+                use num_traits::ToPrimitive;
+                let d = x.0.to_f64()?;
+                (d.is_finite() && crate::number::Q::from_float(d).as_ref() == Some(&x.0))
+                    .then_some(d)
+            })
+        };
+        let all: Vec<&(crate::number::Q, Option<f64>)> =
+            c.iter().chain(&r).chain(rows.iter().flatten()).collect();
+        if let Some(ds) = all
             .iter()
-            .chain(&r)
-            .chain(rows.iter().flatten())
-            .all(|x| x.1.is_some());
-        if all_doubles {
-            let d = |x: &(crate::number::Q, Option<f64>)| x.1.unwrap();
+            .map(|x| as_double(x))
+            .collect::<Option<Vec<f64>>>()
+        {
             let p = Pose::new(
-                [d(&c[0]), d(&c[1]), d(&c[2])],
-                [d(&r[0]), d(&r[1]), d(&r[2])],
-                std::array::from_fn(|i| std::array::from_fn(|j| d(&rows[i][j]))),
+                [ds[0], ds[1], ds[2]],
+                [ds[3], ds[4], ds[5]],
+                std::array::from_fn(|i| std::array::from_fn(|j| ds[6 + 3 * i + j])),
             )
             .map_err(ctx)?;
             return Ok(ExactEllipsoid::from_pose(&p));

@@ -38,22 +38,22 @@ pub(crate) fn matrix(q: &QuadricForm) -> [[Q; 4]; 4] {
 
 /// `det(λA + B)`, coefficients from the constant up (Laplace expansion on
 /// the first two rows).
-pub(crate) fn quartic(a: &[[Q; 4]; 4], b: &[[Q; 4]; 4]) -> [Q; 5] {
+pub(crate) fn quartic<T: Ar>(a: &[[T; 4]; 4], b: &[[T; 4]; 4], zero: T) -> [T; 5] {
     // a 2×2 minor of λA + B: (λa + b)(λa' + b') − … as [c0, c1, c2]
     let lin = |i: usize, j: usize| [b[i][j].clone(), a[i][j].clone()];
-    let pmul = |x: &[Q; 2], y: &[Q; 2]| -> [Q; 3] {
+    let pmul = |x: &[T; 2], y: &[T; 2]| -> [T; 3] {
         [
             x[0].mul(&y[0]),
             x[0].mul(&y[1]).add(&x[1].mul(&y[0])),
             x[1].mul(&y[1]),
         ]
     };
-    let minor = |r: (usize, usize), c: (usize, usize)| -> [Q; 3] {
+    let minor = |r: (usize, usize), c: (usize, usize)| -> [T; 3] {
         let p = pmul(&lin(r.0, c.0), &lin(r.1, c.1));
         let q = pmul(&lin(r.0, c.1), &lin(r.1, c.0));
         std::array::from_fn(|k| p[k].sub(&q[k]))
     };
-    let mut f: [Q; 5] = std::array::from_fn(|_| Q::zero());
+    let mut f: [T; 5] = std::array::from_fn(|_| zero.clone());
     for i in 0..4 {
         for j in i + 1..4 {
             let rest: Vec<usize> = (0..4).filter(|&k| k != i && k != j).collect();
@@ -75,42 +75,30 @@ pub(crate) fn quartic(a: &[[Q; 4]; 4], b: &[[Q; 4]; 4]) -> [Q; 5] {
     f
 }
 
-/// The integer polynomial of rational coefficients (positive multiple).
-pub(crate) fn zpoly(f: &[Q]) -> ZPoly {
-    let l = crate::number::denom_lcm(f.iter());
-    let z: Vec<BigInt> = f.iter().map(|c| c.numer() * (&l / c.denom())).collect();
-    ZPoly::new(z)
-}
-
-/// `λA + B` at a rational λ.
-fn at_q(a: &[[Q; 4]; 4], b: &[[Q; 4]; 4], l: &Q) -> [[Q; 4]; 4] {
-    std::array::from_fn(|i| std::array::from_fn(|j| l.mul(&a[i][j]).add(&b[i][j])))
-}
-
-/// The leading principal minors' signs decide definiteness: `Some(1)`
-/// positive definite, `Some(-1)` negative definite, `None` neither.
-fn definite(m: &[[Q; 4]; 4]) -> Option<i32> {
-    // Gaussian elimination without pivoting: the pivots are the ratios of
-    // consecutive leading principal minors
-    let mut w = m.clone();
-    let mut signs = [0i32; 4];
+/// Definiteness of `n·A + d·B` (integer matrices) from the signs of its
+/// leading principal minors, which Bareiss's fraction-free elimination
+/// leaves on the diagonal: `Some(1)` positive definite (all > 0),
+/// `Some(-1)` negative definite (signs −, +, −, +), `None` otherwise.
+fn definite_z(a: &[[BigInt; 4]; 4], b: &[[BigInt; 4]; 4], n: &BigInt, d: &BigInt) -> Option<i32> {
+    let mut w: [[BigInt; 4]; 4] =
+        std::array::from_fn(|i| std::array::from_fn(|j| n * &a[i][j] + d * &b[i][j]));
+    let mut minors = [0i32; 4];
+    let mut prev = BigInt::one();
     for k in 0..4 {
-        let p = w[k][k].clone();
-        if p.is_zero() {
+        if w[k][k].is_zero() {
             return None;
         }
-        signs[k] = if p.is_positive() { 1 } else { -1 };
+        minors[k] = crate::number::sign_z(&w[k][k]);
         for i in k + 1..4 {
-            let r = &w[i][k] / &p;
-            for j in k..4 {
-                let t = &r * &w[k][j];
-                w[i][j] -= t;
+            for j in k + 1..4 {
+                w[i][j] = (&w[i][j] * &w[k][k] - &w[i][k] * &w[k][j]) / &prev;
             }
         }
+        prev = w[k][k].clone();
     }
-    if signs.iter().all(|&s| s == 1) {
+    if minors.iter().all(|&s| s == 1) {
         Some(1)
-    } else if signs.iter().all(|&s| s == -1) {
+    } else if minors == [-1, 1, -1, 1] {
         Some(-1)
     } else {
         None
@@ -176,13 +164,42 @@ pub(crate) fn value(q: &QuadricForm, x: &[Q; 3]) -> Q {
     q.eval(x)
 }
 
+/// The sign of a form at a rational point, in integers: with `D` the lcm
+/// of the point's denominators and of the form's (`L`), the sign of
+/// `Xᵀ(L·M)X` for `X = (D·x, D)` (no gcd per operation).
+pub(crate) fn sign_at(q: &QuadricForm, x: &[Q; 3]) -> i32 {
+    let l = crate::geom::quadric::common_denominator(&[q]);
+    let m = q.int_matrix(&l);
+    let d = crate::number::denom_lcm(x.iter());
+    let xs: [BigInt; 4] = std::array::from_fn(|i| {
+        if i == 3 {
+            d.clone()
+        } else {
+            x[i].numer() * (&d / x[i].denom())
+        }
+    });
+    let mut s = BigInt::zero();
+    for i in 0..4 {
+        let mut row = BigInt::zero();
+        for j in 0..4 {
+            row += &m[i][j] * &xs[j];
+        }
+        s += row * &xs[i];
+    }
+    crate::number::sign_z(&s)
+}
+
 /// The centre `−W⁻¹b` of a form.
 fn centre(q: &QuadricForm) -> [Q; 3] {
-    let w: [[QSqrt; 3]; 3] =
-        std::array::from_fn(|i| std::array::from_fn(|j| QSqrt::rational(q.a[i][j].clone())));
-    let rhs: [QSqrt; 3] = std::array::from_fn(|i| QSqrt::rational(-&q.b[i]));
-    let x = solve3(&w, &rhs).expect("an ellipsoid's matrix is invertible");
-    std::array::from_fn(|i| x[i].a().clone())
+    // −W⁻¹b = −adj(W)·b / det W
+    let w = &q.a;
+    let cof = |i: usize, j: usize| {
+        let (i1, i2, j1, j2) = ((i + 1) % 3, (i + 2) % 3, (j + 1) % 3, (j + 2) % 3);
+        &w[i1][j1] * &w[i2][j2] - &w[i1][j2] * &w[i2][j1]
+    };
+    let c: [[Q; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| cof(i, j)));
+    let det = (0..3).fold(Q::zero(), |s, j| s + &w[0][j] * &c[0][j]);
+    std::array::from_fn(|i| -(0..3).fold(Q::zero(), |s, j| s + &c[j][i] * &q.b[j]) / &det)
 }
 
 /// Solves a 3×3 system over Q(√d) by Cramer's rule.
@@ -283,29 +300,45 @@ pub(crate) fn decide(
     hint: Option<Hint>,
     want_kind: bool,
 ) -> Result<(Contact, Kind, Certificate), crate::Error> {
-    let am = matrix(a);
-    let bm = matrix(b);
-    let fq = quartic(&am, &bm);
-    let f = zpoly(&fq);
+    // integer matrices A' = L_A·A, B' = L_B·B: det(λ'A' + B') is a positive
+    // multiple of f(κλ'), κ = L_A/L_B; λ' below, canonical λ = κλ' out
+    let (la, lb) = (
+        crate::geom::quadric::common_denominator(&[a]),
+        crate::geom::quadric::common_denominator(&[b]),
+    );
+    let (ai, bi) = (a.int_matrix(&la), b.int_matrix(&lb));
+    let kappa = Q::new(la, lb);
+    let f = ZPoly::new(quartic(&ai, &bi, BigInt::zero()).to_vec());
+    let pos_c = |lc: &Q| f.sign_at(&(lc / &kappa)) > 0;
+    let (ca, cb) = (centre(a), centre(b));
+    let ctx = Ctx {
+        a,
+        b,
+        ai: &ai,
+        bi: &bi,
+        kappa: &kappa,
+        ca: &ca,
+        cb: &cb,
+    };
     // separated by the hint? (a rational λ > 0 with f(λ) > 0)
     if let Some(Hint::Lambda(l)) = &hint
         && l.is_positive()
-        && eval(&fq, l).is_positive()
+        && pos_c(l)
     {
         return Ok((
             Contact::Separated,
             Kind::Separated,
             Certificate::Separated {
-                lambda: shorter_positive(&fq, l),
+                lambda: shorter_positive(&pos_c, l),
             },
         ));
     }
     if let Some(Hint::Point(p)) = &hint
-        && value(a, p).is_negative()
-        && value(b, p).is_negative()
+        && sign_at(a, p) < 0
+        && sign_at(b, p) < 0
     {
         let (kind, evidence) = if want_kind {
-            kind_of(a, b, &f, p)?
+            kind_of(&ctx, &f)?
         } else {
             (Kind::Unclassified, None)
         };
@@ -346,7 +379,8 @@ pub(crate) fn decide(
             .filter(|r| r.signum() > 0)
             .collect();
         roots.sort_by(|x, y| x.cmp_exact(y));
-        let lambda = positive_point(&fq, &roots)
+        let lambda = positive_point(&f, &roots)
+            .map(|l| l * &kappa)
             .ok_or_else(|| crate::Error::internal("contact: no λ with f(λ) > 0 found"))?;
         return Ok((
             Contact::Separated,
@@ -358,7 +392,8 @@ pub(crate) fn decide(
         let l0 = small_roots(fac)
             .into_iter()
             .find(|r| r.signum() > 0)
-            .ok_or_else(|| crate::Error::internal("contact: a double root beyond Q(√d)"))?;
+            .ok_or_else(|| crate::Error::internal("contact: a double root beyond Q(√d)"))?
+            .scale(&kappa);
         let (x, _) = kernel_point(a, b, &l0)
             .ok_or_else(|| crate::Error::internal("contact: singular block at λ₀"))?;
         if !(value_s(a, &x).is_zero() && value_s(b, &x).is_zero()) {
@@ -376,9 +411,9 @@ pub(crate) fn decide(
         ));
     }
     // overlapping: a point inside both
-    let p = witness(a, b)?;
+    let p = witness(a, b, &ca, &cb)?;
     let (kind, evidence) = if want_kind {
-        kind_of(a, b, &f, &p)?
+        kind_of(&ctx, &f)?
     } else {
         (Kind::Unclassified, None)
     };
@@ -391,7 +426,7 @@ pub(crate) fn decide(
 
 /// A λ of few bits near `l` (where f > 0) with f(λ) > 0 still: `l`
 /// rounded to 2, 4, …, 64 significant bits, the first that works.
-fn shorter_positive(fq: &[Q; 5], l: &Q) -> Q {
+fn shorter_positive(pos: &impl Fn(&Q) -> bool, l: &Q) -> Q {
     let e = crate::number::floor_log2_q(l);
     for k in [2i64, 4, 8, 16, 24, 32, 48, 64] {
         let sh = e - k;
@@ -402,7 +437,7 @@ fn shorter_positive(fq: &[Q; 5], l: &Q) -> Q {
             let unit = Q::from_integer(BigInt::one() << (-sh) as usize);
             (l * &unit).round() / unit
         };
-        if c.is_positive() && eval(fq, &c).is_positive() {
+        if c.is_positive() && pos(&c) {
             return c;
         }
     }
@@ -524,7 +559,7 @@ pub(crate) fn decide_poses(
 }
 
 /// A rational λ > 0 with f(λ) > 0, between sorted positive roots.
-fn positive_point(fq: &[Q; 5], roots: &[RealAlg]) -> Option<Q> {
+fn positive_point(f: &ZPoly, roots: &[RealAlg]) -> Option<Q> {
     for w in roots.windows(2) {
         let (mut lo, mut hi) = (w[0].clone(), w[1].clone());
         // separate the two intervals, then try the simplest rational between
@@ -533,7 +568,7 @@ fn positive_point(fq: &[Q; 5], roots: &[RealAlg]) -> Option<Q> {
             let (h_lo, _) = hi.interval();
             if l_hi < h_lo {
                 let m = simplest_between(&l_hi, &h_lo);
-                if eval(fq, &m).is_positive() {
+                if f.sign_at(&m) > 0 {
                     return Some(m);
                 }
                 break;
@@ -570,13 +605,17 @@ pub(crate) fn simplest_between(lo: &Q, hi: &Q) -> Q {
 /// A rational point inside both ellipsoids of an overlapping pair:
 /// the centres first, then the minimiser `x_λ` of `λq_A + q_B` at λ where
 /// `q_A(x_λ)` (falling in λ) and `q_B(x_λ)` (rising) are both negative.
-fn witness(a: &QuadricForm, b: &QuadricForm) -> Result<[Q; 3], crate::Error> {
-    let (ca, cb) = (centre(a), centre(b));
-    if value(a, &cb).is_negative() {
-        return Ok(cb);
+fn witness(
+    a: &QuadricForm,
+    b: &QuadricForm,
+    ca: &[Q; 3],
+    cb: &[Q; 3],
+) -> Result<[Q; 3], crate::Error> {
+    if sign_at(a, cb) < 0 {
+        return Ok(cb.clone());
     }
-    if value(b, &ca).is_negative() {
-        return Ok(ca);
+    if sign_at(b, ca) < 0 {
+        return Ok(ca.clone());
     }
     let x_at = |l: &Q| -> Option<[Q; 3]> {
         let w: [[QSqrt; 3]; 3] = std::array::from_fn(|i| {
@@ -595,11 +634,11 @@ fn witness(a: &QuadricForm, b: &QuadricForm) -> Result<[Q; 3], crate::Error> {
     for _ in 0..100_000 {
         crate::budget::check();
         let x = x_at(&l).ok_or_else(|| crate::Error::internal("contact: singular pencil"))?;
-        let (qa, qb) = (value(a, &x), value(b, &x));
-        if qa.is_negative() && qb.is_negative() {
+        let (qa, qb) = (sign_at(a, &x), sign_at(b, &x));
+        if qa < 0 && qb < 0 {
             return Ok(x);
         }
-        if !qa.is_negative() {
+        if qa >= 0 {
             lo = Some(l.clone());
         } else {
             hi = Some(l.clone());
@@ -616,14 +655,22 @@ fn witness(a: &QuadricForm, b: &QuadricForm) -> Result<[Q; 3], crate::Error> {
     ))
 }
 
-/// The kind of an overlap and its evidence.
-fn kind_of(
-    a: &QuadricForm,
-    b: &QuadricForm,
-    f: &ZPoly,
-    p: &[Q; 3],
-) -> Result<(Kind, Option<super::Evidence>), crate::Error> {
+/// The pair as the exact route holds it: the canonical forms, their
+/// integer matrices (`L_A·A`, `L_B·B`), `κ = L_A/L_B` and the centres.
+struct Ctx<'a> {
+    a: &'a QuadricForm,
+    b: &'a QuadricForm,
+    ai: &'a [[BigInt; 4]; 4],
+    bi: &'a [[BigInt; 4]; 4],
+    kappa: &'a Q,
+    ca: &'a [Q; 3],
+    cb: &'a [Q; 3],
+}
+
+/// The kind of an overlap and its evidence (`f` of the integer matrices).
+fn kind_of(ctx: &Ctx<'_>, f: &ZPoly) -> Result<(Kind, Option<super::Evidence>), crate::Error> {
     use super::Evidence;
+    let (a, b) = (ctx.a, ctx.b);
     let am = matrix(a);
     let bm = matrix(b);
     // identical up to a positive factor: B = μA
@@ -671,12 +718,14 @@ fn kind_of(
         if !s.is_negative() {
             continue;
         }
-        match definite(&at_q(&am, &bm, s)) {
+        // s·A' + B' is a positive multiple of (κs)·A + B
+        let mu = -(s * ctx.kappa);
+        match definite_z(ctx.ai, ctx.bi, s.numer(), s.denom()) {
             Some(-1) => {
-                return Ok((Kind::AInsideB, Some(Evidence::Inside { mu: -s.clone() })));
+                return Ok((Kind::AInsideB, Some(Evidence::Inside { mu })));
             }
             Some(1) => {
-                return Ok((Kind::BInsideA, Some(Evidence::Inside { mu: -s.clone() })));
+                return Ok((Kind::BInsideA, Some(Evidence::Inside { mu })));
             }
             _ => {}
         }
@@ -690,6 +739,7 @@ fn kind_of(
             if l0.signum() >= 0 {
                 continue;
             }
+            let l0 = l0.scale(ctx.kappa);
             let m = pencil_at(a, b, &l0);
             // a touching point: the kernel of λ₀A + B with last coordinate 1
             // (when the 3×3 block is invertible; else the kind stands on
@@ -714,9 +764,8 @@ fn kind_of(
         }
     }
     // neither contains the other: a point of each outside the other
-    let a_only = outside_point(a, b);
-    let b_only = outside_point(b, a);
-    let _ = p;
+    let a_only = outside_point(a, b, ctx.ca, ctx.cb);
+    let b_only = outside_point(b, a, ctx.cb, ctx.ca);
     Ok((
         Kind::SurfacesCross,
         Some(Evidence::Cross { a_only, b_only }),
@@ -746,9 +795,7 @@ fn proportional(a: &[[Q; 4]; 4], b: &[[Q; 4]; 4]) -> Option<Q> {
 /// along rays from P's centre: the direction away from O's centre, P's
 /// coordinate axes and the diagonals, each at 0.999 of the way to P's
 /// surface (a rational below the square root).
-fn outside_point(p: &QuadricForm, o: &QuadricForm) -> Option<[Q; 3]> {
-    let cp = centre(p);
-    let co = centre(o);
+fn outside_point(p: &QuadricForm, o: &QuadricForm, cp: &[Q; 3], co: &[Q; 3]) -> Option<[Q; 3]> {
     let mut dirs: Vec<[Q; 3]> = vec![std::array::from_fn(|i| &cp[i] - &co[i])];
     for x in -1i64..=1 {
         for y in -1i64..=1 {
@@ -763,7 +810,10 @@ fn outside_point(p: &QuadricForm, o: &QuadricForm) -> Option<[Q; 3]> {
             }
         }
     }
-    let depth = neg(&value(p, &cp)); // −q_P(c_P) > 0
+    let depth = neg(&value(p, cp)); // −q_P(c_P) > 0
+    if let Some(x) = outside_search(p, o, cp) {
+        return Some(x);
+    }
     for v in dirs {
         // q_P(c + s v) = q_P(c) + s²·vᵀWv
         let vwv = {
@@ -783,9 +833,112 @@ fn outside_point(p: &QuadricForm, o: &QuadricForm) -> Option<[Q; 3]> {
         for frac in [999i64, 9] {
             let s = &lo * Q::new(frac.into(), (frac + 1).into());
             let x: [Q; 3] = std::array::from_fn(|i| &cp[i] + &s * &v[i]);
-            if value(p, &x).is_negative() && value(o, &x).is_positive() {
+            if sign_at(p, &x) < 0 && sign_at(o, &x) > 0 {
                 return Some(x);
             }
+        }
+    }
+    None
+}
+
+/// The numeric search of [`outside_point`]: P's interior is
+/// `{c + L⁻ᵀu : |u| < 1}` with `W_P = LLᵀ` (Cholesky, in doubles); q_O is
+/// sampled at 0.999·u for 96 directions u spread on the sphere, the best
+/// one refined by projected gradient ascent, and the candidates with
+/// `q_O > 0` in doubles are checked exactly (as rationals).
+fn outside_search(p: &QuadricForm, o: &QuadricForm, cp: &[Q; 3]) -> Option<[Q; 3]> {
+    use num_traits::ToPrimitive;
+    let f = |x: &Q| x.to_f64().unwrap_or(f64::NAN);
+    let w: [[f64; 3]; 3] = p.a.each_ref().map(|r| r.each_ref().map(f));
+    // Cholesky W = LLᵀ
+    let mut l = [[0.0f64; 3]; 3];
+    for i in 0..3 {
+        for j in 0..=i {
+            let s: f64 = w[i][j] - (0..j).map(|k| l[i][k] * l[j][k]).sum::<f64>();
+            if i == j {
+                if s.is_nan() || s <= 0.0 {
+                    return None;
+                }
+                l[i][i] = s.sqrt();
+            } else {
+                l[i][j] = s / l[j][j];
+            }
+        }
+    }
+    let depth = f(&neg(&value(p, cp))).sqrt();
+    let c = cp.each_ref().map(f);
+    // x(u) = c + depth·L⁻ᵀu: solve Lᵀ y = u (back substitution)
+    let x_of = |u: &[f64; 3]| -> [f64; 3] {
+        let mut y = [0.0; 3];
+        for i in (0..3).rev() {
+            let s: f64 = u[i] - (i + 1..3).map(|k| l[k][i] * y[k]).sum::<f64>();
+            y[i] = s / l[i][i];
+        }
+        std::array::from_fn(|i| c[i] + 0.999 * depth * y[i])
+    };
+    let wo: [[f64; 3]; 3] = o.a.each_ref().map(|r| r.each_ref().map(f));
+    let (bo, co) = (o.b.each_ref().map(f), f(&o.c));
+    let qo = |x: &[f64; 3]| -> f64 {
+        let mut s = co;
+        for i in 0..3 {
+            s += 2.0 * bo[i] * x[i];
+            for j in 0..3 {
+                s += wo[i][j] * x[i] * x[j];
+            }
+        }
+        s
+    };
+    let n = 96;
+    let mut cands: Vec<(f64, [f64; 3])> = (0..n)
+        .map(|k| {
+            // a Fibonacci sphere
+            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
+            let r = (1.0 - z * z).sqrt();
+            let t = k as f64 * 2.399_963_229_728_653;
+            let u = [r * t.cos(), r * t.sin(), z];
+            (qo(&x_of(&u)), u)
+        })
+        .collect();
+    cands.sort_by(|a, b| b.0.total_cmp(&a.0));
+    // refine the best by projected gradient ascent on the sphere
+    let mut u = cands[0].1;
+    let mut best = cands[0].0;
+    let mut step = 0.1;
+    for _ in 0..60 {
+        let h = 1e-6;
+        let g: [f64; 3] = std::array::from_fn(|i| {
+            let mut v = u;
+            v[i] += h;
+            (qo(&x_of(&v)) - qo(&x_of(&u))) / h
+        });
+        let mut v: [f64; 3] = std::array::from_fn(|i| u[i] + step * g[i]);
+        let nv = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+        v = v.map(|x| x / nv);
+        let val = qo(&x_of(&v));
+        if val > best {
+            best = val;
+            u = v;
+            step *= 1.5;
+        } else {
+            step *= 0.5;
+        }
+    }
+    cands.insert(0, (best, u));
+    for (val, u) in cands.iter().take(8) {
+        if val.is_nan() || *val <= 0.0 {
+            break;
+        }
+        let x = x_of(u);
+        let Some(xq) = x
+            .iter()
+            .map(|v| Q::from_float(*v))
+            .collect::<Option<Vec<Q>>>()
+        else {
+            continue;
+        };
+        let xq: [Q; 3] = [xq[0].clone(), xq[1].clone(), xq[2].clone()];
+        if sign_at(p, &xq) < 0 && sign_at(o, &xq) > 0 {
+            return Some(xq);
         }
     }
     None
@@ -799,6 +952,7 @@ pub(crate) enum Hint {
 }
 
 /// `Σ cₖλᵏ` exactly.
+#[cfg(test)]
 pub(crate) fn eval(c: &[Q], l: &Q) -> Q {
     super::program::horner(c, l)
 }

@@ -352,7 +352,8 @@ impl ExactEllipsoid {
             return Err(bad("the quadratic part is not definite"));
         }
         let m = exact::matrix(&form);
-        let det4 = exact::quartic(&m, &m.clone().map(|r| r.map(|_| Q::zero())))[4].clone();
+        let det4 =
+            exact::quartic(&m, &m.clone().map(|r| r.map(|_| Q::zero())), Q::zero())[4].clone();
         if !det4.is_negative() {
             return Err(bad(
                 "the quadric has no real interior (an empty or one-point ellipsoid)",

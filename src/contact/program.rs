@@ -279,6 +279,7 @@ pub(crate) fn neg<T: Ar>(x: &T) -> T {
 }
 
 /// `Σ cₖ λᵏ` by Horner.
+#[cfg(test)]
 pub(crate) fn horner<T: Ar>(c: &[T], x: &T) -> T {
     let mut v = c[c.len() - 1].clone();
     for ck in c[..c.len() - 1].iter().rev() {

@@ -50,7 +50,7 @@ fn check(a: &ExactEllipsoid, b: &ExactEllipsoid, r: &ContactReport) {
     match r.certificate() {
         Certificate::Separated { lambda } => {
             assert!(lambda.is_positive());
-            let f = exact::quartic(&am, &bm);
+            let f = exact::quartic(&am, &bm, Q::zero());
             assert!(exact::eval(&f, lambda).is_positive());
         }
         Certificate::Touching { lambda, point } => {
