@@ -234,6 +234,43 @@ fn valid_limit(v: &Value) -> bool {
     }
 }
 
+/// A JSON value where a pose expects a number: mostly numbers, sometimes
+/// exact strings, garbage, zeros, negatives, huge and tiny values.
+fn pose_number() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        4 => (-3.0f64..3.0).prop_map(|x| json!(x)),
+        1 => prop_oneof![Just(0.0), Just(-1.0), Just(1e300), Just(1e-300), Just(5e-324)].prop_map(|x| json!(x)),
+        1 => "-?[0-9]{1,3}(/[0-9]{1,3})?".prop_map(|s| json!(s)),
+        1 => "\\PC{0,6}".prop_map(|s| json!(s)),
+        1 => Just(json!(null)),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Ellipsoid-contact lines with poses of random (often bad) numbers:
+    /// one answer each — a contact with a certificate, or an input error
+    /// naming the field — never a panic or an internal error.
+    #[test]
+    fn contact_pose_lines_answer(nums in proptest::collection::vec(pose_number(), 30), short in any::<bool>()) {
+        let pose = |k: usize| {
+            let v = |i: usize| nums[k * 15 + i].clone();
+            let rows: Vec<Value> = (0..3).map(|r| json!([v(6 + 3 * r), v(7 + 3 * r), v(8 + 3 * r)])).collect();
+            let centre = if short { json!([v(0), v(1)]) } else { json!([v(0), v(1), v(2)]) };
+            json!({"center": centre, "semi_axes": [v(3), v(4), v(5)], "rotation": rows})
+        };
+        let line = json!({"id": 1, "op": "ellipsoid-contact", "a": pose(0), "b": pose(1)});
+        let v = answer_line(&line.to_string());
+        let kind = v["error"]["kind"].as_str().unwrap_or("");
+        prop_assert!(kind != "internal", "{}", v);
+        if v["ok"] == json!(true) {
+            let c = v["result"]["contact"].as_str().unwrap_or("");
+            prop_assert!(["separated", "touching", "overlapping"].contains(&c), "{}", v);
+        }
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 2000, .. ProptestConfig::default() })]
 
@@ -280,7 +317,7 @@ proptest! {
     /// random limits and now and then a stray field: the documented answer
     /// (unknown op, unknown field, bad limit, or the op's own answer).
     #[test]
-    fn batch_json_fields(op in "(roots|resultant|tangent|natural|bogus)",
+    fn batch_json_fields(op in "(roots|resultant|tangent|natural|ellipsoid-contact|bogus)",
                          text in proptest::collection::vec("[-+*/^() xyzu0-9]{0,20}", 3),
                          flag in any::<bool>(),
                          time in proptest::option::of(limit_value()),
