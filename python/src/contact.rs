@@ -11,17 +11,28 @@ use pyo3::types::PyBytes;
 use quadsect::contact::{self, Contact, Poses};
 use quadsect::{Error, ErrorKind};
 
-/// Native-endian doubles of a byte string whose length is a multiple of 8.
-fn doubles(b: &[u8], what: &str) -> Result<Vec<f64>, Error> {
+/// Native-endian doubles of a byte string whose length is a multiple of 8:
+/// the bytes themselves when they are 8-aligned (CPython's bytes objects
+/// are), a copy otherwise.
+fn doubles<'a>(b: &'a [u8], what: &str) -> Result<std::borrow::Cow<'a, [f64]>, Error> {
     if !b.len().is_multiple_of(8) {
         return Err(Error::new(
             ErrorKind::Input,
             format!("{what}: {} bytes is not a whole number of doubles", b.len()),
         ));
     }
-    Ok(b.chunks_exact(8)
-        .map(|c| f64::from_ne_bytes(c.try_into().unwrap()))
-        .collect())
+    // SAFETY: every bit pattern is a valid f64; align_to leaves unaligned
+    // ends apart, and then the bytes are copied instead
+    let (pre, mid, post) = unsafe { b.align_to::<f64>() };
+    Ok(if pre.is_empty() && post.is_empty() {
+        std::borrow::Cow::Borrowed(mid)
+    } else {
+        std::borrow::Cow::Owned(
+            b.chunks_exact(8)
+                .map(|c| f64::from_ne_bytes(c.try_into().unwrap()))
+                .collect(),
+        )
+    })
 }
 
 /// ellipsoid_contact_bytes(ca, ra, ma, cb, rb, mb, threads) -> bytes
