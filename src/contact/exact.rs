@@ -160,8 +160,33 @@ fn det_rc(m: &[[QSqrt; 4]; 4], rows: &[usize], cols: &[usize]) -> QSqrt {
 }
 
 /// The exact value of a form at a rational point.
+#[cfg(test)]
 pub(crate) fn value(q: &QuadricForm, x: &[Q; 3]) -> Q {
     q.eval(x)
+}
+
+/// The value of a form at a rational point, from the integers of
+/// [`sign_at`] and one division.
+fn value_fast(q: &QuadricForm, x: &[Q; 3]) -> Q {
+    let l = crate::geom::quadric::common_denominator(&[q]);
+    let m = q.int_matrix(&l);
+    let d = crate::number::denom_lcm(x.iter());
+    let xs: [BigInt; 4] = std::array::from_fn(|i| {
+        if i == 3 {
+            d.clone()
+        } else {
+            x[i].numer() * (&d / x[i].denom())
+        }
+    });
+    let mut s = BigInt::zero();
+    for i in 0..4 {
+        let mut row = BigInt::zero();
+        for j in 0..4 {
+            row += &m[i][j] * &xs[j];
+        }
+        s += row * &xs[i];
+    }
+    Q::new(s, l * &d * &d)
 }
 
 /// The sign of a form at a rational point, in integers: with `D` the lcm
@@ -190,7 +215,7 @@ pub(crate) fn sign_at(q: &QuadricForm, x: &[Q; 3]) -> i32 {
 }
 
 /// The centre `−W⁻¹b` of a form.
-fn centre(q: &QuadricForm) -> [Q; 3] {
+pub(crate) fn centre(q: &QuadricForm) -> [Q; 3] {
     // −W⁻¹b = −adj(W)·b / det W
     let w = &q.a;
     let cof = |i: usize, j: usize| {
@@ -297,6 +322,8 @@ fn small_roots(p: &ZPoly) -> Vec<QSqrt> {
 pub(crate) fn decide(
     a: &QuadricForm,
     b: &QuadricForm,
+    ca: &[Q; 3],
+    cb: &[Q; 3],
     hint: Option<Hint>,
     want_kind: bool,
 ) -> Result<(Contact, Kind, Certificate), crate::Error> {
@@ -310,15 +337,14 @@ pub(crate) fn decide(
     let kappa = Q::new(la, lb);
     let f = ZPoly::new(quartic(&ai, &bi, BigInt::zero()).to_vec());
     let pos_c = |lc: &Q| f.sign_at(&(lc / &kappa)) > 0;
-    let (ca, cb) = (centre(a), centre(b));
     let ctx = Ctx {
         a,
         b,
         ai: &ai,
         bi: &bi,
         kappa: &kappa,
-        ca: &ca,
-        cb: &cb,
+        ca,
+        cb,
     };
     // separated by the hint? (a rational λ > 0 with f(λ) > 0)
     if let Some(Hint::Lambda(l)) = &hint
@@ -411,7 +437,7 @@ pub(crate) fn decide(
         ));
     }
     // overlapping: a point inside both
-    let p = witness(a, b, &ca, &cb)?;
+    let p = witness(a, b, ca, cb)?;
     let (kind, evidence) = if want_kind {
         kind_of(&ctx, &f)?
     } else {
@@ -810,7 +836,7 @@ fn outside_point(p: &QuadricForm, o: &QuadricForm, cp: &[Q; 3], co: &[Q; 3]) -> 
             }
         }
     }
-    let depth = neg(&value(p, cp)); // −q_P(c_P) > 0
+    let depth = neg(&value_fast(p, cp)); // −q_P(c_P) > 0
     if let Some(x) = outside_search(p, o, cp) {
         return Some(x);
     }
@@ -865,7 +891,7 @@ fn outside_search(p: &QuadricForm, o: &QuadricForm, cp: &[Q; 3]) -> Option<[Q; 3
             }
         }
     }
-    let depth = f(&neg(&value(p, cp))).sqrt();
+    let depth = f(&neg(&value_fast(p, cp))).sqrt();
     let c = cp.each_ref().map(f);
     // x(u) = c + depth·L⁻ᵀu: solve Lᵀ y = u (back substitution)
     let x_of = |u: &[f64; 3]| -> [f64; 3] {

@@ -269,6 +269,8 @@ fn qf(x: f64) -> Q {
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExactEllipsoid {
     form: QuadricForm,
+    /// The centre `−W⁻¹b`.
+    centre: [Q; 3],
     /// `ρ = (det R · r₁r₂r₃)²` of a pose (the filter's scale), and the pose
     /// itself when it is made of doubles.
     rho: Option<Q>,
@@ -311,22 +313,29 @@ impl ExactEllipsoid {
     /// The canonical form of a pose: `W = R·D⁻²·Rᵀ`, `b = −Wc`,
     /// `c₀ = cᵀWc − 1`.
     fn pose_q(c: [Q; 3], r: [Q; 3], m: [[Q; 3]; 3]) -> ExactEllipsoid {
-        // G = D⁻¹Rᵀ, W = GᵀG
-        let g: [[Q; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| &m[j][i] / &r[i]));
+        use crate::number::{q_add, q_mul};
+        // W = R·diag(1/r²)·Rᵀ (the cross-cancelling products of `number`)
+        let inv2: [Q; 3] = std::array::from_fn(|k| q_mul(&r[k], &r[k]).recip());
         let w: [[Q; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| (0..3).fold(Q::zero(), |s, k| s + &g[k][i] * &g[k][j]))
+            std::array::from_fn(|j| {
+                (0..3).fold(Q::zero(), |s, k| {
+                    q_add(&s, &q_mul(&q_mul(&m[i][k], &m[j][k]), &inv2[k]))
+                })
+            })
         });
-        let wc: [Q; 3] =
-            std::array::from_fn(|i| (0..3).fold(Q::zero(), |s, k| s + &w[i][k] * &c[k]));
-        let cwc = (0..3).fold(Q::zero(), |s, k| s + &c[k] * &wc[k]);
-        let sigma = &r[0] * &r[1] * &r[2];
+        let wc: [Q; 3] = std::array::from_fn(|i| {
+            (0..3).fold(Q::zero(), |s, k| q_add(&s, &q_mul(&w[i][k], &c[k])))
+        });
+        let cwc = (0..3).fold(Q::zero(), |s, k| q_add(&s, &q_mul(&c[k], &wc[k])));
+        let sigma = q_mul(&q_mul(&r[0], &r[1]), &r[2]);
         ExactEllipsoid {
             form: QuadricForm {
                 a: w,
                 b: wc.map(|x| -x),
                 c: cwc - Q::one(),
             },
-            rho: Some(&sigma * &sigma),
+            centre: c,
+            rho: Some(q_mul(&sigma, &sigma)),
             pose: None,
         }
     }
@@ -359,8 +368,10 @@ impl ExactEllipsoid {
                 "the quadric has no real interior (an empty or one-point ellipsoid)",
             ));
         }
+        let centre = exact::centre(&form);
         Ok(ExactEllipsoid {
             form,
+            centre,
             rho: None,
             pose: None,
         })
@@ -446,7 +457,8 @@ pub fn contact_report(a: &ExactEllipsoid, b: &ExactEllipsoid) -> Result<ContactR
             filter::Filtered::Overlapping { point } => exact::Hint::Point(point.map(qf)),
         });
     }
-    let (contact, kind, certificate) = exact::decide(&a.form, &b.form, hint, true)?;
+    let (contact, kind, certificate) =
+        exact::decide(&a.form, &b.form, &a.centre, &b.centre, hint, true)?;
     Ok(ContactReport {
         contact,
         kind,

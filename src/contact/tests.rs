@@ -40,7 +40,9 @@ fn rot(q: [f64; 4]) -> [[f64; 3]; 3] {
 /// The exact route alone.
 fn exact_only(a: &Pose, b: &Pose) -> Contact {
     let (ea, eb) = (ExactEllipsoid::from_pose(a), ExactEllipsoid::from_pose(b));
-    exact::decide(&ea.form, &eb.form, None, false).unwrap().0
+    exact::decide(&ea.form, &eb.form, &ea.centre, &eb.centre, None, false)
+        .unwrap()
+        .0
 }
 
 /// Re-checks a certificate with exact arithmetic of its own (the checker's
