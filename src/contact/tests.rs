@@ -446,6 +446,83 @@ mod props {
         pose(c, p.semi_axes.map(|r| r * scale), m)
     }
 
+    /// A pair that touches exactly: A with an integer quaternion matrix R
+    /// (RRᵀ = N²I) and r₀ = N²·2^j, B = A reflected through the exact point
+    /// p = c + 2^j·R e₁ of A's surface.
+    fn arb_touching() -> impl Strategy<Value = (Pose, Pose)> {
+        (
+            prop::array::uniform4(-3i64..=3),
+            0usize..3,
+            prop::array::uniform3(-64i64..64),
+            1u32..8,
+            1u32..8,
+        )
+            .prop_filter_map("zero quaternion", |(q, j, c, r1, r2)| {
+                let n = q.iter().map(|x| x * x).sum::<i64>();
+                if n == 0 {
+                    return None;
+                }
+                let [w, x, y, z] = q;
+                let m = [
+                    [
+                        w * w + x * x - y * y - z * z,
+                        2 * (x * y - w * z),
+                        2 * (x * z + w * y),
+                    ],
+                    [
+                        2 * (x * y + w * z),
+                        w * w - x * x + y * y - z * z,
+                        2 * (y * z - w * x),
+                    ],
+                    [
+                        2 * (x * z - w * y),
+                        2 * (y * z + w * x),
+                        w * w - x * x - y * y + z * z,
+                    ],
+                ]
+                .map(|row| row.map(|v| v as f64));
+                let jf = [0.25, 0.5, 1.0][j];
+                let nf = n as f64;
+                let c = c.map(|v| v as f64 / 32.0);
+                let r = [nf * nf * jf, nf * r1 as f64 / 4.0, nf * r2 as f64 / 4.0];
+                let p: [f64; 3] = std::array::from_fn(|i| c[i] + jf * m[i][0]);
+                let cb: [f64; 3] = std::array::from_fn(|i| 2.0 * p[i] - c[i]);
+                Some((pose(c, r, m), pose(cb, r, m.map(|row| row.map(|x| -x)))))
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+
+        /// The tangent point method (critical values of q_B on A's surface)
+        /// decides the surfaces' relation of the same pair: it must match
+        /// the kind, on random, near-contact and exactly touching pairs.
+        #[test]
+        fn the_tangent_point_method_agrees(
+            (a, b) in prop_oneof![(arb_pose(), arb_pose()), arb_near(), arb_touching()],
+        ) {
+            let r = report(&a, &b);
+            let e = |p: &Pose| {
+                crate::tangent::Ellipsoid::from_frame(
+                    p.center.map(qf),
+                    p.semi_axes.map(qf),
+                    p.matrix.map(|row| row.map(qf)),
+                )
+                .unwrap()
+            };
+            let t = crate::tangent::decide(&e(&a), &e(&b).polynomial()).unwrap();
+            prop_assert_eq!(t.verdict(), surfaces(r.kind()), "{:?}", r.kind());
+        }
+
+        /// The constructed touching pairs touch, by every route.
+        #[test]
+        fn constructed_touching_pairs_touch((a, b) in arb_touching()) {
+            prop_assert_eq!(contact(&a, &b).unwrap(), Contact::Touching);
+            prop_assert_eq!(exact_only(&a, &b), Contact::Touching);
+            prop_assert_eq!(report(&a, &b).kind(), Kind::ExternallyTouching);
+        }
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
