@@ -7,7 +7,7 @@
 //! generator (labels from the exact route).
 
 use super::bench::Row;
-use crate::contact::{self, Contact, Pose, Poses};
+use crate::contact::{self, Contact, Pose, PoseArrays};
 use crate::{Error, ErrorKind};
 use serde_json::{Value, json};
 use std::time::Instant;
@@ -170,25 +170,7 @@ fn generated() -> Vec<Pair> {
         if n == 0 {
             continue;
         }
-        let [w, x, y, z] = q;
-        let m = [
-            [
-                w * w + x * x - y * y - z * z,
-                2 * (x * y - w * z),
-                2 * (x * z + w * y),
-            ],
-            [
-                2 * (x * y + w * z),
-                w * w - x * x + y * y - z * z,
-                2 * (y * z - w * x),
-            ],
-            [
-                2 * (x * z - w * y),
-                2 * (y * z + w * x),
-                w * w - x * x - y * y + z * z,
-            ],
-        ]
-        .map(|row| row.map(|v| v as f64));
+        let m = contact::quaternion_matrix(q);
         let j = [0.25, 0.5, 1.0][(u() * 3.0) as usize % 3];
         let nf = n as f64;
         let c = [0; 3].map(|_| ((4.0 * u() - 2.0) * 1024.0).round() / 1024.0);
@@ -226,29 +208,10 @@ pub fn contact_suite(pairs: Option<&str>, rows: &mut Vec<Row>) -> Result<(), Err
     for set in sets {
         let ps: Vec<&Pair> = all.iter().filter(|p| p.set == set).collect();
         let n = ps.len();
-        let flat = |f: &dyn Fn(&Pair) -> Pose| {
-            let (mut c, mut r, mut m) = (vec![], vec![], vec![]);
-            for p in &ps {
-                let q = f(p);
-                c.extend(q.center());
-                r.extend(q.semi_axes());
-                m.extend(q.matrix().concat());
-            }
-            (c, r, m)
-        };
-        let (ca, ra, ma) = flat(&|p| p.a);
-        let (cb, rb, mb) = flat(&|p| p.b);
+        let arrays_a = PoseArrays::new(ps.iter().map(|p| &p.a));
+        let arrays_b = PoseArrays::new(ps.iter().map(|p| &p.b));
         let mut out = vec![Contact::Separated; n];
-        let pa = Poses {
-            center: &ca,
-            semi_axes: &ra,
-            matrix: &ma,
-        };
-        let pb = Poses {
-            center: &cb,
-            semi_axes: &rb,
-            matrix: &mb,
-        };
+        let (pa, pb) = (arrays_a.view(), arrays_b.view());
         // per pair: the whole set through the bulk API, one thread, 5 runs
         let mut times = vec![];
         for _ in 0..5 {

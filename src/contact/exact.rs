@@ -165,9 +165,10 @@ pub(crate) fn value(q: &QuadricForm, x: &[Q; 3]) -> Q {
     q.eval(x)
 }
 
-/// The value of a form at a rational point, from the integers of
-/// [`sign_at`] and one division.
-fn value_fast(q: &QuadricForm, x: &[Q; 3]) -> Q {
+/// `Xᵀ(L·M)X` for `X = (D·x, D)`, with `L` the lcm of the form's
+/// denominators and `D` that of the point's, in integers (no gcd per
+/// operation): the form's value at x is `s/(L·D²)`.
+fn homogeneous_value(q: &QuadricForm, x: &[Q; 3]) -> (BigInt, BigInt, BigInt) {
     let l = crate::geom::quadric::common_denominator(&[q]);
     let m = q.int_matrix(&l);
     let d = crate::number::denom_lcm(x.iter());
@@ -186,32 +187,19 @@ fn value_fast(q: &QuadricForm, x: &[Q; 3]) -> Q {
         }
         s += row * &xs[i];
     }
+    (s, l, d)
+}
+
+/// The value of a form at a rational point ([`homogeneous_value`] and one
+/// division).
+fn value_fast(q: &QuadricForm, x: &[Q; 3]) -> Q {
+    let (s, l, d) = homogeneous_value(q, x);
     Q::new(s, l * &d * &d)
 }
 
-/// The sign of a form at a rational point, in integers: with `D` the lcm
-/// of the point's denominators and of the form's (`L`), the sign of
-/// `Xᵀ(L·M)X` for `X = (D·x, D)` (no gcd per operation).
+/// The sign of a form at a rational point ([`homogeneous_value`]).
 pub(crate) fn sign_at(q: &QuadricForm, x: &[Q; 3]) -> i32 {
-    let l = crate::geom::quadric::common_denominator(&[q]);
-    let m = q.int_matrix(&l);
-    let d = crate::number::denom_lcm(x.iter());
-    let xs: [BigInt; 4] = std::array::from_fn(|i| {
-        if i == 3 {
-            d.clone()
-        } else {
-            x[i].numer() * (&d / x[i].denom())
-        }
-    });
-    let mut s = BigInt::zero();
-    for i in 0..4 {
-        let mut row = BigInt::zero();
-        for j in 0..4 {
-            row += &m[i][j] * &xs[j];
-        }
-        s += row * &xs[i];
-    }
-    crate::number::sign_z(&s)
+    crate::number::sign_z(&homogeneous_value(q, x).0)
 }
 
 /// The centre `−W⁻¹b` of a form.

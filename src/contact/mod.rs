@@ -511,6 +511,64 @@ impl Poses<'_> {
     }
 }
 
+/// The owned arrays of a list of poses, in the layout of [`Poses`].
+#[derive(Clone, Debug, Default)]
+pub struct PoseArrays {
+    /// 3n centre coordinates.
+    pub center: Vec<f64>,
+    /// 3n semi-axes.
+    pub semi_axes: Vec<f64>,
+    /// 9n matrix entries (row-major per pose).
+    pub matrix: Vec<f64>,
+}
+
+impl PoseArrays {
+    /// The arrays of `poses`, in order.
+    pub fn new<'a>(poses: impl IntoIterator<Item = &'a Pose>) -> PoseArrays {
+        let mut out = PoseArrays::default();
+        for p in poses {
+            out.center.extend(p.center);
+            out.semi_axes.extend(p.semi_axes);
+            out.matrix.extend(p.matrix.concat());
+        }
+        out
+    }
+
+    /// The borrowed view the bulk API takes.
+    pub fn view(&self) -> Poses<'_> {
+        Poses {
+            center: &self.center,
+            semi_axes: &self.semi_axes,
+            matrix: &self.matrix,
+        }
+    }
+}
+
+/// The integer matrix of a quaternion q (`RRᵀ = N²I`, `N = |q|²`): the
+/// rotation `R/N` times N, exact in doubles — the benchmarks' and tests'
+/// exactly touching pairs rest on it.
+pub(crate) fn quaternion_matrix(q: [i64; 4]) -> [[f64; 3]; 3] {
+    let [w, x, y, z] = q;
+    [
+        [
+            w * w + x * x - y * y - z * z,
+            2 * (x * y - w * z),
+            2 * (x * z + w * y),
+        ],
+        [
+            2 * (x * y + w * z),
+            w * w - x * x + y * y - z * z,
+            2 * (y * z - w * x),
+        ],
+        [
+            2 * (x * z - w * y),
+            2 * (y * z + w * x),
+            w * w - x * x - y * y + z * z,
+        ],
+    ]
+    .map(|row| row.map(|v| v as f64))
+}
+
 /// The contact of n pairs `(a[i], b[i])` into `out` (n codes), on
 /// `threads` threads (0: the machine's parallelism).  A bad pose is an
 /// error naming its row (and nothing is written after it in that chunk).

@@ -215,51 +215,20 @@ fn bad_poses_are_errors() {
 fn bulk_matches_single_pairs() {
     let a = [sphere(0.0, 1.0), sphere(0.0, 1.0), sphere(0.0, 1.0)];
     let b = [sphere(3.0, 1.0), sphere(2.0, 1.0), sphere(1.0, 1.0)];
-    let flat = |p: &[Pose]| {
-        let c: Vec<f64> = p.iter().flat_map(|x| x.center).collect();
-        let r: Vec<f64> = p.iter().flat_map(|x| x.semi_axes).collect();
-        let m: Vec<f64> = p.iter().flat_map(|x| x.matrix.concat()).collect();
-        (c, r, m)
-    };
-    let (ca, ra, ma) = flat(&a);
-    let (cb, rb, mb) = flat(&b);
+    let (pa, pb) = (PoseArrays::new(&a), PoseArrays::new(&b));
     let mut out = [Contact::Overlapping; 3];
-    contact_many(
-        Poses {
-            center: &ca,
-            semi_axes: &ra,
-            matrix: &ma,
-        },
-        Poses {
-            center: &cb,
-            semi_axes: &rb,
-            matrix: &mb,
-        },
-        &mut out,
-        2,
-    )
-    .unwrap();
+    contact_many(pa.view(), pb.view(), &mut out, 2).unwrap();
     assert_eq!(
         out,
         [Contact::Separated, Contact::Touching, Contact::Overlapping]
     );
     // a bad row is named
     let bad_r = vec![1.0, 1.0, 1.0, 1.0, -1.0, 1.0, 1.0, 1.0, 1.0];
-    let e = contact_many(
-        Poses {
-            center: &ca,
-            semi_axes: &bad_r,
-            matrix: &ma,
-        },
-        Poses {
-            center: &cb,
-            semi_axes: &rb,
-            matrix: &mb,
-        },
-        &mut out,
-        1,
-    )
-    .unwrap_err();
+    let bad = Poses {
+        semi_axes: &bad_r,
+        ..pa.view()
+    };
+    let e = contact_many(bad, pb.view(), &mut out, 1).unwrap_err();
     assert!(e.message().contains("row 1"), "{}", e.message());
 }
 
@@ -462,25 +431,7 @@ mod props {
                 if n == 0 {
                     return None;
                 }
-                let [w, x, y, z] = q;
-                let m = [
-                    [
-                        w * w + x * x - y * y - z * z,
-                        2 * (x * y - w * z),
-                        2 * (x * z + w * y),
-                    ],
-                    [
-                        2 * (x * y + w * z),
-                        w * w - x * x + y * y - z * z,
-                        2 * (y * z - w * x),
-                    ],
-                    [
-                        2 * (x * z - w * y),
-                        2 * (y * z + w * x),
-                        w * w - x * x - y * y + z * z,
-                    ],
-                ]
-                .map(|row| row.map(|v| v as f64));
+                let m = quaternion_matrix(q);
                 let jf = [0.25, 0.5, 1.0][j];
                 let nf = n as f64;
                 let c = c.map(|v| v as f64 / 32.0);
