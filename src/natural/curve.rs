@@ -220,10 +220,9 @@ fn zeros(g: &Gamma, r: &Reduced) -> Result<Vec<GPoint>, Error> {
     }
     let edge = g.edge();
     let mut out = Vec::new();
-    for mut x in RealAlg::roots_of(&r.w) {
+    // narrow, so that the signs at x below are decided by balls
+    for x in RealAlg::roots_narrow(&r.w, 40) {
         crate::budget::check();
-        // narrow once, so that the signs at x below are decided by balls
-        x.refine_relative(40);
         match x.sign_of(&edge) {
             1 => continue, // no real point of Γ there
             0 => out.push(GPoint { x, ys: 0 }),
@@ -859,7 +858,7 @@ impl Rulings {
         let sd = if d.is_one() {
             XBall::from_q(&Q::one())
         } else {
-            XBall::from_q(&Q::from_integer(d.clone()))
+            XBall::from_z(&d)
                 .sqrt()
                 .ok_or_else(|| Error::internal("√D of a ruling point"))?
         };

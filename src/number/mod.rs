@@ -20,7 +20,7 @@ pub(crate) mod reconstruct;
 mod sign;
 pub(crate) mod xball;
 
-pub use float::double_value;
+pub use float::{double_parts, double_value};
 pub use parse::{NumberError, NumberMode, parse_rational, parse_rational_with, scan_number_with};
 pub use qsqrt::QSqrt;
 pub use sign::Sign;

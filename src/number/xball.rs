@@ -10,7 +10,7 @@
 
 use super::{Q, Z};
 use num_bigint::BigInt;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::Zero;
 
 const U: f64 = 1.0 / 9_007_199_254_740_992.0; // 2^-53
 const INFL: f64 = 1.0 + 1.0 / 281_474_976_710_656.0; // 1 + 2^-48
@@ -39,11 +39,23 @@ pub(crate) fn pow2(k: i64) -> f64 {
 pub(crate) fn top(z: &Z) -> (f64, i64, bool) {
     let bits = z.bits() as i64;
     let shift = (bits - 64).max(0);
-    let t = (z.magnitude() >> shift as usize)
-        .to_u64()
-        .unwrap_or(u64::MAX) as f64;
+    // the leading 64 bits from the two most significant words (no shifted
+    // copy of the number)
+    let mut words = z.magnitude().iter_u64_digits().rev();
+    let hi = words.next().unwrap_or(0);
+    let t = if shift == 0 {
+        hi
+    } else {
+        let lo = words.next().unwrap_or(0);
+        let off = (shift % 64) as u32;
+        if off == 0 {
+            hi
+        } else {
+            (lo >> off) | (hi << (64 - off))
+        }
+    };
     let exact = bits - z.trailing_zeros().unwrap_or(0) as i64 <= 53;
-    (t, shift, exact)
+    (t as f64, shift, exact)
 }
 
 impl XBall {
@@ -54,6 +66,26 @@ impl XBall {
             r: 0.0,
             e: 0,
         }
+    }
+
+    /// A ball holding the integer `x`.
+    pub fn from_z(x: &Z) -> XBall {
+        if x.is_zero() {
+            return XBall::zero();
+        }
+        let (t, e, exact) = top(x);
+        let m = if x.sign() == num_bigint::Sign::Minus {
+            -t
+        } else {
+            t
+        };
+        // a truncation and a rounding when inexact (2u)
+        XBall {
+            m,
+            r: if exact { 0.0 } else { 2.0 * U * t * INFL },
+            e,
+        }
+        .normalized()
     }
 
     /// A ball holding the rational `x`.
@@ -352,5 +384,25 @@ mod tests {
         let (lo, hi) = r.bounds().unwrap();
         assert!(&lo * &lo <= x && x <= &hi * &hi);
         assert!((&hi - &lo) / &lo < q(1, 1 << 40));
+    }
+}
+
+#[cfg(test)]
+mod top_tests {
+    use super::*;
+
+    #[test]
+    fn top_is_the_leading_bits() {
+        for bits in [
+            1u32, 52, 53, 63, 64, 65, 100, 127, 128, 129, 191, 192, 193, 1000,
+        ] {
+            for low in [0u64, 1, 12345] {
+                let z = (Z::from(1) << (bits - 1) as usize) + Z::from(low) * 3 + Z::from(5);
+                let (t, s, _) = top(&z);
+                let want = (&z >> s as usize).to_string().parse::<f64>().unwrap();
+                assert_eq!(t, want, "bits {bits} low {low}");
+                assert_eq!(s, (z.bits() as i64 - 64).max(0));
+            }
+        }
     }
 }

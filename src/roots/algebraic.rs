@@ -39,7 +39,11 @@ pub struct RealAlg {
 /// The representation: the invariant of `Root` is that `poly` is
 /// square-free, primitive, with a positive leading coefficient, and has
 /// exactly one root in the open interval `(lo, hi)`, with neither end a
-/// root.
+/// root.  (The crate-internal roots of [`RealAlg::roots_narrow`] keep the
+/// content of the caller's polynomial — its gcd on numbers of thousands of
+/// bits costs more than everything else done with them; every operation
+/// but the printing of the polynomial is indifferent to a constant factor,
+/// and those numbers are never printed.)
 #[derive(Clone, Debug)]
 enum Repr {
     Rational(Q),
@@ -88,6 +92,37 @@ impl RealAlg {
             .iter()
             .map(|iv| RealAlg::from_primitive(&sq, iv))
             .collect()
+    }
+
+    /// All real roots of `p`, increasing, each in an isolating interval
+    /// that excludes 0 and is at most `2^-bits` of the root's magnitude
+    /// wide (as after [`RealAlg::refine_relative`]).  The inclusion discs
+    /// ([`super::inclusion`]) first, which give such intervals directly
+    /// (narrow dyadic ones around numerical roots) when they prove the
+    /// roots; the exact isolation and refinement otherwise.  The roots are
+    /// those of [`RealAlg::roots_of`]; the intervals may differ, and the
+    /// defining polynomial may keep `p`'s content (for comparisons and
+    /// signs inside the crate, not for printing: [`Repr`]).
+    pub(crate) fn roots_narrow(p: &ZPoly, bits: u32) -> Vec<RealAlg> {
+        if let Some(ivs) = super::inclusion::isolate_by_inclusion(p, bits) {
+            // square-free (n simple roots); the content kept (type docs)
+            let pp = if p.lc().is_negative() { -p } else { p.clone() };
+            return ivs
+                .iter()
+                .map(|iv| RealAlg {
+                    repr: Repr::Root {
+                        poly: pp.clone(),
+                        lo: iv.lo.clone(),
+                        hi: iv.hi.clone(),
+                    },
+                })
+                .collect();
+        }
+        let mut roots = Self::roots_of(p);
+        for x in roots.iter_mut() {
+            x.refine_relative(bits);
+        }
+        roots
     }
 
     /// The same number, as a `Rational` when it is a rational of moderate
@@ -534,11 +569,7 @@ impl RealAlg {
     /// successive halvings of it (each halving decided by an exact sign of
     /// `poly`); `None` otherwise.  Rigorous: [`XBall`] arithmetic.
     fn sign_by_balls(poly: &ZPoly, lo: &Q, hi: &Q, q: &ZPoly) -> Option<i32> {
-        let coeffs: Vec<XBall> = q
-            .coeffs()
-            .iter()
-            .map(|c| XBall::from_q(&Q::from_integer(c.clone())))
-            .collect();
+        let coeffs: Vec<XBall> = q.coeffs().iter().map(XBall::from_z).collect();
         let eval = |lo: &Q, hi: &Q| -> Option<i32> {
             let x = XBall::from_interval(lo, hi);
             let mut acc = *coeffs.last()?;

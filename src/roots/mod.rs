@@ -11,6 +11,7 @@
 mod algebraic;
 pub mod census;
 mod enclose;
+mod inclusion;
 mod isolate;
 pub mod krawczyk;
 pub mod krawczyk_filter;
