@@ -10,7 +10,7 @@ use crate::error::{Error, ErrorKind};
 use serde_json::{Map, Value, json};
 use std::collections::BTreeMap;
 use std::io::{BufRead, ErrorKind as IoErrorKind, Write};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Condvar, Mutex, mpsc};
 
 /// Runs one operation given as a JSON object (`op` and its arguments)
@@ -270,6 +270,10 @@ impl Default for BatchOptions {
     }
 }
 
+/// How long written answers may wait for the next one before they are
+/// flushed, while other lines are in flight.
+const FLUSH_DELAY: std::time::Duration = std::time::Duration::from_millis(1);
+
 /// Look-ahead per worker thread (lines) of [`BatchOptions::default`].
 pub const DEFAULT_LOOKAHEAD: usize = 64;
 
@@ -307,12 +311,17 @@ type Job = (usize, String, u64);
 struct Window {
     state: Mutex<WindowState>,
     changed: Condvar,
+    /// Lines handed to the workers (after their text was read): the
+    /// writer flushes at once when every one of them is written.
+    queued: AtomicUsize,
 }
 
 struct WindowState {
     read: usize,
     written: usize,
     stop: bool,
+    /// The reader waits for the window to open.
+    waiting: bool,
 }
 
 impl Window {
@@ -320,8 +329,10 @@ impl Window {
     fn admit(&self, lookahead: usize) -> bool {
         let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
         while !st.stop && st.read - st.written >= lookahead {
+            st.waiting = true;
             st = self.changed.wait(st).unwrap_or_else(|e| e.into_inner());
         }
+        st.waiting = false;
         if st.stop {
             return false;
         }
@@ -329,10 +340,15 @@ impl Window {
         true
     }
 
-    fn set_written(&self, n: usize) {
+    /// Records `n` lines written; wakes a waiting reader once the window
+    /// is half open (it then reads half a window without sleeping, not one
+    /// line per wake-up).
+    fn set_written(&self, n: usize, lookahead: usize) {
         let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
         st.written = n;
-        self.changed.notify_all();
+        if st.waiting && st.read - st.written <= lookahead / 2 {
+            self.changed.notify_all();
+        }
     }
 
     fn stop(&self) {
@@ -386,6 +402,7 @@ fn read_lines(
             return Ok(());
         }
         i += 1;
+        window.queued.store(i, Ordering::Release);
     }
 }
 
@@ -435,8 +452,9 @@ fn progress_bar(opts: &BatchOptions) -> Option<indicatif::ProgressBar> {
 /// Reads JSON lines from `input` and writes one answer line per input line
 /// to `out`, in input order, streaming:
 ///
-/// * each answer is written and flushed as soon as it and every earlier
-///   line are done;
+/// * each answer is written as soon as it and every earlier line are done,
+///   and flushed at once when no other line is in flight (else within
+///   1 ms);
 /// * the lines are answered by `opts.threads` workers, each under its own
 ///   `opts.budget`; at most `opts.lookahead` lines are read ahead of the
 ///   last one written, so a slow line delays only the lines after it, and
@@ -464,8 +482,10 @@ pub fn run_batch_with(
             read: 0,
             written: 0,
             stop: false,
+            waiting: false,
         }),
         changed: Condvar::new(),
+        queued: AtomicUsize::new(0),
     });
     // however the run ends, the reader stops and the lines still running
     // are cancelled
@@ -500,43 +520,75 @@ pub fn run_batch_with(
     let mut pending: BTreeMap<usize, (String, u64)> = BTreeMap::new();
     let (mut written, mut bytes_done) = (0usize, 0u64);
     let mut closed = false;
-    // the workers hang up when the reader is done and every line answered
-    'run: while let Ok((i, answer, bytes)) = ans_rx.recv() {
-        pending.insert(i, (answer, bytes));
-        loop {
-            while let Some((answer, bytes)) = pending.remove(&written) {
-                if let Err(e) = writeln!(out, "{answer}") {
-                    if e.kind() == IoErrorKind::BrokenPipe {
-                        closed = true;
-                        break 'run;
-                    }
-                    return Err(e);
-                }
-                written += 1;
-                bytes_done += bytes;
+    // the workers hang up when the reader is done and every line answered;
+    // written answers are flushed as soon as no other line is in flight,
+    // else when none has come for FLUSH_DELAY (one write for many lines)
+    let mut unflushed = false;
+    'run: loop {
+        let next = if unflushed {
+            match ans_rx.recv_timeout(FLUSH_DELAY) {
+                Ok(job) => Some(job),
+                Err(mpsc::RecvTimeoutError::Timeout) => None,
+                Err(mpsc::RecvTimeoutError::Disconnected) => break,
             }
-            // more answers already done: write them before flushing
-            match ans_rx.try_recv() {
-                Ok((i, answer, bytes)) => {
-                    pending.insert(i, (answer, bytes));
-                }
+        } else {
+            match ans_rx.recv() {
+                Ok(job) => Some(job),
                 Err(_) => break,
             }
-        }
-        if let Err(e) = out.flush() {
-            if e.kind() == IoErrorKind::BrokenPipe {
-                closed = true;
-                break;
+        };
+        if let Some((i, answer, bytes)) = next {
+            pending.insert(i, (answer, bytes));
+            loop {
+                while let Some((answer, bytes)) = pending.remove(&written) {
+                    if let Err(e) = writeln!(out, "{answer}") {
+                        if e.kind() == IoErrorKind::BrokenPipe {
+                            closed = true;
+                            break 'run;
+                        }
+                        return Err(e);
+                    }
+                    written += 1;
+                    bytes_done += bytes;
+                    unflushed = true;
+                }
+                // more answers already done: write them before flushing
+                match ans_rx.try_recv() {
+                    Ok((i, answer, bytes)) => {
+                        pending.insert(i, (answer, bytes));
+                    }
+                    Err(_) => break,
+                }
             }
-            return Err(e);
+            window.set_written(written, lookahead);
+            if written < window.queued.load(Ordering::Acquire) {
+                // lines in flight: their answers come soon
+                continue;
+            }
         }
-        window.set_written(written);
+        if unflushed {
+            if let Err(e) = out.flush() {
+                if e.kind() == IoErrorKind::BrokenPipe {
+                    closed = true;
+                    break;
+                }
+                return Err(e);
+            }
+            unflushed = false;
+        }
         if let Some(b) = &bar {
             let rate = written as f64 / started.elapsed().as_secs_f64().max(1e-9);
             b.set_message(format!("{written} lines  {rate:.1} lines/s"));
             if opts.input_bytes.is_some() {
                 b.set_position(bytes_done);
             }
+        }
+    }
+    if unflushed && !closed {
+        match out.flush() {
+            Err(e) if e.kind() == IoErrorKind::BrokenPipe => closed = true,
+            Err(e) => return Err(e),
+            Ok(()) => {}
         }
     }
     if let Some(b) = bar {
