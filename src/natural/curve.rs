@@ -132,7 +132,7 @@ impl Gamma {
 
     /// `xm = √(g0/g1)` and `−xm` as real algebraic numbers.
     fn ends(&self) -> [RealAlg; 2] {
-        let r = RealAlg::roots_of(&self.edge());
+        let r = RealAlg::roots_narrow(&self.edge(), 40);
         [r[0].clone(), r[r.len() - 1].clone()]
     }
 }

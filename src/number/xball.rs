@@ -27,6 +27,17 @@ pub struct XBall {
     pub e: i64,
 }
 
+/// `⌊log2 |x|⌋` of a finite non-zero double from its exponent bits (a
+/// subnormal by `log2`); only a scale for [`XBall`]'s exact rescalings.
+fn floor_log2(x: f64) -> i64 {
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i64;
+    if biased == 0 || biased == 0x7ff {
+        x.abs().log2().floor() as i64
+    } else {
+        biased - 1023
+    }
+}
+
 /// `2^k` for `|k| ≤ 1000` (exact).
 pub(crate) fn pow2(k: i64) -> f64 {
     debug_assert!(k.abs() <= 1000);
@@ -140,15 +151,14 @@ impl XBall {
             if self.r == 0.0 {
                 return XBall::zero();
             }
-            let k = self.r.log2().floor() as i64;
-            let k = k.clamp(-1000, 1000);
+            let k = floor_log2(self.r).clamp(-1000, 1000);
             return XBall {
                 m: 0.0,
                 r: self.r * pow2(-k) * INFL,
                 e: self.e + k,
             };
         }
-        let k = (self.m.abs().log2().floor() as i64).clamp(-1000, 1000);
+        let k = floor_log2(self.m).clamp(-1000, 1000);
         if k == 0 {
             return self;
         }

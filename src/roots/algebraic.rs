@@ -104,21 +104,37 @@ impl RealAlg {
     /// defining polynomial may keep `p`'s content (for comparisons and
     /// signs inside the crate, not for printing: [`Repr`]).
     pub(crate) fn roots_narrow(p: &ZPoly, bits: u32) -> Vec<RealAlg> {
-        if let Some(ivs) = super::inclusion::isolate_by_inclusion(p, bits) {
-            // square-free (n simple roots); the content kept (type docs)
-            let pp = if p.lc().is_negative() { -p } else { p.clone() };
-            return ivs
-                .iter()
+        // square-free (n simple roots) with the content kept (type docs)
+        let positive = |p: &ZPoly| if p.lc().is_negative() { -p } else { p.clone() };
+        let build = |poly: ZPoly, ivs: Vec<RootInterval>| -> Vec<RealAlg> {
+            ivs.into_iter()
                 .map(|iv| RealAlg {
                     repr: Repr::Root {
-                        poly: pp.clone(),
-                        lo: iv.lo.clone(),
-                        hi: iv.hi.clone(),
+                        poly: poly.clone(),
+                        lo: iv.lo,
+                        hi: iv.hi,
                     },
                 })
-                .collect();
+                .collect()
+        };
+        if let Some(ivs) = super::inclusion::isolate_by_inclusion(p, bits) {
+            return build(positive(p), ivs);
         }
-        let mut roots = Self::roots_of(p);
+        if p.degree().unwrap_or(0) == 0 {
+            return vec![];
+        }
+        // a multiple root (a tangency): the discs again on the square-free
+        // part, else the exact isolation of it
+        let sq = p.squarefree_part();
+        if sq.degree() < p.degree()
+            && let Some(ivs) = super::inclusion::isolate_by_inclusion(&sq, bits)
+        {
+            return build(sq, ivs);
+        }
+        let mut roots: Vec<RealAlg> = isolate_squarefree(&sq)
+            .iter()
+            .map(|iv| RealAlg::from_primitive(&sq, iv))
+            .collect();
         for x in roots.iter_mut() {
             x.refine_relative(bits);
         }

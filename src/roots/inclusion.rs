@@ -75,8 +75,10 @@ impl C {
             im: (self.im * o.re - self.re * o.im) / d,
         }
     }
+    /// `max(|re|, |im|)`: a norm within √2 of the modulus, enough for
+    /// the iteration's stopping test and the near-real test
     fn abs(self) -> f64 {
-        self.re.hypot(self.im)
+        self.re.abs().max(self.im.abs())
     }
 }
 
@@ -249,6 +251,15 @@ fn certify(cs: &[Z], z: &[C], k: i64, bits: u32) -> Option<Vec<RootInterval>> {
     let coef: Vec<XBall> = cs.iter().map(XBall::from_z).collect();
     let xs: Vec<(XBall, XBall)> = z.iter().map(|w| (exact(w.re, k), exact(w.im, k))).collect();
     let lc2 = coef[n].mul(&coef[n]);
+    // |x_i − x_j|², once per pair
+    let mut gaps = vec![XBall::zero(); n * n];
+    for i in 0..n {
+        for j in i + 1..n {
+            let g = dist2((&xs[i].0, &xs[i].1), (&xs[j].0, &xs[j].1));
+            gaps[i * n + j] = g;
+            gaps[j * n + i] = g;
+        }
+    }
     // t_i with 2^{t_i} ≥ 2n|W_i|
     let mut t = Vec::with_capacity(n);
     for i in 0..n {
@@ -269,26 +280,31 @@ fn certify(cs: &[Z], z: &[C], k: i64, bits: u32) -> Option<Vec<RootInterval>> {
             }
             ar.mul(&ar).add(&ai.mul(&ai))
         };
-        if p2.m == 0.0 && p2.r == 0.0 {
-            return None; // an exact root: left to the exact isolation
-        }
         // |c ∏_{j≠i}(x_i − x_j)|², bounded away from 0
         let mut d2 = lc2;
         for j in (0..n).filter(|&j| j != i) {
-            d2 = d2.mul(&dist2((xr, xi), (&xs[j].0, &xs[j].1)));
+            d2 = d2.mul(&gaps[i * n + j]);
         }
         let inv = d2.recip()?;
         // (2n)²|W_i|² ≤ 2^{2t}
         let w2 = p2.mul(&inv).mul(&exact((4 * n * n) as f64, 0));
         let e = log2_ceil_upper(&w2)?;
-        t.push((e + 1).div_euclid(2));
+        let mut ti = (e + 1).div_euclid(2);
+        if z[i].im == 0.0 && z[i].re != 0.0 {
+            // a real disc enlarged to 2^-(bits+4) of its centre when the
+            // bound is smaller (an exact dyadic root, a tiny correction):
+            // shorter interval ends, the same proof
+            let (_, m, ex) = crate::number::double_parts(z[i].re);
+            let floor_log2 = 63 - i64::from(m.leading_zeros()) + ex + k;
+            ti = ti.max(floor_log2 - i64::from(bits) - 4);
+        }
+        t.push(ti);
     }
     // pairwise disjoint discs: |x_i − x_j|² > (2^{t_i} + 2^{t_j})²
     for i in 0..n {
         for j in i + 1..n {
             let s = pow2_ball(t[i]).add(&pow2_ball(t[j]));
-            let gap = dist2((&xs[i].0, &xs[i].1), (&xs[j].0, &xs[j].1)).sub(&s.mul(&s));
-            if gap.sign() != Some(1) {
+            if gaps[i * n + j].sub(&s.mul(&s)).sign() != Some(1) {
                 return None;
             }
         }
