@@ -33,10 +33,11 @@
 //! union–find; a component touching a cut is unbounded.
 
 use super::exact::{EPoint, Exact};
-use super::fast::{M4, form, matrix};
+use super::fast::{M4, matrix};
 use super::prepared::{Kind, QIn};
 use super::zsqrt::{Zf, radicand};
 use crate::error::Error;
+use crate::number::filter::dot as dot4;
 use crate::number::xball::XBall;
 use crate::number::{Q, QSqrt};
 use crate::poly::ZPoly;
@@ -414,10 +415,20 @@ impl Rulings {
             )
         };
         let m: M4<Z> = matrix(q);
-        let sigma = form(&m, &s, &s);
-        let bs: [Z; 3] = std::array::from_fn(|i| form(&m, &s, &r[i]));
-        let rr: [[Z; 3]; 3] =
-            std::array::from_fn(|i| std::array::from_fn(|j| form(&m, &r[i], &r[j])));
+        // M·s and M·r_j once, then dot products (the forms share them; ρ's
+        // matrix is symmetric)
+        let mv = |v: &[Z; 4]| -> [Z; 4] { std::array::from_fn(|i| dot4(&m[i], v)) };
+        let ms = mv(&s);
+        let mr: [[Z; 4]; 3] = std::array::from_fn(|j| mv(&r[j]));
+        let sigma = dot4(&s, &ms);
+        let bs: [Z; 3] = std::array::from_fn(|i| dot4(&r[i], &ms));
+        let mut rr: [[Z; 3]; 3] = Default::default();
+        for i in 0..3 {
+            for j in i..3 {
+                rr[i][j] = dot4(&r[i], &mr[j]);
+                rr[j][i] = rr[i][j].clone();
+            }
+        }
         let beta = Quad2 {
             c: [bs[0].clone(), bs[1].clone(), bs[2].clone(), z(), z(), z()],
         };
