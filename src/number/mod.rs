@@ -393,9 +393,20 @@ pub(crate) fn lehmer_cofactors(
     x: &num_bigint::BigUint,
     y: &num_bigint::BigUint,
 ) -> Option<(i128, i128, i128, i128)> {
-    use num_traits::ToPrimitive;
     let shift = x.bits().saturating_sub(63);
-    let top = |z: &num_bigint::BigUint| (z >> shift).to_u64().unwrap_or(0) as i128;
+    // ⌊z / 2^shift⌋ (< 2^63) from the two words it spans, no shifted copy
+    let top = |z: &num_bigint::BigUint| -> i128 {
+        let (w, off) = ((shift / 64) as usize, (shift % 64) as u32);
+        let mut words = z.iter_u64_digits().skip(w);
+        let lo = words.next().unwrap_or(0);
+        let hi = words.next().unwrap_or(0);
+        let t = if off == 0 {
+            lo
+        } else {
+            (lo >> off) | (hi << (64 - off))
+        };
+        i128::from(t & (u64::MAX >> 1))
+    };
     let (mut u, mut v) = (top(x), top(y));
     let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
     loop {
@@ -403,8 +414,9 @@ pub(crate) fn lehmer_cofactors(
         if den1 <= 0 || den2 <= 0 || u + a < 0 || u + b < 0 {
             break;
         }
-        let q = (u + a) / den1;
-        if q != (u + b) / den2 {
+        // all four below 2^64 and non-negative: word divisions
+        let q = ((u + a) as u64 / den1 as u64) as i128;
+        if q != ((u + b) as u64 / den2 as u64) as i128 {
             break;
         }
         (a, c) = (c, a - q * c);
