@@ -177,7 +177,10 @@ fn aberth(b: &[f64]) -> Option<Vec<C>> {
             }
         })
         .collect();
-    for _ in 0..80 {
+    // stopped when converged, or after three slow steps in a row (linear
+    // convergence: a multiple root or a cluster, which the discs reject)
+    let (mut prev, mut slow) = (f64::INFINITY, 0);
+    for it in 0..80 {
         let mut moved = 0.0f64;
         for i in 0..n {
             let (v, d) = eval(z[i]);
@@ -201,6 +204,15 @@ fn aberth(b: &[f64]) -> Option<Vec<C>> {
         if moved < 1e-15 {
             break;
         }
+        slow = if it >= 10 && moved > 0.5 * prev {
+            slow + 1
+        } else {
+            0
+        };
+        if slow >= 3 {
+            break;
+        }
+        prev = moved;
     }
     Some(z)
 }
