@@ -81,6 +81,17 @@ fn check(a: &ExactEllipsoid, b: &ExactEllipsoid, r: &ContactReport) {
     }
 }
 
+/// The same ellipsoid for the tangent point method (the pose convention
+/// is `Ellipsoid::from_frame`'s).
+fn tangent_ellipsoid(p: &Pose) -> crate::tangent::Ellipsoid {
+    crate::tangent::Ellipsoid::from_frame(
+        p.center.map(qf),
+        p.semi_axes.map(qf),
+        p.matrix.map(|row| row.map(qf)),
+    )
+    .unwrap()
+}
+
 fn report(a: &Pose, b: &Pose) -> ContactReport {
     let (ea, eb) = (ExactEllipsoid::from_pose(a), ExactEllipsoid::from_pose(b));
     let r = contact_report(&ea, &eb).unwrap();
@@ -303,16 +314,8 @@ fn agrees_with_the_tangent_point_method() {
     }
     for (a, b) in pairs {
         let r = report(&a, &b);
-        let e = |p: &Pose| {
-            crate::tangent::Ellipsoid::from_frame(
-                p.center.map(qf),
-                p.semi_axes.map(qf),
-                p.matrix.map(|row| row.map(qf)),
-            )
-            .unwrap()
-        };
-        let sb = e(&b).polynomial();
-        let t = crate::tangent::decide(&e(&a), &sb).unwrap();
+        let sb = tangent_ellipsoid(&b).polynomial();
+        let t = crate::tangent::decide(&tangent_ellipsoid(&a), &sb).unwrap();
         assert_eq!(
             t.verdict(),
             surfaces(r.kind()),
@@ -453,15 +456,8 @@ mod props {
             (a, b) in prop_oneof![(arb_pose(), arb_pose()), arb_near(), arb_touching()],
         ) {
             let r = report(&a, &b);
-            let e = |p: &Pose| {
-                crate::tangent::Ellipsoid::from_frame(
-                    p.center.map(qf),
-                    p.semi_axes.map(qf),
-                    p.matrix.map(|row| row.map(qf)),
-                )
-                .unwrap()
-            };
-            let t = crate::tangent::decide(&e(&a), &e(&b).polynomial()).unwrap();
+            let sb = tangent_ellipsoid(&b).polynomial();
+            let t = crate::tangent::decide(&tangent_ellipsoid(&a), &sb).unwrap();
             prop_assert_eq!(t.verdict(), surfaces(r.kind()), "{:?}", r.kind());
         }
 

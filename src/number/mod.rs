@@ -394,19 +394,8 @@ pub(crate) fn lehmer_cofactors(
     y: &num_bigint::BigUint,
 ) -> Option<(i128, i128, i128, i128)> {
     let shift = x.bits().saturating_sub(63);
-    // ⌊z / 2^shift⌋ (< 2^63) from the two words it spans, no shifted copy
-    let top = |z: &num_bigint::BigUint| -> i128 {
-        let (w, off) = ((shift / 64) as usize, (shift % 64) as u32);
-        let mut words = z.iter_u64_digits().skip(w);
-        let lo = words.next().unwrap_or(0);
-        let hi = words.next().unwrap_or(0);
-        let t = if off == 0 {
-            lo
-        } else {
-            (lo >> off) | (hi << (64 - off))
-        };
-        i128::from(t & (u64::MAX >> 1))
-    };
+    // ⌊z / 2^shift⌋ < 2^63
+    let top = |z: &num_bigint::BigUint| i128::from(xball::word_at(z, shift) & (u64::MAX >> 1));
     let (mut u, mut v) = (top(x), top(y));
     let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
     loop {

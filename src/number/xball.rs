@@ -27,15 +27,29 @@ pub struct XBall {
     pub e: i64,
 }
 
-/// `⌊log2 |x|⌋` of a finite non-zero double from its exponent bits (a
-/// subnormal by `log2`); only a scale for [`XBall`]'s exact rescalings.
-fn floor_log2(x: f64) -> i64 {
-    let biased = ((x.to_bits() >> 52) & 0x7ff) as i64;
-    if biased == 0 || biased == 0x7ff {
-        x.abs().log2().floor() as i64
+/// `⌊log2 |x|⌋` of a finite non-zero double, exactly, from its bits.
+pub(crate) fn floor_log2(x: f64) -> i64 {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i64;
+    if biased == 0 {
+        // subnormal: m·2^-1074
+        let m = bits & ((1u64 << 52) - 1);
+        63 - i64::from(m.leading_zeros()) - 1074
     } else {
         biased - 1023
     }
+}
+
+/// `⌊z / 2^shift⌋ mod 2^64`, from the two words it spans (no shifted copy
+/// of `z`).
+pub(crate) fn word_at(z: &num_bigint::BigUint, shift: u64) -> u64 {
+    let (w, off) = ((shift / 64) as usize, (shift % 64) as u32);
+    let mut words = z.iter_u64_digits().skip(w);
+    let lo = words.next().unwrap_or(0);
+    if off == 0 {
+        return lo;
+    }
+    (lo >> off) | (words.next().unwrap_or(0) << (64 - off))
 }
 
 /// `2^k` for `|k| ≤ 1000` (exact).
@@ -50,21 +64,7 @@ pub(crate) fn pow2(k: i64) -> f64 {
 pub(crate) fn top(z: &Z) -> (f64, i64, bool) {
     let bits = z.bits() as i64;
     let shift = (bits - 64).max(0);
-    // the leading 64 bits from the two most significant words (no shifted
-    // copy of the number)
-    let mut words = z.magnitude().iter_u64_digits().rev();
-    let hi = words.next().unwrap_or(0);
-    let t = if shift == 0 {
-        hi
-    } else {
-        let lo = words.next().unwrap_or(0);
-        let off = (shift % 64) as u32;
-        if off == 0 {
-            hi
-        } else {
-            (lo >> off) | (hi << (64 - off))
-        }
-    };
+    let t = word_at(z.magnitude(), shift as u64);
     let exact = bits - z.trailing_zeros().unwrap_or(0) as i64 <= 53;
     (t as f64, shift, exact)
 }

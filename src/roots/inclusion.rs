@@ -33,7 +33,7 @@
 //! `None`, and the caller isolates exactly.
 
 use super::isolate::RootInterval;
-use crate::number::xball::{XBall, top};
+use crate::number::xball::{XBall, floor_log2, top};
 use crate::number::{Q, Z};
 use crate::poly::ZPoly;
 use num_traits::{Signed, Zero};
@@ -306,9 +306,7 @@ fn certify(cs: &[Z], z: &[C], k: i64, bits: u32) -> Option<Vec<RootInterval>> {
             // a real disc enlarged to 2^-(bits+4) of its centre when the
             // bound is smaller (an exact dyadic root, a tiny correction):
             // shorter interval ends, the same proof
-            let (_, m, ex) = crate::number::double_parts(z[i].re);
-            let floor_log2 = 63 - i64::from(m.leading_zeros()) + ex + k;
-            ti = ti.max(floor_log2 - i64::from(bits) - 4);
+            ti = ti.max(floor_log2(z[i].re) + k - i64::from(bits) - 4);
         }
         t.push(ti);
     }
@@ -327,9 +325,7 @@ fn certify(cs: &[Z], z: &[C], k: i64, bits: u32) -> Option<Vec<RootInterval>> {
             // the root ζ is within 2^{t_i − 1} of x_i; with
             // |x_i| ≥ 2^{t_i + bits + 2} the interval x_i ± 2^{t_i} excludes
             // 0 and its width 2^{t_i + 1} is at most 2^-bits·|ζ|
-            let (_, m, e) = crate::number::double_parts(z[i].re);
-            let floor_log2 = 63 - i64::from(m.leading_zeros()) + e + k;
-            if m == 0 || floor_log2 < t[i] + i64::from(bits) + 2 {
+            if z[i].re == 0.0 || floor_log2(z[i].re) + k < t[i] + i64::from(bits) + 2 {
                 return None;
             }
             out.push(i);
