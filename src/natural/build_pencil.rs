@@ -204,11 +204,12 @@ pub(crate) fn branches_by(p: &QIn<Z>, q: &QIn<Z>) -> Result<(Vec<CurveBranch>, u
 /// [`branches_by`] on rulings already built (`r` of `p`).
 pub(crate) fn branches_on(r: &Rulings, p: &QIn<Z>) -> Result<(Vec<CurveBranch>, usize), Error> {
     let t = r.topology()?;
+    let src = r.source(p);
     let branches = t
         .branches
         .iter()
         .map(|b| {
-            let start: CurvePoint = r.realize(p, &b.at)?;
+            let start: CurvePoint = Rulings::realize(&src, &b.at)?;
             Ok(CurveBranch {
                 bounded: b.bounded,
                 start,

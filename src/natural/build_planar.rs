@@ -21,7 +21,7 @@
 //! compare the two.
 
 use super::exact::{EPoint, Exact, epoint};
-use super::fast::{Sq, det2, height_conic};
+use super::fast::{PlanarConics, Sq, det2, height_conic};
 use super::planar::{drop_points_on_lines, offset_point, push_unique};
 use super::prepared::{QIn, point_difference};
 use super::result::{Component, ConicKind, Plane, PointKind};
@@ -122,7 +122,8 @@ fn factor(f: &[[Z; 3]; 3]) -> Factors {
             }
         }
     }
-    let k = k.expect("rank 2 has two independent rows");
+    let mut k = k.expect("rank 2 has two independent rows");
+    crate::number::divide_content_z(&mut k); // as in the decision
     let (f00, f01, f11) = (&f[0][0], &f[0][1], &f[1][1]);
     if !k[2].is_zero() {
         let dd = f01 * f01 - f00 * f11;
@@ -175,7 +176,9 @@ fn factor(f: &[[Z; 3]; 3]) -> Factors {
     let pv = [-&k[1], k[0].clone()];
     let a = f00 * &pv[0] * &pv[0] + Z::from(2) * f01 * &pv[0] * &pv[1] + f11 * &pv[1] * &pv[1];
     let b = &pv[0] * &f[0][2] + &pv[1] * &f[1][2];
-    let c = f[2][2].clone();
+    let mut abc = [a, b, f[2][2].clone()];
+    crate::number::divide_content_z(&mut abc);
+    let [a, b, c] = abc;
     let w = [sq(k[0].clone()), sq(k[1].clone())];
     let line = |num: S, den: Z, double: bool| ZLine {
         p: [num.scale(&pv[0]), num.scale(&pv[1]), sq(den)],
@@ -301,19 +304,23 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
     let pw = p[2].u.clone();
     let base = fr.point(p);
     let dir = fr.direction(&l.w);
-    let normal = cross_z(&dir, &fr.n);
-    let offset = (0..3).fold(Zf::zero(), |acc, i| acc.add(&normal[i].mul(&base[i], d)));
-    let plane = || Plane {
-        normal: epoint(&out3(&normal, d)),
-        offset: Exact::Quad(offset.to_qsqrt(d)),
+    // each value below only when the case needs it: on long inputs every
+    // product in Z[√d] counts (an empty section needs its plane alone)
+    let plane = || {
+        let normal = cross_z(&dir, &fr.n);
+        let offset = (0..3).fold(Zf::zero(), |acc, i| acc.add(&normal[i].mul(&base[i], d)));
+        Plane {
+            normal: epoint(&out3(&normal, d)),
+            offset: Exact::Quad(offset.to_qsqrt(d)),
+        }
     };
     // the certificate lists the plane only when no conic carries it (a
     // conic's plane is printed with it): computed only then
     let bare =
         |out: &[Component]| (!out.iter().any(|c| matches!(c, Component::Conic { .. }))).then(plane);
-    let n = fr.n_q();
-    let n2: Z = dot(&fr.n, &fr.n);
-    let lam = (0..3).fold(Zf::zero(), |acc, i| acc.add(&dir[i].mul(&dir[i], d)));
+    let n = || fr.n_q();
+    let n2 = || -> Z { dot(&fr.n, &fr.n) };
+    let lam = || (0..3).fold(Zf::zero(), |acc, i| acc.add(&dir[i].mul(&dir[i], d)));
     let kk = &fr.kk;
     let at =
         |sigma: &Zf| -> [Zf; 3] { std::array::from_fn(|i| base[i].add(&sigma.mul(&dir[i], d))) };
@@ -331,15 +338,20 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
     }
     if sa != 0 {
         // σ0 = −b′/(a′·pw), k = (a′c′ − b′²)/(K·pw²·a′)
-        let inv_a = a1.inv(d);
-        let sigma0 = b1.neg().mul(&inv_a, d).div_z(&pw);
         let disc = a1.mul(&c1, d).sub(&b1.mul(&b1, d));
         let sk = disc.sign(d) * sa;
-        let kq = disc.mul(&inv_a, d).div_z(&(kk * &pw * &pw));
+        if sa < 0 && sk < 0 {
+            let p = bare(&out);
+            return (out, p);
+        }
+        let inv_a = a1.inv(d);
+        let sigma0 = b1.neg().mul(&inv_a, d).div_z(&pw);
+        let kq = || disc.mul(&inv_a, d).div_z(&(kk * &pw * &pw));
         let center = || epoint(&out3(&at(&sigma0), d));
         if sa < 0 {
             match sk {
                 1 => {
+                    let (kq, lam) = (kq(), lam());
                     // along L: k·|D|²·K/(−a′); along the normal: k
                     let along = kq.mul(&lam, d).mul(&inv_a, d).scale(&-kk.clone());
                     let circle = a1.add(&lam.scale(kk)).is_zero();
@@ -353,7 +365,7 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
                         center: Some(center()),
                         vertex: None,
                         axes2: vec![Exact::Quad(along.to_qsqrt(d)), Exact::Quad(kq.to_qsqrt(d))],
-                        axis_dirs: vec![epoint(&out3(&dir, d)), rat_point(&n)],
+                        axis_dirs: vec![epoint(&out3(&dir, d)), rat_point(&n())],
                         focal2: None,
                         double: l.double,
                     });
@@ -366,17 +378,18 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
             }
         } else if sk != 0 {
             // along = −k·|D|²·K/a′
+            let (kq, lam) = (kq(), lam());
             let along = kq.mul(&lam, d).mul(&inv_a, d).scale(&-kk.clone());
             let (k_out, along_out) = (kq.to_qsqrt(d), along.to_qsqrt(d));
             let (axes2, dirs) = if sk > 0 {
                 (
                     vec![Exact::Quad(k_out), Exact::Quad(along_out.neg())],
-                    vec![rat_point(&n), epoint(&out3(&dir, d))],
+                    vec![rat_point(&n()), epoint(&out3(&dir, d))],
                 )
             } else {
                 (
                     vec![Exact::Quad(along_out), Exact::Quad(k_out.neg())],
-                    vec![epoint(&out3(&dir, d)), rat_point(&n)],
+                    vec![epoint(&out3(&dir, d)), rat_point(&n())],
                 )
             };
             out.push(Component::Conic {
@@ -391,8 +404,8 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
             });
         } else {
             // two lines through the centre: directions D ± μn, μ² = a′/(K|n|²)
-            let mu2 = a1.div_z(&(kk * &n2)).to_qsqrt(d);
-            let dir_q = out3(&dir, d);
+            let mu2 = a1.div_z(&(kk * &n2())).to_qsqrt(d);
+            let (dir_q, n) = (out3(&dir, d), n());
             for s in [1, -1] {
                 out.push(Component::Line {
                     point: center(),
@@ -406,7 +419,7 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
         let sv = c1.neg().div(&b1, d).div_z(&(Z::from(2) * &pw));
         let f2 = b1
             .mul(&b1, d)
-            .div(&lam, d)
+            .div(&lam(), d)
             .div_z(&(Z::from(4) * kk * kk * &pw * &pw));
         let up = sb * if pw.is_negative() { -1 } else { 1 };
         let axis: [Zf; 3] = if up > 0 {
@@ -428,8 +441,8 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
         // z² = C = c′/(K·pw²): two parallel lines, a double line, or nothing
         match sc {
             1 => {
-                let mu2 = c1.div_z(&(kk * &pw * &pw * &n2)).to_qsqrt(d);
-                let base_q = out3(&base, d);
+                let mu2 = c1.div_z(&(kk * &pw * &pw * &n2())).to_qsqrt(d);
+                let (base_q, n) = (out3(&base, d), n());
                 let dir_q = out3(&dir, d);
                 for s in [1, -1] {
                     out.push(Component::Line {
@@ -479,6 +492,27 @@ fn conjugate_points(fr: &Frame, h: &[[Z; 3]; 3], x: &[Z; 3]) -> Vec<Component> {
     }
 }
 
+/// `F` (divided by its content: it matters up to a positive factor, and
+/// near-degenerate inputs give contents of thousands of bits) and `H` of
+/// the module docs, as [`super::fast`]'s decision computes them.
+fn conics(x: &QIn<Z>, y: &QIn<Z>, parallel: bool, qq: &Z) -> PlanarConics {
+    let dv = point_difference(x, y);
+    let e2 = if parallel { dv.clone() } else { y.a.clone() };
+    let e1s: [Z; 3] = std::array::from_fn(|i| qq * &x.a[i]);
+    let e2s: [Z; 3] = std::array::from_fn(|i| qq * &e2[i]);
+    let zero: [Z; 3] = std::array::from_fn(|_| Z::zero());
+    let negd: [Z; 3] = std::array::from_fn(|i| -&dv[i]);
+    let h1 = height_conic(x, &[e1s.clone(), e2s.clone(), zero], qq);
+    let h2 = height_conic(y, &[e1s, e2s, negd], qq);
+    let k1 = dot(&x.a, &x.a) * &x.pd;
+    let k2 = dot(&y.a, &y.a) * &y.pd;
+    let mut f: [[Z; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| SignRing::sub(&k2.mul(&h1[i][j]), &k1.mul(&h2[i][j])))
+    });
+    crate::number::divide_content_z(f.as_flattened_mut());
+    PlanarConics { f, h1 }
+}
+
 /// All real components of a planar intersection of `x` and `y` (coplanar
 /// distinct axes, parallel or meeting; the projection conic degenerate).
 /// Also returns the planes through the real lines of the projection conic
@@ -489,21 +523,22 @@ pub(crate) fn planar_components(
     x: &QIn<Z>,
     y: &QIn<Z>,
     parallel: bool,
+    decided: Option<&PlanarConics>,
 ) -> (Vec<Component>, Vec<Plane>) {
     let dv = point_difference(x, y);
     let qq = &x.q * &y.q;
-    let e2 = if parallel { dv.clone() } else { y.a.clone() };
-    let e1s: [Z; 3] = std::array::from_fn(|i| &qq * &x.a[i]);
-    let e2s: [Z; 3] = std::array::from_fn(|i| &qq * &e2[i]);
-    let zero: [Z; 3] = std::array::from_fn(|_| Z::zero());
-    let negd: [Z; 3] = std::array::from_fn(|i| -&dv[i]);
-    let h1 = height_conic(x, &[e1s.clone(), e2s.clone(), zero], &qq);
-    let h2 = height_conic(y, &[e1s, e2s, negd], &qq);
+    let e2 = if parallel { dv } else { y.a.clone() };
     let k1 = dot(&x.a, &x.a) * &x.pd;
-    let k2 = dot(&y.a, &y.a) * &y.pd;
-    let f: [[Z; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| SignRing::sub(&k2.mul(&h1[i][j]), &k1.mul(&h2[i][j])))
-    });
+    // F and H as the decision computed them, else (a decision in balls)
+    // the same formulas here
+    let computed;
+    let PlanarConics { f, h1 } = match decided {
+        Some(c) => c,
+        None => {
+            computed = conics(x, y, parallel, &qq);
+            &computed
+        }
+    };
     let fr = Frame {
         c1: x.c.clone(),
         q1: x.q.clone(),
@@ -514,17 +549,17 @@ pub(crate) fn planar_components(
     };
     let mut out = Vec::new();
     let mut planes = Vec::new();
-    match factor(&f) {
+    match factor(f) {
         Factors::Lines(lines, d) => {
             for l in &lines {
-                let (comps, plane) = section(&fr, &h1, l, &d);
+                let (comps, plane) = section(&fr, h1, l, &d);
                 planes.extend(plane);
                 for c in comps {
                     push_unique(&mut out, c);
                 }
             }
         }
-        Factors::Point(xp) => out = conjugate_points(&fr, &h1, &xp),
+        Factors::Point(xp) => out = conjugate_points(&fr, h1, &xp),
         Factors::Nothing => {}
     }
     (drop_points_on_lines(out), planes)
@@ -552,6 +587,60 @@ mod tests {
             assert!(is_zero(&form3(&f, &l.p, &l.p, &d)));
             assert!(is_zero(&form3(&f, &l.p, &w, &d)));
             assert!(is_zero(&form3(&f, &w, &w, &d)));
+        }
+    }
+
+    /// The construction from the decision's conics (big-integer and
+    /// `i128` tiers) and from its own (a decision in balls) agree, and
+    /// the conics are the decision's, `F` primitive.
+    #[test]
+    fn the_decisions_conics_and_the_constructions_agree() {
+        use super::super::prepared::Prepared;
+        use crate::Natural;
+        let pairs = [
+            // parallel cylinders: two lines; touching: a double line
+            (
+                "cylinder point=0,0,0 axis=0,0,1 radius2=1",
+                "cylinder point=1,0,0 axis=0,0,1 radius2=1",
+            ),
+            (
+                "cylinder point=0,0,0 axis=0,0,1 radius2=1",
+                "cylinder point=2,0,0 axis=0,0,1 radius2=1",
+            ),
+            // intersecting axes of equal radii: two ellipses
+            (
+                "cylinder point=0,0,0 axis=0,0,1 radius2=1",
+                "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+            ),
+            // long decimals: F carries a content of hundreds of bits
+            (
+                "cylinder point=1.2,0,-0.4000000000000003 axis=-0.000000000000000068996496966039912,-1,-0.00000000000000044408920985006262 radius2=0.0400000000000000040000000000000001",
+                "cylinder point=1.1999999999999997,0.00000000000000011102230246251565,-1.2000808300000003 axis=-0.000000000000000068996496966039912,-1,-0.00000000000000044408920985006262 radius2=0.0400000000000000040000000000000001",
+            ),
+        ];
+        for (sa, sb) in pairs {
+            let (na, nb): (Natural, Natural) = (sa.parse().unwrap(), sb.parse().unwrap());
+            let (a, b) = (Prepared::new(&na), Prepared::new(&nb));
+            let (x, y) = (a.prep.tier::<Z>(), b.prep.tier::<Z>());
+            // the big-integer decision hands over its conics
+            let (out, _) = super::super::fast::program(&x, &y).unwrap();
+            let super::super::fast::Outcome::Planar(_, _, case, got) = out else {
+                panic!("{sa} / {sb}: a planar decision expected, got {out:?}");
+            };
+            let super::super::fast::Case::Planar { parallel } = case else {
+                panic!("{sa} / {sb}: {case:?}");
+            };
+            let qq = &x.q * &y.q;
+            let c = conics(&x, &y, parallel, &qq);
+            assert_eq!(*got, c, "{sa} / {sb}");
+            let g =
+                c.f.iter()
+                    .flatten()
+                    .fold(Z::zero(), |g, v| crate::number::gcd_z(&g, v));
+            assert!(g.is_one(), "{sa} / {sb}: F not primitive");
+            let own = planar_components(&x, &y, parallel, None);
+            let given = planar_components(&x, &y, parallel, Some(&c));
+            assert_eq!(format!("{own:?}"), format!("{given:?}"), "{sa} / {sb}");
         }
     }
 

@@ -20,7 +20,12 @@ pub(crate) type Built = (Vec<Component>, Vec<String>, Vec<Plane>);
 
 /// The components of the intersection of `a` and `b` in the decided
 /// `case`, and remarks.
-pub(crate) fn components(a: &Prepared, b: &Prepared, case: Case) -> Result<Built, Error> {
+pub(crate) fn components(
+    a: &Prepared,
+    b: &Prepared,
+    case: Case,
+    conics: Option<&super::fast::PlanarConics>,
+) -> Result<Built, Error> {
     let (na, nb) = (a.natural(), b.natural());
     let mut planes = Vec::new();
     let comps = match case {
@@ -41,7 +46,7 @@ pub(crate) fn components(a: &Prepared, b: &Prepared, case: Case) -> Result<Built
             if x.kind == Kind::Sphere || y.kind == Kind::Sphere {
                 return Err(Error::internal("a planar case with a sphere"));
             }
-            let (comps, member) = super::build_planar::planar_components(&x, &y, parallel);
+            let (comps, member) = super::build_planar::planar_components(&x, &y, parallel, conics);
             planes = member;
             comps
         }

@@ -713,17 +713,33 @@ fn dot(a: &[Z; 3], b: &[Z; 3]) -> Z {
 /// also as doubles, each with a proven bound on its error.
 #[derive(Clone, Debug)]
 pub struct CurvePoint {
-    /// `P0`, `d` and `A, B, C` over `Z[√D]/den`, unreduced: reduced to
+    /// What the exact values are computed from: the ruling point and the
+    /// parameterisation (shared by the branches of a curve).
+    src: std::sync::Arc<RulingSource>,
+    at: RulingPoint,
+    /// `P0`, `d` and `A, B, C` over `Z[√D]/den`, unreduced: computed when
+    /// the certified doubles needed them or when asked for, and reduced to
     /// lowest terms only when asked for (the gcds of 300-digit integers
     /// cost more than the rest of the construction).
-    raw: std::sync::Arc<RawPoint>,
+    raw: std::sync::OnceLock<RawPoint>,
     exact: std::sync::OnceLock<[[QSqrt; 3]; 3]>,
     pub(crate) root: i32,
     pub(crate) t: Option<QSqrt>,
     pub(crate) approx: [(f64, f64); 3],
 }
 
+/// What [`Rulings::realize`]'s exact values are computed from: the
+/// parameterisation of `X` by the rulings of `P`, and `P`'s axis, point
+/// and denominator.
 #[derive(Debug)]
+pub(crate) struct RulingSource {
+    rulings: Rulings,
+    a: [Z; 3],
+    c: [Z; 3],
+    q: Z,
+}
+
+#[derive(Clone, Debug)]
 struct RawPoint {
     p0: [Zf; 3],
     dir: [Zf; 3],
@@ -732,9 +748,13 @@ struct RawPoint {
 }
 
 impl CurvePoint {
+    fn raw(&self) -> &RawPoint {
+        self.raw.get_or_init(|| self.src.raw_point(&self.at).0)
+    }
+
     fn reduced(&self) -> &[[QSqrt; 3]; 3] {
         self.exact.get_or_init(|| {
-            let r = &*self.raw;
+            let r = self.raw();
             let out = |v: &[Zf; 3]| -> [QSqrt; 3] { std::array::from_fn(|i| v[i].to_qsqrt(&r.d)) };
             [out(&r.p0), out(&r.dir), out(&r.quadratic)]
         })
@@ -824,13 +844,151 @@ fn tight(b: &XBall) -> bool {
 }
 
 impl Rulings {
+    /// What [`Self::realize`] needs of `P` (the cylinder or cone) beside
+    /// the rulings, shared by the points of one curve.
+    pub fn source(&self, p: &QIn<Z>) -> std::sync::Arc<RulingSource> {
+        std::sync::Arc::new(RulingSource {
+            rulings: self.clone(),
+            a: p.a.clone(),
+            c: p.c.clone(),
+            q: p.q.clone(),
+        })
+    }
+
     /// The point of `X` at a ruling point of a branch (module docs; the
-    /// rational `x`, the sign of `y`, the sheet), with `q` the other
-    /// quadric and `p` the cylinder or cone.
-    pub fn realize(&self, p: &QIn<Z>, at: &RulingPoint) -> Result<CurvePoint, Error> {
-        let g = &self.gamma;
+    /// rational `x`, the sign of `y`, the sheet), with `src` from
+    /// [`Self::source`].  The certified doubles come from balls on the
+    /// integer data when those are tight (no arithmetic in `Z[√D]`), else
+    /// from the exact values; the exact values are computed when asked for
+    /// (or when the doubles needed them).
+    pub fn realize(
+        src: &std::sync::Arc<RulingSource>,
+        at: &RulingPoint,
+    ) -> Result<CurvePoint, Error> {
+        let r = &src.rulings;
+        let root = if r.sigma.is_zero() {
+            0
+        } else if r.cone {
+            -at.sheet
+        } else {
+            at.sheet
+        };
+        let raw = std::sync::OnceLock::new();
+        let by_balls = (!r.sigma.is_zero())
+            .then(|| src.approx_by_balls(at, root))
+            .flatten();
+        let (approx, t) = match by_balls {
+            Some(approx) => (approx, None),
+            None => {
+                let (point, t) = src.raw_point(at);
+                let approx = exact_doubles(&point, t.as_ref(), root)?;
+                let t = t.map(|t| t.to_qsqrt(&point.d));
+                let _ = raw.set(point);
+                (approx, t)
+            }
+        };
+        Ok(CurvePoint {
+            src: src.clone(),
+            at: at.clone(),
+            raw,
+            exact: std::sync::OnceLock::new(),
+            root,
+            t,
+            approx,
+        })
+    }
+}
+
+impl Quad2 {
+    /// [`Self::eval`] on balls.
+    fn eval_ball(&self, x: &XBall, y: &XBall) -> XBall {
+        let c = |i: usize| XBall::from_z(&self.c[i]);
+        let xpart = x.mul(&c(1).add(&x.mul(&c(3))));
+        let ypart = y.mul(&c(2).add(&x.mul(&c(4))).add(&y.mul(&c(5))));
+        c(0).add(&xpart).add(&ypart)
+    }
+}
+
+/// A certified double of a ball: `±∞` with an infinite bound beyond the
+/// range of doubles, the sign that of the ball (relative radius < 2^-40),
+/// as for every other certified double (contract §4).
+fn double_of(b: XBall) -> (f64, f64) {
+    let m = b.m;
+    b.to_f64().unwrap_or((
+        if m < 0.0 {
+            f64::NEG_INFINITY
+        } else {
+            f64::INFINITY
+        },
+        f64::INFINITY,
+    ))
+}
+
+impl RulingSource {
+    /// The certified doubles of the point from balls on the integer data
+    /// (`σ ≠ 0`; the formulas of [`Self::raw_point`] and [`exact_doubles`],
+    /// each ball a proven enclosure): `None` when a sign is not certain or
+    /// a coordinate is not tight (a cancellation), then the exact values
+    /// decide.
+    fn approx_by_balls(&self, at: &RulingPoint, root: i32) -> Option<[(f64, f64); 3]> {
+        let r = &self.rulings;
+        let g = &r.gamma;
+        let xb = XBall::from_q(&at.x);
+        // y = ys·√((g0·q² − g1·p²)/(g2·q²)) for x = p/q
+        let (xn, xd) = (at.x.numer(), at.x.denom());
+        let q2 = xd * xd;
+        let en = &g.g0 * &q2 - &g.g1 * xn * xn;
+        let yb = if en.is_zero() {
+            XBall::zero()
+        } else {
+            let y = XBall::from_q(&Q::new_raw(en, &g.g2 * q2)).sqrt()?;
+            if at.ys < 0 { y.neg() } else { y }
+        };
+        let (u, v) = frame(&self.a);
+        let zb = |w: &[Z; 3]| -> [XBall; 3] { std::array::from_fn(|i| XBall::from_z(&w[i])) };
+        let (ub, vb, ab) = (zb(&u), zb(&v), zb(&self.a));
+        let xy: [XBall; 3] = std::array::from_fn(|i| xb.mul(&ub[i]).add(&yb.mul(&vb[i])));
+        let c3: [XBall; 3] =
+            std::array::from_fn(|i| XBall::from_q(&Q::new_raw(self.c[i].clone(), self.q.clone())));
+        let (p0, dir): ([XBall; 3], [XBall; 3]) = if r.cone {
+            (c3, std::array::from_fn(|i| ab[i].add(&xy[i])))
+        } else {
+            (std::array::from_fn(|i| c3[i].add(&xy[i])), ab)
+        };
+        let (bz, rz) = (r.beta.eval_ball(&xb, &yb), r.rho.eval_ball(&xb, &yb));
+        let sig = XBall::from_z(&r.sigma);
+        let qi = XBall::from_z(&self.q).recip()?;
+        let qb = bz.mul(&qi);
+        let (qa, qc) = if r.cone {
+            (rz, sig.mul(&qi).mul(&qi))
+        } else {
+            (sig, rz.mul(&qi).mul(&qi))
+        };
+        let sq = qb.mul(&qb).sub(&qa.mul(&qc)).sqrt()?;
+        let sq = if root > 0 { sq } else { sq.neg() };
+        let sb = qb.sign()?;
+        let t = if sb == 0 || -sb == root {
+            qb.neg().add(&sq).mul(&qa.recip()?)
+        } else {
+            qc.mul(&qb.neg().sub(&sq).recip()?)
+        };
+        let mut approx = [(0.0, 0.0); 3];
+        for i in 0..3 {
+            let x = p0[i].add(&t.mul(&dir[i]));
+            if !(x.m == 0.0 && x.r == 0.0 || tight(&x)) {
+                return None;
+            }
+            approx[i] = double_of(x);
+        }
+        Some(approx)
+    }
+
+    /// The exact data of the point over `Z[√D]/den`, unreduced, and `t`
+    /// when it is exact (`σ = 0`).
+    fn raw_point(&self, at: &RulingPoint) -> (RawPoint, Option<Zf>) {
+        let r = &self.rulings;
         // y = ys·√E, E = En/Ed: y = ys·√D/Ed with D = En·Ed
-        let e = g.y2(&at.x);
+        let e = r.gamma.y2(&at.x);
         let (d, root_d) = radicand(e.numer() * e.denom());
         let ed = e.denom().clone();
         let (xn, xd) = (at.x.numer().clone(), at.x.denom().clone());
@@ -842,12 +1000,12 @@ impl Rulings {
         };
         let xq = Zf::int(xn).div_z(&xd);
         let a3 = |w: &[Z; 3]| -> [Zf; 3] { std::array::from_fn(|i| Zf::int(w[i].clone())) };
-        let (u, v) = frame(&p.a);
-        let (uz, vz, az) = (a3(&u), a3(&v), a3(&p.a));
-        let c3: [Zf; 3] = std::array::from_fn(|i| Zf::int(p.c[i].clone()).div_z(&p.q));
+        let (u, v) = frame(&self.a);
+        let (uz, vz, az) = (a3(&u), a3(&v), a3(&self.a));
+        let c3: [Zf; 3] = std::array::from_fn(|i| Zf::int(self.c[i].clone()).div_z(&self.q));
         // x·u + y·v
         let xy: [Zf; 3] = std::array::from_fn(|i| xq.mul(&uz[i], &d).add(&y.mul(&vz[i], &d)));
-        let (p0, dir): ([Zf; 3], [Zf; 3]) = if self.cone {
+        let (p0, dir): ([Zf; 3], [Zf; 3]) = if r.cone {
             (c3, std::array::from_fn(|i| az[i].add(&xy[i])))
         } else {
             (std::array::from_fn(|i| c3[i].add(&xy[i])), az)
@@ -857,131 +1015,131 @@ impl Rulings {
         // so A = σ, B = β(z)/q, C = ρ(z)/q²; for a cone it is
         // s·q·(P0, 1) + r·(d, 0), so A = ρ(z), B = β(z)/q, C = σ/q² —
         // the values of xᵀMy on the homogeneous (P0, 1) and (d, 0)
-        let (bz, rz) = (self.beta.eval(&xq, &y, &d), self.rho.eval(&xq, &y, &d));
-        let sig = Zf::int(self.sigma.clone());
-        let q2 = &p.q * &p.q;
-        let qb = bz.div_z(&p.q);
-        let (qa, qc) = if self.cone {
+        let (bz, rz) = (r.beta.eval(&xq, &y, &d), r.rho.eval(&xq, &y, &d));
+        let sig = Zf::int(r.sigma.clone());
+        let q2 = &self.q * &self.q;
+        let qb = bz.div_z(&self.q);
+        let (qa, qc) = if r.cone {
             (rz, sig.div_z(&q2))
         } else {
             (sig, rz.div_z(&q2))
         };
-        let sd = if d.is_one() {
-            XBall::from_q(&Q::one())
-        } else {
-            XBall::from_z(&d)
-                .sqrt()
-                .ok_or_else(|| Error::internal("√D of a ruling point"))?
-        };
-        let ball = |x: &Zf| zf_ball(x, &sd, &d);
-        let (t_exact, root, t_ball) = if self.sigma.is_zero() {
-            // P's vertex on Q: the one other point of the ruling, rational in Q(√E)
-            let t = if self.cone {
+        // P's vertex on Q: the one other point of the ruling, rational in Q(√E)
+        let t = r.sigma.is_zero().then(|| {
+            if r.cone {
                 // C = 0: t = −2B/A
                 qb.scale(&Z::from(-2)).div(&qa, &d)
             } else {
                 // A = 0: t = −C/(2B)
                 qc.neg().div(&qb.scale(&Z::from(2)), &d)
-            };
-            let tb = ball(&t);
-            (Some(t), 0, tb)
-        } else {
-            let root = if self.cone { -at.sheet } else { at.sheet };
+            }
+        });
+        let point = RawPoint {
+            p0,
+            dir,
+            quadratic: [qa, qb, qc],
+            d,
+        };
+        (point, t)
+    }
+}
+
+/// The certified doubles of a point from its exact data (`t_exact` when
+/// `σ = 0`).  A coordinate that cancels (near 0 against its terms) is
+/// recomputed without cancellation, so that every bound is relative: with
+/// t exact, Xᵢ is exact in Z[√D]/den; otherwise A·Xᵢ = N + σ√M
+/// (N = A·P₀ᵢ − B·dᵢ, M = dᵢ²(B² − AC), σ = root·sign dᵢ), and when N and
+/// σ√M have opposite signs A·Xᵢ = (N² − M)/(N − σ√M), an exact numerator
+/// over a sum of two terms of one sign.
+fn exact_doubles(
+    raw: &RawPoint,
+    t_exact: Option<&Zf>,
+    root: i32,
+) -> Result<[(f64, f64); 3], Error> {
+    let RawPoint {
+        p0,
+        dir,
+        quadratic: [qa, qb, qc],
+        d,
+    } = raw;
+    let sd = if d.is_one() {
+        XBall::from_q(&Q::one())
+    } else {
+        XBall::from_z(d)
+            .sqrt()
+            .ok_or_else(|| Error::internal("√D of a ruling point"))?
+    };
+    let ball = |x: &Zf| zf_ball(x, &sd, d);
+    let t_ball = match t_exact {
+        Some(t) => ball(t),
+        None => {
             // B² − AC exactly (positive inside the arc), then its root
-            let disc = ball(&qb.mul(&qb, &d).sub(&qa.mul(&qc, &d)));
+            let disc = ball(&qb.mul(qb, d).sub(&qa.mul(qc, d)));
             let sq = disc
                 .sqrt()
                 .ok_or_else(|| Error::internal("a branch point off its arc"))?;
             let sq = if root > 0 { sq } else { sq.neg() };
             // t = (−B + root·√disc)/A, or C/(−B − root·√disc) when −B and
             // root·√disc have opposite signs (no cancellation either way)
-            let sb = qb.sign(&d);
-            let t = if sb == 0 || -sb == root {
-                let inv = ball(&qa)
+            let sb = qb.sign(d);
+            if sb == 0 || -sb == root {
+                let inv = ball(qa)
                     .recip()
                     .ok_or_else(|| Error::internal("A = 0 at a branch point"))?;
-                ball(&qb).neg().add(&sq).mul(&inv)
+                ball(qb).neg().add(&sq).mul(&inv)
             } else {
-                let den = ball(&qb).neg().sub(&sq);
+                let den = ball(qb).neg().sub(&sq);
                 let inv = den
                     .recip()
                     .ok_or_else(|| Error::internal("a branch point at infinity"))?;
-                ball(&qc).mul(&inv)
-            };
-            (None, root, t)
-        };
-        // Xᵢ = P₀ᵢ + t·dᵢ; a coordinate that cancels (near 0 against its
-        // terms) is recomputed without cancellation, so that every bound
-        // is relative: with t exact, Xᵢ is exact in Z[√D]/den; otherwise
-        // A·Xᵢ = N + σ√M (N = A·P₀ᵢ − B·dᵢ, M = dᵢ²(B² − AC), σ = root·sign dᵢ),
-        // and when N and σ√M have opposite signs A·Xᵢ = (N² − M)/(N − σ√M),
-        // an exact numerator over a sum of two terms of one sign
-        let mut approx = [(0.0, 0.0); 3];
-        for i in 0..3 {
-            let b = ball(&p0[i]).add(&t_ball.mul(&ball(&dir[i])));
-            let b = if tight(&b) {
-                b
-            } else if let Some(t) = &t_exact {
-                ball(&p0[i].add(&t.mul(&dir[i], &d)))
-            } else {
-                let n = qa.mul(&p0[i], &d).sub(&qb.mul(&dir[i], &d));
-                let m = dir[i]
-                    .mul(&dir[i], &d)
-                    .mul(&qb.mul(&qb, &d).sub(&qa.mul(&qc, &d)), &d);
-                let sqrt_m = ball(&m)
-                    .sqrt()
-                    .ok_or_else(|| Error::internal("a branch point off its arc"))?;
-                let sigma = root * dir[i].sign(&d);
-                let inv_a = ball(&qa)
-                    .recip()
-                    .ok_or_else(|| Error::internal("A = 0 at a branch point"))?;
-                let sn = n.sign(&d);
-                if sigma == 0 || sn == 0 || sn == sigma {
-                    // N and σ√M of one sign: no cancellation
-                    let s = if sigma < 0 { sqrt_m.neg() } else { sqrt_m };
-                    ball(&n).add(&s).mul(&inv_a)
-                } else {
-                    let norm = n.mul(&n, &d).sub(&m);
-                    if norm.is_zero() {
-                        XBall::from_q(&Q::zero())
-                    } else {
-                        let conj = if sigma > 0 {
-                            ball(&n).sub(&sqrt_m)
-                        } else {
-                            ball(&n).add(&sqrt_m)
-                        };
-                        let inv = conj
-                            .recip()
-                            .ok_or_else(|| Error::internal("a branch point at infinity"))?;
-                        ball(&norm).mul(&inv).mul(&inv_a)
-                    }
-                }
-            };
-            // beyond the range of doubles: ±∞ with an infinite bound, the
-            // sign that of the ball (relative radius < 2^-40), as for every
-            // other certified double (contract §4)
-            approx[i] = b.to_f64().unwrap_or((
-                if b.m < 0.0 {
-                    f64::NEG_INFINITY
-                } else {
-                    f64::INFINITY
-                },
-                f64::INFINITY,
-            ));
+                ball(qc).mul(&inv)
+            }
         }
-        Ok(CurvePoint {
-            raw: std::sync::Arc::new(RawPoint {
-                p0,
-                dir,
-                quadratic: [qa, qb, qc],
-                d: d.clone(),
-            }),
-            exact: std::sync::OnceLock::new(),
-            root,
-            t: t_exact.map(|t| t.to_qsqrt(&d)),
-            approx,
-        })
+    };
+    let mut approx = [(0.0, 0.0); 3];
+    for i in 0..3 {
+        let b = ball(&p0[i]).add(&t_ball.mul(&ball(&dir[i])));
+        let b = if tight(&b) {
+            b
+        } else if let Some(t) = t_exact {
+            ball(&p0[i].add(&t.mul(&dir[i], d)))
+        } else {
+            let n = qa.mul(&p0[i], d).sub(&qb.mul(&dir[i], d));
+            let m = dir[i]
+                .mul(&dir[i], d)
+                .mul(&qb.mul(qb, d).sub(&qa.mul(qc, d)), d);
+            let sqrt_m = ball(&m)
+                .sqrt()
+                .ok_or_else(|| Error::internal("a branch point off its arc"))?;
+            let sigma = root * dir[i].sign(d);
+            let inv_a = ball(qa)
+                .recip()
+                .ok_or_else(|| Error::internal("A = 0 at a branch point"))?;
+            let sn = n.sign(d);
+            if sigma == 0 || sn == 0 || sn == sigma {
+                // N and σ√M of one sign: no cancellation
+                let s = if sigma < 0 { sqrt_m.neg() } else { sqrt_m };
+                ball(&n).add(&s).mul(&inv_a)
+            } else {
+                let norm = n.mul(&n, d).sub(&m);
+                if norm.is_zero() {
+                    XBall::from_q(&Q::zero())
+                } else {
+                    let conj = if sigma > 0 {
+                        ball(&n).sub(&sqrt_m)
+                    } else {
+                        ball(&n).add(&sqrt_m)
+                    };
+                    let inv = conj
+                        .recip()
+                        .ok_or_else(|| Error::internal("a branch point at infinity"))?;
+                    ball(&norm).mul(&inv).mul(&inv_a)
+                }
+            }
+        };
+        approx[i] = double_of(b);
     }
+    Ok(approx)
 }
 
 // ------------------------------------------------- a common ruling (σ = 0)

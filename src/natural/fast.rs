@@ -65,15 +65,28 @@ impl Counts {
 }
 
 /// What the integer program concluded.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) enum Outcome {
     /// Decided: the class and counts, how (in words), and the case the
     /// constructions build from.
     Counts(Counts, &'static str, Case),
+    /// Decided on the projection conic of coplanar axes, in a tier that
+    /// knows the conics exactly: the construction starts from them
+    /// (predicates decide, constructions build — nothing computed twice).
+    Planar(Counts, &'static str, Case, Box<PlanarConics>),
     /// The intersection may contain a line: look for common rulings.
     Rulings,
     /// Not a case of the fast route.
     Fallback(&'static str),
+}
+
+/// The integer conics of a planar decision ([`planar`]): the projection
+/// conic `F` (divided by its content) and the squared heights `H` of the
+/// first quadric, in the frame of [`super::build_planar`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct PlanarConics {
+    pub f: [[BigInt; 3]; 3],
+    pub h1: [[BigInt; 3]; 3],
 }
 
 /// Which multiple root of `F(λ) = det(A − λB)` a decision used, so that a
@@ -1083,7 +1096,26 @@ fn planar<R: SignRing>(x: &QIn<R>, y: &QIn<R>, parallel: bool) -> Option<Option<
     if det3(&f).sign()? != 0 {
         return Some(None);
     }
-    Some(Some(planar_counts(&f, &h1, Case::Planar { parallel })?))
+    let mut f = f; // F matters up to a positive factor
+    R::divide_content(f.as_flattened_mut());
+    let out = planar_counts(&f, &h1, Case::Planar { parallel })?;
+    // the exact conics for the construction, when this tier has them
+    let exact = |m: &[[R; 3]; 3]| -> Option<[[BigInt; 3]; 3]> {
+        let mut out: [[BigInt; 3]; 3] = Default::default();
+        for i in 0..3 {
+            for j in 0..3 {
+                out[i][j] = m[i][j].exact()?;
+            }
+        }
+        Some(out)
+    };
+    Some(Some(match out {
+        Outcome::Counts(c, m, case) => match exact(&f).zip(exact(&h1)) {
+            Some((f, h1)) => Outcome::Planar(c, m, case, Box::new(PlanarConics { f, h1 })),
+            None => Outcome::Counts(c, m, case),
+        },
+        o => o,
+    }))
 }
 
 fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3], case: Case) -> Option<Outcome> {
@@ -1156,7 +1188,8 @@ fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3], case: Case) -> O
             }
         }
     }
-    let k = k?;
+    let mut k = k?; // a point or direction: up to a positive factor
+    R::divide_content(&mut k);
     if k[2].sign()? != 0 {
         let dd = f[0][1].mul(&f[0][1]).sub(&f[0][0].mul(&f[1][1]));
         let x = [r(&k[0]), r(&k[1]), r(&k[2])];
@@ -1221,7 +1254,9 @@ fn planar_counts<R: SignRing>(f: &[[R; 3]; 3], h: &[[R; 3]; 3], case: Case) -> O
         .add(&R::int(2).mul(&f[0][1]).mul(&pv[0].mul(&pv[1])))
         .add(&f[1][1].mul(&pv[1].mul(&pv[1])));
     let b = pv[0].mul(&f[0][2]).add(&pv[1].mul(&f[1][2]));
-    let c = f[2][2].clone();
+    let mut abc = [a, b, f[2][2].clone()]; // the roots σ alone matter
+    R::divide_content(&mut abc);
+    let [a, b, c] = abc;
     let w = [r(&k[0]), r(&k[1])];
     if a.sign()? == 0 {
         if b.sign()? == 0 {
@@ -1512,7 +1547,7 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
         Ok(r)
     };
     let (counts, method) = match out {
-        Outcome::Counts(c, m, _) => (c, m),
+        Outcome::Counts(c, m, _) | Outcome::Planar(c, m, _, _) => (c, m),
         Outcome::Fallback(why) => return fallback(why),
         Outcome::Rulings => return fallback("possible common ruling"),
     };
@@ -1542,8 +1577,9 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
 pub fn classify_prepared(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Error> {
     let (x, y) = (&a.prep, &b.prep);
     let (out, axes) = run_tiers(x, y);
-    let (counts, method, case) = match out {
-        Outcome::Counts(c, m, case) => (c, m, case),
+    let (counts, method, case, conics) = match out {
+        Outcome::Counts(c, m, case) => (c, m, case, None),
+        Outcome::Planar(c, m, case, conics) => (c, m, case, Some(conics)),
         Outcome::Fallback(why) => {
             let mut r = classify_complete(a.natural(), b.natural())?;
             r.notes.push(format!(
@@ -1558,7 +1594,8 @@ pub fn classify_prepared(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Er
             return Ok(r);
         }
     };
-    let (components, notes, member_planes) = super::construct::components(a, b, case)?;
+    let (components, notes, member_planes) =
+        super::construct::components(a, b, case, conics.as_deref())?;
     let built = Counts::of_components(&components);
     if case != Case::SameSurface && built != counts {
         return Err(Error::internal(format!(

@@ -65,6 +65,12 @@ pub(crate) trait SignRing: Clone {
     fn approx(&self) -> f64;
     /// The exact value, when this tier knows it.
     fn exact(&self) -> Option<BigInt>;
+    /// Divides the entries of a vector known up to a positive factor by
+    /// their content, where that is cheap and exact (big integers: the
+    /// degenerate conics of near-degenerate inputs carry contents of
+    /// thousands of bits, which every later product would drag along).
+    /// Signs and ratios are kept; the other tiers leave `xs` as it is.
+    fn divide_content(_xs: &mut [Self]) {}
 }
 
 /// `u = 2^-53`, the unit roundoff of `f64`.
@@ -282,6 +288,9 @@ impl SignRing for BigInt {
     }
     fn exact(&self) -> Option<BigInt> {
         Some(self.clone())
+    }
+    fn divide_content(xs: &mut [Self]) {
+        super::divide_content_z(xs);
     }
 }
 

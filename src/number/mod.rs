@@ -293,6 +293,26 @@ fn add_signed(a: &Q, b: &Q, negate: bool) -> Q {
     Q::new_raw(t / &g2, ad_g * (bd / g2))
 }
 
+/// Divides the integers `xs` by their content (the gcd of all, positive);
+/// nothing when they are all zero or the content is 1.
+pub(crate) fn divide_content_z(xs: &mut [Z]) {
+    let mut g = Z::zero();
+    for x in xs.iter() {
+        if g.is_one() {
+            return;
+        }
+        g = gcd_z(&g, x);
+    }
+    if g.is_zero() || g.is_one() {
+        return;
+    }
+    for x in xs.iter_mut() {
+        if !x.is_zero() {
+            *x = &*x / &g;
+        }
+    }
+}
+
 /// `gcd(|a|, |b|)`, fast when the sizes differ or a value fits a word.
 ///
 /// num-bigint's gcd is binary (Stein): every step shifts the whole
