@@ -250,7 +250,9 @@ fn zeros(g: &Gamma, r: &Reduced) -> Result<Vec<GPoint>, Error> {
 fn between(lo: &RealAlg, hi: &RealAlg) -> Q {
     let gap = |a: &RealAlg, b: &RealAlg| {
         let (x, y) = (a.interval().1, b.interval().0);
-        (x < y).then(|| simplest_rational_in(&x, &y))
+        crate::number::q_cmp(&x, &y)
+            .is_lt()
+            .then(|| simplest_rational_in(&x, &y))
     };
     if let Some(q) = gap(lo, hi) {
         return q;

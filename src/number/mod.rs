@@ -27,7 +27,7 @@ pub use sign::Sign;
 
 use num_bigint::{BigInt, Sign as BigSign};
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// Exact rational numbers (the coefficient field of every input).
 pub type Q = BigRational;
@@ -140,13 +140,23 @@ pub(crate) fn approx_decimal_ratio(n: &BigInt, d: &BigInt, digits: usize) -> Str
     let t = dm.trailing_zeros().unwrap_or(0) as usize;
     let odd = dm >> t;
     let q = loop {
-        let p = num_traits::pow(num_bigint::BigUint::from(10u32), sh.unsigned_abs() as usize);
+        // 10^k and the quotient's digits in u128 when they fit (k ≤ 38;
+        // the quotient has digits + 1 or + 2 digits): num-bigint's pow and
+        // to_str_radix were half of this function
+        let k = sh.unsigned_abs() as u32;
+        let p = match 10u128.checked_pow(k) {
+            Some(p) => num_bigint::BigUint::from(p),
+            None => num_traits::pow(num_bigint::BigUint::from(10u32), k as usize),
+        };
         let q = if sh >= 0 {
             ((an * p) >> t) / &odd
         } else {
             (an >> t) / (&odd * p)
         };
-        let q = q.to_str_radix(10);
+        let q = match q.to_u128() {
+            Some(v) => v.to_string(),
+            None => q.to_str_radix(10),
+        };
         if q.len() > digits {
             break q;
         }
@@ -235,6 +245,34 @@ pub fn q_new(n: Z, d: Z) -> Q {
         d = -d;
     }
     Q::new_raw(n, d)
+}
+
+/// `a = b` by one cross product each way: num-rational's `==` goes
+/// through its `cmp`, a continued-fraction recursion of divisions (most of
+/// the cost of printing a component's doubles).  Reduced or not.
+pub(crate) fn q_eq(a: &Q, b: &Q) -> bool {
+    if a.denom() == b.denom() {
+        return a.numer() == b.numer();
+    }
+    a.numer() * b.denom() == b.numer() * a.denom()
+}
+
+/// `a` against `b` by one cross product each way (positive denominators;
+/// else num-rational's order): num-rational's `cmp` is a continued-fraction
+/// recursion of divisions, several times dearer on the dyadic ends of
+/// isolating intervals.
+pub(crate) fn q_cmp(a: &Q, b: &Q) -> std::cmp::Ordering {
+    if !(a.denom().is_positive() && b.denom().is_positive()) {
+        return a.cmp(b);
+    }
+    if a.denom() == b.denom() {
+        return a.numer().cmp(b.numer());
+    }
+    let (sa, sb) = (a.numer().sign(), b.numer().sign());
+    if sa != sb {
+        return sa.cmp(&sb);
+    }
+    (a.numer() * b.denom()).cmp(&(b.numer() * a.denom()))
 }
 
 /// `a·b` in lowest terms, cross-reducing with [`gcd_z`] (as `Ratio`'s
@@ -524,6 +562,49 @@ mod tests {
             approx_decimal(&Q::from_integer(num_traits::pow(BigInt::from(10), 30)), 3),
             "1e30"
         );
+    }
+
+    proptest::proptest! {
+        /// The cross-product order and equality agree with num-rational's,
+        /// reduced or not (one denominator shared, signs mixed).
+        #[test]
+        fn q_cmp_and_q_eq_agree_with_ratio(
+            a in -10_000i64..10_000, b in 1i64..10_000,
+            c in -10_000i64..10_000, d in 1i64..10_000,
+            k in 1i64..50, shift in 0usize..200,
+        ) {
+            let big = |v: i64| BigInt::from(v) << shift;
+            let (x, y) = (Q::new(big(a), big(b)), Q::new(big(c), big(d)));
+            let xr = Q::new_raw(big(a) * k, big(b) * k); // unreduced
+            proptest::prop_assert_eq!(q_cmp(&x, &y), x.cmp(&y));
+            proptest::prop_assert_eq!(q_cmp(&xr, &y), x.cmp(&y));
+            proptest::prop_assert_eq!(q_eq(&xr, &x), true);
+            proptest::prop_assert_eq!(q_eq(&x, &y), x == y);
+            let z = Q::new_raw(big(c), big(b)); // the same denominator
+            proptest::prop_assert_eq!(q_cmp(&Q::new_raw(big(a), big(b)), &z), x.cmp(&z));
+        }
+
+        /// Dividing by the content leaves a primitive vector, the same up
+        /// to a positive factor.
+        #[test]
+        fn divide_content_leaves_a_primitive_multiple(
+            v in proptest::collection::vec(-1_000i64..1_000, 1..8),
+            g in 1i64..1_000, shift in 0usize..300,
+        ) {
+            let orig: Vec<BigInt> = v.iter().map(|&x| (BigInt::from(x) * g) << shift).collect();
+            let mut w = orig.clone();
+            divide_content_z(&mut w);
+            let c = w.iter().fold(BigInt::zero(), |acc, x| acc.gcd(x));
+            proptest::prop_assert!(c.is_zero() || c.is_one());
+            if let Some(i) = orig.iter().position(|x| !x.is_zero()) {
+                // w = orig / m for one positive m
+                let m = Q::new(orig[i].clone(), w[i].clone());
+                proptest::prop_assert!(m.is_positive());
+                for (o, x) in orig.iter().zip(&w) {
+                    proptest::prop_assert_eq!(Q::from_integer(o.clone()), &m * Q::from_integer(x.clone()));
+                }
+            }
+        }
     }
 
     #[test]

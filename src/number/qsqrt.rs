@@ -280,7 +280,7 @@ impl QSqrt {
             let ball = XBall::from_q(&self.a);
             // a double exactly: bound 0
             if let Some((v, _)) = ball.to_f64()
-                && super::double_value(v).is_some_and(|x| x == self.a)
+                && super::double_value(v).is_some_and(|x| super::q_eq(&x, &self.a))
             {
                 return (v, 0.0);
             }

@@ -504,10 +504,11 @@ impl RealAlg {
                     let (alo, ahi) = a.interval();
                     let (blo, bhi) = b.interval();
                     // open intervals: a < ahi <= blo < b
-                    if ahi <= blo {
+                    let le = |x: &Q, y: &Q| crate::number::q_cmp(x, y) != Ordering::Greater;
+                    if le(&ahi, &blo) {
                         return Ordering::Less;
                     }
-                    if bhi <= alo {
+                    if le(&bhi, &alo) {
                         return Ordering::Greater;
                     }
                     if !equal_checked && g.degree().unwrap_or(0) > 0 {

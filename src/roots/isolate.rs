@@ -718,7 +718,8 @@ pub fn isolate_squarefree(sq: &ZPoly) -> Vec<RootInterval> {
 /// case: VCA produces them) are bisected in integer arithmetic, without the
 /// gcd of every rational operation.
 pub fn refine(p: &ZPoly, iv: &mut RootInterval, width: &Q) {
-    if iv.is_exact() || &(&iv.hi - &iv.lo) <= width {
+    let wider = |iv: &RootInterval| crate::number::q_cmp(&(&iv.hi - &iv.lo), width).is_gt();
+    if iv.is_exact() || !wider(iv) {
         return;
     }
     if let Some(br) = DyadicBracket::of(iv) {
@@ -727,7 +728,7 @@ pub fn refine(p: &ZPoly, iv: &mut RootInterval, width: &Q) {
     }
     let two = Q::from_integer(BigInt::from(2));
     let s_lo = p.sign_at(&iv.lo);
-    while &(&iv.hi - &iv.lo) > width {
+    while wider(iv) {
         let m = (&iv.lo + &iv.hi) / &two;
         let s = p.sign_at(&m);
         if s == 0 {
