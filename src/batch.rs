@@ -274,6 +274,12 @@ impl Default for BatchOptions {
 /// flushed, while other lines are in flight.
 const FLUSH_DELAY: std::time::Duration = std::time::Duration::from_millis(1);
 
+/// A worker hands its answers over when it holds this many, when no line
+/// is waiting for it, or when the first it holds is [`HOLD_TIME`] old.
+pub const HOLD_LINES: usize = 8;
+/// See [`HOLD_LINES`].
+pub const HOLD_TIME: std::time::Duration = std::time::Duration::from_millis(1);
+
 /// Look-ahead per worker thread (lines) of [`BatchOptions::default`].
 pub const DEFAULT_LOOKAHEAD: usize = 64;
 
@@ -454,7 +460,9 @@ fn progress_bar(opts: &BatchOptions) -> Option<indicatif::ProgressBar> {
 ///
 /// * each answer is written as soon as it and every earlier line are done,
 ///   and flushed at once when no other line is in flight (else within
-///   1 ms);
+///   1 ms); while more lines are queued a worker hands its answers over
+///   up to [`HOLD_LINES`] at a time (the first waits at most
+///   [`HOLD_TIME`] or one more line's time);
 /// * the lines are answered by `opts.threads` workers, each under its own
 ///   `opts.budget`; at most `opts.lookahead` lines are read ahead of the
 ///   last one written, so a slow line delays only the lines after it, and
@@ -494,7 +502,7 @@ pub fn run_batch_with(
         cancel: cancel.clone(),
     };
     let (job_tx, job_rx) = mpsc::channel::<Job>();
-    let (ans_tx, ans_rx) = mpsc::channel::<Job>();
+    let (ans_tx, ans_rx) = mpsc::channel::<Vec<Job>>();
     let reader = {
         let window = window.clone();
         std::thread::spawn(move || read_lines(input, job_tx, &window, lookahead))
@@ -504,13 +512,49 @@ pub fn run_batch_with(
         let (jobs, answers, budget) = (job_rx.clone(), ans_tx.clone(), budget.clone());
         let echo = opts.echo;
         std::thread::spawn(move || {
+            // answers go to the writer a few at a time (one wake-up of the
+            // writer per handful of lines, not per line: the futex calls
+            // and context switches were an eighth of a run's CPU time);
+            // what is held goes at once when no line is waiting, so a
+            // held answer waits at most HOLD_TIME or the next line's time
+            let mut held: Vec<Job> = Vec::new();
+            let mut since = std::time::Instant::now();
             loop {
-                let job = jobs.lock().unwrap_or_else(|e| e.into_inner()).recv();
-                let Ok((i, line, bytes)) = job else { break };
+                // a worker never waits while it holds answers (the writer may
+                // be waiting for them): the queue counts as empty while the
+                // other worker waits on it
+                let next = match jobs.try_lock() {
+                    Ok(rx) => rx.try_recv(),
+                    Err(std::sync::TryLockError::WouldBlock) => Err(mpsc::TryRecvError::Empty),
+                    Err(std::sync::TryLockError::Poisoned(e)) => e.into_inner().try_recv(),
+                };
+                let job = match next {
+                    Ok(job) => job,
+                    Err(mpsc::TryRecvError::Disconnected) => break,
+                    Err(mpsc::TryRecvError::Empty) => {
+                        if !held.is_empty() && answers.send(std::mem::take(&mut held)).is_err() {
+                            return;
+                        }
+                        match jobs.lock().unwrap_or_else(|e| e.into_inner()).recv() {
+                            Ok(job) => job,
+                            Err(_) => break,
+                        }
+                    }
+                };
+                let (i, line, bytes) = job;
                 let answer = answer_text(&line, &budget, echo);
-                if answers.send((i, answer, bytes)).is_err() {
-                    break;
+                if held.is_empty() {
+                    since = std::time::Instant::now();
                 }
+                held.push((i, answer, bytes));
+                if (held.len() >= HOLD_LINES || since.elapsed() >= HOLD_TIME)
+                    && answers.send(std::mem::take(&mut held)).is_err()
+                {
+                    return;
+                }
+            }
+            if !held.is_empty() {
+                let _ = answers.send(held);
             }
         });
     }
@@ -537,8 +581,10 @@ pub fn run_batch_with(
                 Err(_) => break,
             }
         };
-        if let Some((i, answer, bytes)) = next {
-            pending.insert(i, (answer, bytes));
+        if let Some(batch) = next {
+            for (i, answer, bytes) in batch {
+                pending.insert(i, (answer, bytes));
+            }
             loop {
                 while let Some((answer, bytes)) = pending.remove(&written) {
                     if let Err(e) = writeln!(out, "{answer}") {
@@ -554,8 +600,10 @@ pub fn run_batch_with(
                 }
                 // more answers already done: write them before flushing
                 match ans_rx.try_recv() {
-                    Ok((i, answer, bytes)) => {
-                        pending.insert(i, (answer, bytes));
+                    Ok(batch) => {
+                        for (i, answer, bytes) in batch {
+                            pending.insert(i, (answer, bytes));
+                        }
                     }
                     Err(_) => break,
                 }
