@@ -21,13 +21,13 @@
 //! compare the two.
 
 use super::exact::{EPoint, Exact, epoint};
-use super::fast::{PlanarConics, Sq, det2, height_conic};
+use super::fast::{PlanarConics, Sq, det2, projection_conics};
 use super::planar::{drop_points_on_lines, offset_point, push_unique};
 use super::prepared::{QIn, point_difference};
 use super::result::{Component, ConicKind, Plane, PointKind};
 use super::zsqrt::{Zf, radicand};
 use crate::geom::vec3::V3;
-use crate::number::filter::{SignRing, all_zero, cross, dot};
+use crate::number::filter::{all_zero, cross, dot};
 use crate::number::{Q, QSqrt};
 use num_bigint::BigInt as Z;
 use num_traits::{One, Signed, Zero};
@@ -495,20 +495,8 @@ fn conjugate_points(fr: &Frame, h: &[[Z; 3]; 3], x: &[Z; 3]) -> Vec<Component> {
 /// `F` (divided by its content: it matters up to a positive factor, and
 /// near-degenerate inputs give contents of thousands of bits) and `H` of
 /// the module docs, as [`super::fast`]'s decision computes them.
-fn conics(x: &QIn<Z>, y: &QIn<Z>, parallel: bool, qq: &Z) -> PlanarConics {
-    let dv = point_difference(x, y);
-    let e2 = if parallel { dv.clone() } else { y.a.clone() };
-    let e1s: [Z; 3] = std::array::from_fn(|i| qq * &x.a[i]);
-    let e2s: [Z; 3] = std::array::from_fn(|i| qq * &e2[i]);
-    let zero: [Z; 3] = std::array::from_fn(|_| Z::zero());
-    let negd: [Z; 3] = std::array::from_fn(|i| -&dv[i]);
-    let h1 = height_conic(x, &[e1s.clone(), e2s.clone(), zero], qq);
-    let h2 = height_conic(y, &[e1s, e2s, negd], qq);
-    let k1 = dot(&x.a, &x.a) * &x.pd;
-    let k2 = dot(&y.a, &y.a) * &y.pd;
-    let mut f: [[Z; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| SignRing::sub(&k2.mul(&h1[i][j]), &k1.mul(&h2[i][j])))
-    });
+fn conics(x: &QIn<Z>, y: &QIn<Z>, parallel: bool) -> PlanarConics {
+    let (mut f, h1) = projection_conics(x, y, parallel);
     crate::number::divide_content_z(f.as_flattened_mut());
     PlanarConics { f, h1 }
 }
@@ -535,7 +523,7 @@ pub(crate) fn planar_components(
     let PlanarConics { f, h1 } = match decided {
         Some(c) => c,
         None => {
-            computed = conics(x, y, parallel, &qq);
+            computed = conics(x, y, parallel);
             &computed
         }
     };
@@ -630,8 +618,7 @@ mod tests {
             let super::super::fast::Case::Planar { parallel } = case else {
                 panic!("{sa} / {sb}: {case:?}");
             };
-            let qq = &x.q * &y.q;
-            let c = conics(&x, &y, parallel, &qq);
+            let c = conics(&x, &y, parallel);
             assert_eq!(*got, c, "{sa} / {sb}");
             let g =
                 c.f.iter()

@@ -1079,7 +1079,15 @@ pub(crate) fn height_conic<R: SignRing>(x: &QIn<R>, e: &[[R; 3]; 3], qq: &R) -> 
 /// Coplanar distinct axes: `None` inside when the projection conic does not
 /// factor (then the pencil decides), else the planar counts of
 /// [`super::planar::planar_components`].
-fn planar<R: SignRing>(x: &QIn<R>, y: &QIn<R>, parallel: bool) -> Option<Option<Outcome>> {
+/// The projection conic `F` of two quadrics with coplanar axes and the
+/// squared heights `H` of the first, in the frame of
+/// [`super::build_planar`] (`e2` the second axis, or `P2 − P1` for
+/// parallel axes): `F = κ2·H1 − κ1·H2`.
+pub(crate) fn projection_conics<R: SignRing>(
+    x: &QIn<R>,
+    y: &QIn<R>,
+    parallel: bool,
+) -> ([[R; 3]; 3], [[R; 3]; 3]) {
     let d = point_difference(x, y);
     let qq = x.q.mul(&y.q);
     let e2 = if parallel { d.clone() } else { y.a.clone() };
@@ -1093,6 +1101,11 @@ fn planar<R: SignRing>(x: &QIn<R>, y: &QIn<R>, parallel: bool) -> Option<Option<
     let k2 = dot(&y.a, &y.a).mul(&y.pd);
     let f: [[R; 3]; 3] =
         std::array::from_fn(|i| std::array::from_fn(|j| k2.mul(&h1[i][j]).sub(&k1.mul(&h2[i][j]))));
+    (f, h1)
+}
+
+fn planar<R: SignRing>(x: &QIn<R>, y: &QIn<R>, parallel: bool) -> Option<Option<Outcome>> {
+    let (f, h1) = projection_conics(x, y, parallel);
     if det3(&f).sign()? != 0 {
         return Some(None);
     }
