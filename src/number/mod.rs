@@ -12,6 +12,7 @@
 pub(crate) mod filter;
 pub mod fixed;
 pub(crate) mod float;
+pub(crate) mod lehmer;
 pub(crate) mod modkernel;
 pub mod modular;
 mod parse;
@@ -355,11 +356,11 @@ pub(crate) fn divide_content_z(xs: &mut [Z]) {
 ///
 /// num-bigint's gcd is binary (Stein): every step shifts the whole
 /// operands, so `gcd(huge, small)` costs as much as `gcd(huge, huge)`.
-/// Here unbalanced operands take a Euclidean remainder step first (one
-/// division shrinks the larger to the size of the smaller), and word-size
-/// operands finish in native arithmetic; only balanced multi-word pairs go
-/// to num-bigint.  Content computations (`gcd(g, cᵢ)` with a small running
-/// g) become one short division per coefficient.
+/// Here word-size operands finish in native arithmetic, the twos come out
+/// by shifts, and the rest is Lehmer's gcd on limbs ([`lehmer`]: blocks of
+/// about 62 bits of quotients applied in one pass, a Euclidean remainder
+/// when the sizes differ).  Content computations (`gcd(g, cᵢ)` with a small
+/// running g) become one short division per coefficient.
 pub fn gcd_z(a: &Z, b: &Z) -> Z {
     use num_bigint::BigUint;
     use num_traits::ToPrimitive;
@@ -380,101 +381,14 @@ pub fn gcd_z(a: &Z, b: &Z) -> Z {
         a.trailing_zeros().unwrap_or(0),
         b.trailing_zeros().unwrap_or(0),
     );
-    let (mut x, mut y): (BigUint, BigUint) = (a.magnitude() >> ta, b.magnitude() >> tb);
+    let (x, y): (BigUint, BigUint) = (a.magnitude() >> ta, b.magnitude() >> tb);
     let t = ta.min(tb);
-    let twos = |g: BigUint| -> Z { Z::from(if t == 0 { g } else { g << t }) };
-    loop {
-        if y.is_zero() {
-            return twos(x);
-        }
-        if x.is_zero() {
-            return twos(y);
-        }
-        if let Some(v) = y.to_u64() {
-            let u = if let Some(u) = x.to_u64() {
-                u
-            } else {
-                (&x % v).to_u64().unwrap_or(0)
-            };
-            return twos(BigUint::from(gcd_u64(u, v)));
-        }
-        if let Some(u) = x.to_u64() {
-            let v = (&y % u).to_u64().unwrap_or(0);
-            return twos(BigUint::from(gcd_u64(u, v)));
-        }
-        if x < y {
-            std::mem::swap(&mut x, &mut y);
-        }
-        // balanced operands: Lehmer's step; else (or when it certifies no
-        // quotient) one Euclidean remainder
-        if x.bits() - y.bits() >= 16 || !lehmer_step(&mut x, &mut y) {
-            x %= &y;
-            std::mem::swap(&mut x, &mut y);
-        }
-    }
-}
-
-/// One step of Lehmer's gcd (Knuth, TAOCP vol. 2, §4.5.2, Algorithm L) on
-/// `x ≥ y ≥ 2^64`: Euclid's quotients are computed on the leading 63 bits
-/// of both, with the cofactors `(a, b; c, d)` tracking the two extreme
-/// ratios the truncation allows; a quotient is used only when both
-/// extremes give the same one, so the quotients are those of the full
-/// numbers.  Then `(x, y) ← (a·x + b·y, c·x + d·y)`, two consecutive
-/// remainders of the full sequence, for four word-size products.  `false`
-/// when not even the first quotient is certified.
-fn lehmer_step(x: &mut num_bigint::BigUint, y: &mut num_bigint::BigUint) -> bool {
-    let Some((a, b, c, d)) = lehmer_cofactors(x, y) else {
-        return false;
-    };
-    // a·x + b·y with a, b of opposite signs (likewise c, d): both results
-    // are remainders of Euclid's sequence, hence non-negative
-    let comb = |p: i128, q: i128| -> num_bigint::BigUint {
-        let (pm, qm) = (p.unsigned_abs() as u64, q.unsigned_abs() as u64);
-        if q <= 0 {
-            &*x * pm - &*y * qm
-        } else {
-            &*y * qm - &*x * pm
-        }
-    };
-    let (nx, ny) = (comb(a, b), comb(c, d));
-    *x = nx;
-    *y = ny;
-    true
-}
-
-/// The cofactors `(a, b; c, d)` of one Lehmer step on `x ≥ y ≥ 2^64` (see
-/// [`lehmer_step`]): `(a·x + b·y, c·x + d·y)` are two consecutive
-/// remainders of Euclid's sequence on `(x, y)`, and the same matrix maps
-/// the Bézout cofactors along.  `None` when not even the first quotient is
-/// certified.
-pub(crate) fn lehmer_cofactors(
-    x: &num_bigint::BigUint,
-    y: &num_bigint::BigUint,
-) -> Option<(i128, i128, i128, i128)> {
-    let shift = x.bits().saturating_sub(63);
-    // ⌊z / 2^shift⌋ < 2^63
-    let top = |z: &num_bigint::BigUint| i128::from(xball::word_at(z, shift) & (u64::MAX >> 1));
-    let (mut u, mut v) = (top(x), top(y));
-    let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
-    loop {
-        let (den1, den2) = (v + c, v + d);
-        if den1 <= 0 || den2 <= 0 || u + a < 0 || u + b < 0 {
-            break;
-        }
-        // all four below 2^64 and non-negative: word divisions
-        let q = ((u + a) as u64 / den1 as u64) as i128;
-        if q != ((u + b) as u64 / den2 as u64) as i128 {
-            break;
-        }
-        (a, c) = (c, a - q * c);
-        (b, d) = (d, b - q * d);
-        (u, v) = (v, u - q * v);
-    }
-    (b != 0).then_some((a, b, c, d))
+    let g = lehmer::gcd(&x, &y);
+    Z::from(if t == 0 { g } else { g << t })
 }
 
 /// Binary gcd of machine words.
-fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+pub(crate) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
     if a == 0 {
         return b;
     }

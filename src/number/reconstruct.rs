@@ -577,7 +577,7 @@ pub fn rational_reconstruction(a: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt
         if r1.bits() > bound_bits + 128
             && r0.bits() - r1.bits() < 16
             && let Some((a, b, c, d)) =
-                crate::number::lehmer_cofactors(r0.magnitude(), r1.magnitude())
+                crate::number::lehmer::cofactors(r0.magnitude(), r1.magnitude())
         {
             let lin = |p: i128, q: i128, x: &BigInt, y: &BigInt| -> BigInt {
                 x * BigInt::from(p) + y * BigInt::from(q)
