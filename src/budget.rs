@@ -4,29 +4,34 @@
 //! resultants, sweeps).
 //!
 //! Key idea: the budget of the running operation lives in a thread-local
-//! slot set by [`run`].  The long loops call [`check`] (amortised: a
-//! countdown, the clock is read every [`CHECK_EVERY`] calls), or
-//! [`check_now`] in coarse loops, and [`check_size`] where objects grow.
-//! When a limit is hit, the check unwinds to the enclosing [`run`] with an
-//! [`Exhausted`] payload (through [`std::panic::resume_unwind`], which does
-//! not call the panic hook), and `run` returns `Err(Exhausted)`.  No kernel
-//! function needs a `Result` for this, and nothing computed under an
-//! exhausted budget escapes.  Outside any `run` the checks cost one
-//! thread-local read and never fail.
+//! slot set by [`run`].  The long loops call the engine's internal checks
+//! (`check`, amortised: a countdown, the clock is read every
+//! [`CHECK_EVERY`] calls; `check_now` in coarse loops; `check_size` where
+//! objects grow).  When a limit is hit, the check unwinds to the enclosing
+//! [`run`] with an [`Exhausted`] payload (through
+//! [`std::panic::resume_unwind`], which does not call the panic hook), and
+//! `run` returns `Err(Exhausted)`.  No kernel function needs a `Result` for
+//! this, and nothing computed under an exhausted budget escapes.  Outside
+//! any `run` the checks cost one thread-local read and never fail.  A user
+//! gives a budget through the options of a call
+//! ([`crate::TangentOptions::with_budget`],
+//! [`crate::ClassifyOptions::with_budget`], the `_with` functions); running
+//! out is an answer (`undecided`, kind `budget`).
 //!
 //! This needs the default `panic = "unwind"`; a program built with
 //! `panic = "abort"` aborts when a budget runs out.
 //!
 //! ```
-//! use quadsect::budget::{self, Budget, Limit};
+//! use quadsect::{Budget, Ellipsoid, Limit, TangentOptions, Verdict};
+//! use quadsect::tangent::Undecided;
 //! use std::time::Duration;
+//! let e = Ellipsoid::new(&"x^2 + 2y^2 + 3z^2 - 1".parse()?)?;
+//! let s = "x^3 + y^2*z - 1".parse()?;
 //! let b = Budget::unlimited().with_time_limit(Some(Duration::ZERO));
-//! let r = budget::run(&b, || {
-//!     loop {
-//!         budget::check_now();
-//!     }
-//! });
-//! assert_eq!(r.unwrap_err().limit(), Limit::Time);
+//! let r = quadsect::decide_with(&e, &s, &TangentOptions::with_budget(b))?;
+//! assert_eq!(r.verdict(), Verdict::Undecided);
+//! assert!(matches!(r.undecided(), Some(Undecided::Budget(x)) if x.limit() == Limit::Time));
+//! # Ok::<(), quadsect::Error>(())
 //! ```
 
 use std::cell::{Cell, RefCell};
@@ -36,7 +41,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, OnceLock};
 use std::time::{Duration, Instant};
 
-/// How many calls of [`check`] share one reading of the clock.
+/// How many calls of `check` share one reading of the clock.
 pub const CHECK_EVERY: u32 = 64;
 
 /// Default wall-time limit of one CLI operation (or one batch line).
@@ -44,13 +49,13 @@ pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
 /// Default memory limit of one CLI operation (or one batch line), in bytes:
 /// the growth of the memory probe's count during the operation (see
 /// [`set_memory_probe`]; the CLI counts per thread), and the largest
-/// estimated size of one intermediate object ([`check_size`]).
+/// estimated size of one intermediate object (`check_size`).
 pub const DEFAULT_MEMORY_LIMIT: usize = 1 << 30;
 /// Default largest number of terms of an intermediate polynomial (or
-/// entries of a Gröbner basis / matrix) checked by [`check_size`].
+/// entries of a Gröbner basis / matrix) checked by `check_size`.
 pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
 /// Default largest bit size of an intermediate coefficient checked by
-/// [`check_size`].
+/// `check_size`.
 pub const DEFAULT_MAX_BITS: u64 = 4_000_000;
 
 /// Which limit ran out.
@@ -336,7 +341,7 @@ pub fn run<T>(budget: &Budget, f: impl FnOnce() -> T) -> Result<T, Exhausted> {
 /// would exceed a size limit, so that the main computation goes on.  The
 /// other limits (time, memory, cancellation) end the whole operation as
 /// usual.  Outside any [`run`], simply `Some(f())`.
-pub fn run_optional<T>(f: impl FnOnce() -> T) -> Option<T> {
+pub(crate) fn run_optional<T>(f: impl FnOnce() -> T) -> Option<T> {
     if !is_active() {
         return Some(f());
     }
@@ -352,7 +357,7 @@ pub fn run_optional<T>(f: impl FnOnce() -> T) -> Option<T> {
 /// certificate cannot spend the whole operation's time; the operation's
 /// own limits (its deadline included) end it as usual.  The cap holds
 /// outside any [`run`] too.
-pub fn run_optional_for<T>(cap: Duration, f: impl FnOnce() -> T) -> Option<T> {
+pub(crate) fn run_optional_for<T>(cap: Duration, f: impl FnOnce() -> T) -> Option<T> {
     match run(&Budget::unlimited().with_time_limit(Some(cap)), f) {
         Ok(v) => Some(v),
         Err(e) if e.limit() == Limit::Size => None,
@@ -372,7 +377,7 @@ fn deadline_passed() -> bool {
 }
 
 /// True when an operation with a budget is running on this thread.
-pub fn is_active() -> bool {
+pub(crate) fn is_active() -> bool {
     ACTIVE.with(|a| a.borrow().is_some())
 }
 
@@ -380,7 +385,7 @@ pub fn is_active() -> bool {
 /// [`CHECK_EVERY`] calls.  Put it in inner loops; unwinds to [`run`] when
 /// a limit ran out.
 #[inline]
-pub fn check() {
+pub(crate) fn check() {
     let n = COUNTDOWN.with(|c| {
         let n = c.get().saturating_sub(1);
         c.set(n);
@@ -395,7 +400,7 @@ pub fn check() {
 /// Numbers of more bits than this make one arithmetic operation expensive
 /// enough (a gcd of two such numbers takes milliseconds) that
 /// [`check_for`] reads the clock at once instead of amortising.
-pub const LARGE_BITS: u64 = 1 << 14;
+pub(crate) const LARGE_BITS: u64 = 1 << 14;
 
 /// [`check`] next to an operation on numbers of `bits` bits (or a step of
 /// about that much work: bits times the number of operations of a matrix
@@ -404,7 +409,7 @@ pub const LARGE_BITS: u64 = 1 << 14;
 /// amortised count alone would let 64 slow steps pass between two
 /// readings of the clock.
 #[inline]
-pub fn check_for(bits: u64) {
+pub(crate) fn check_for(bits: u64) {
     if bits > LARGE_BITS {
         check_now();
     } else {
@@ -414,7 +419,7 @@ pub fn check_for(bits: u64) {
 
 /// Checks the clock, the cancellation flag and the memory probe now (for
 /// coarse loops whose iterations may take long).
-pub fn check_now() {
+pub(crate) fn check_now() {
     let hit = ACTIVE.with(|a| {
         let a = a.borrow();
         let a = a.as_ref()?;
@@ -467,7 +472,7 @@ const TERM_BYTES: u128 = 48;
 /// The estimates passed here are upper bounds computed from the operands
 /// (a product of polynomials with `a` and `b` terms has at most `a · b`
 /// terms), so an object is refused before the memory is spent.
-pub fn check_size(what: &str, terms: usize, bits: u64) {
+pub(crate) fn check_size(what: &str, terms: usize, bits: u64) {
     let hit = ACTIVE.with(|a| {
         let a = a.borrow();
         let a = a.as_ref()?;

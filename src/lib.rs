@@ -54,14 +54,16 @@
 //! ## Module map
 //!
 //! The data flows one way — text → surfaces → polynomials → elimination →
-//! root counting → verdict → report:
+//! root counting → verdict → report; each floor imports only the floors
+//! below it (no circle between folders):
 //!
 //! | layer | what it holds |
 //! |---|---|
-//! | `number` | exact scalars: rationals, Q(√d) ([`QSqrt`]), [`Sign`], modular and fixed-width integers |
-//! | `poly` | [`Polynomial`] (sparse, over Q), [`IntPoly`] (dense, over Z), the parser |
-//! | `elim` | resultants, subresultants, Gröbner bases, quotient algebras |
-//! | `roots` | Sturm sequences, Descartes/VCA isolation, [`RealAlg`], RUR |
+//! | `number` | exact scalars: rationals, Q(√d) ([`QSqrt`]), [`Sign`], word prime fields, the CRT, rational reconstruction, Lehmer's gcd |
+//! | `poly` | [`Polynomial`] (sparse, over Q), [`IntPoly`] (dense, over Z), the parser, square-free parts, polynomials over `F_p` |
+//! | `elim` | resultants: Sylvester, subresultants, multi-modular, the values of a rational function at the roots of a polynomial |
+//! | `roots` | real roots of univariate integer polynomials: Sturm sequences, Descartes/VCA isolation, [`RealAlg`], enclosures |
+//! | `system` | zero-dimensional systems in x, y, z: Gröbner bases over Q and F_p, the quotient algebra, the RUR by three routes and its exact check, certified boxes (Krawczyk, the census) |
 //! | `geom` | the shared geometry floor: vectors, matrices, quadric forms, rigid motions |
 //! | [`tangent`], [`natural`] | the two domains (siblings on `geom`, never importing each other) |
 //! | `report` | all formatting: JSON (feature `serde`) and human text |
@@ -168,6 +170,7 @@ mod request;
 mod roots;
 #[cfg(feature = "serde")]
 mod serde_impls;
+mod system;
 pub mod tangent;
 
 #[cfg(test)]

@@ -240,13 +240,27 @@ mod tests {
 
     #[test]
     fn cancel_reaches_the_budget_flag() {
+        // a decision under the options' budget: cancelled, it stops at its
+        // first budget check with the limit `cancelled`
+        let decide = |o: *mut qs_options| {
+            let s: engine::Polynomial = "x^3 + y^2*z - 1".parse().unwrap();
+            let e = engine::Ellipsoid::new(&"x^2 + 2y^2 + 3z^2 - 1".parse().unwrap()).unwrap();
+            let opts = engine::TangentOptions::with_budget(unsafe { budget_of(o) });
+            engine::decide_with(&e, &s, &opts).unwrap()
+        };
         let o = qs_options_new();
         unsafe {
             qs_options_cancel(o);
-            let r = engine::budget::run(&budget_of(o), engine::budget::check_now);
-            assert_eq!(r.unwrap_err().limit(), engine::Limit::Cancelled);
+            let r = decide(o);
+            assert_eq!(r.verdict(), engine::Verdict::Undecided);
+            match r.undecided() {
+                Some(engine::tangent::Undecided::Budget(e)) => {
+                    assert_eq!(e.limit(), engine::Limit::Cancelled)
+                }
+                other => panic!("not cancelled: {other:?}"),
+            }
             qs_options_reset_cancel(o);
-            assert!(engine::budget::run(&budget_of(o), engine::budget::check_now).is_ok());
+            assert_ne!(decide(o).verdict(), engine::Verdict::Undecided);
             qs_options_cancel(ptr::null());
             qs_options_free(o);
         }

@@ -9,12 +9,10 @@
 //! keeps coefficients at the size of the subresultants instead of growing
 //! exponentially as naive Euclid over Q would.
 
-pub mod f4;
-pub mod groebner;
-pub mod poisson;
-pub mod quotient;
+mod value_resultant;
+pub(crate) use value_resultant::value_resultant;
 
-use crate::number::modular::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};
+use crate::number::prime62::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};
 use crate::poly::mpoly::{MPoly, NVARS, QMPoly, ZMPoly};
 use crate::poly::zpoly::rem_mod_in_place;
 use crate::poly::{Ring, UPoly, ZPoly};

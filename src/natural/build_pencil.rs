@@ -1,5 +1,5 @@
 //! Constructions of the non-planar cases decided from the pencil
-//! `det(A − λB)` ([`super::fast`]): the singular point of a nodal quartic
+//! `det(A − λB)` ([`super::predicates`]): the singular point of a nodal quartic
 //! (the vertex of the rank-3 member at the multiple root) with its type, an
 //! isolated tangency point (the same vertex when the member's generators
 //! are imaginary), the isolated points on the real line of a
@@ -9,8 +9,8 @@
 //! predicate used (no classification again).
 
 use super::curve::{CurvePoint, Rulings};
-use super::exact::{EPoint, Exact, epoint};
-use super::fast::{
+use super::numbers::{EPoint, Exact, epoint};
+use super::predicates::{
     Case, M4, RootKind, det2, form, matrix, member, minor3, pencil_core, root_ratio, vertex_cone,
 };
 use super::prepared::{Kind, QIn};

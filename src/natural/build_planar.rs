@@ -1,6 +1,6 @@
 //! Construction of a planar intersection (coplanar axes, the projection
 //! conic factors: paper §4–§6, Lemma 8.1) over Z, from the integer conics
-//! of the fast route ([`super::fast`]): the projection conic `F` and the
+//! of the fast route ([`super::predicates`]): the projection conic `F` and the
 //! squared heights `H` of the first quadric, both in the homogeneous frame
 //! coordinates `(s, t, w)` of the axial plane, `U = P1 + (s·a1 + t·e2)/w`
 //! (`P1` the first quadric's point, `a1` its axis, `e2` the second axis or,
@@ -20,9 +20,9 @@
 //! reference construction ([`super::planar`]), in another frame: the tests
 //! compare the two.
 
-use super::exact::{EPoint, Exact, epoint};
-use super::fast::{PlanarConics, Sq, det2, projection_conics};
+use super::numbers::{EPoint, Exact, epoint};
 use super::planar::{drop_points_on_lines, offset_point, push_unique};
+use super::predicates::{PlanarConics, Sq, det2, projection_conics};
 use super::prepared::{QIn, point_difference};
 use super::result::{Component, ConicKind, Plane, PointKind};
 use super::zsqrt::{Zf, radicand};
@@ -494,7 +494,7 @@ fn conjugate_points(fr: &Frame, h: &[[Z; 3]; 3], x: &[Z; 3]) -> Vec<Component> {
 
 /// `F` (divided by its content: it matters up to a positive factor, and
 /// near-degenerate inputs give contents of thousands of bits) and `H` of
-/// the module docs, as [`super::fast`]'s decision computes them.
+/// the module docs, as [`super::predicates`]'s decision computes them.
 fn conics(x: &QIn<Z>, y: &QIn<Z>, parallel: bool) -> PlanarConics {
     let (mut f, h1) = projection_conics(x, y, parallel);
     crate::number::divide_content_z(f.as_flattened_mut());
@@ -611,11 +611,11 @@ mod tests {
             let (a, b) = (Prepared::new(&na), Prepared::new(&nb));
             let (x, y) = (a.prep.tier::<Z>(), b.prep.tier::<Z>());
             // the big-integer decision hands over its conics
-            let (out, _) = super::super::fast::program(&x, &y).unwrap();
-            let super::super::fast::Outcome::Planar(_, _, case, got) = out else {
+            let (out, _) = super::super::predicates::program(&x, &y).unwrap();
+            let super::super::predicates::Outcome::Planar(_, _, case, got) = out else {
                 panic!("{sa} / {sb}: a planar decision expected, got {out:?}");
             };
-            let super::super::fast::Case::Planar { parallel } = case else {
+            let super::super::predicates::Case::Planar { parallel } = case else {
                 panic!("{sa} / {sb}: {case:?}");
             };
             let c = conics(&x, &y, parallel);

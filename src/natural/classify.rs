@@ -67,11 +67,11 @@ fn conic_string(f: &super::deciders::Conic2) -> String {
 /// assert_eq!(r.thm8(), Some(true)); // a common vertex
 /// ```
 pub fn classify(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
-    super::fast::classify_with(a, b, &super::fast::ClassifyOptions::default())
+    super::predicates::classify_with(a, b, &super::predicates::ClassifyOptions::default())
 }
 
 /// The complete route: class, counts and exact components (no budget of
-/// its own; [`super::fast::classify_with`] runs it under one).
+/// its own; [`super::predicates::classify_with`] runs it under one).
 pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalReport, Error> {
     crate::budget::check_now();
     let axes = relation(a, b);

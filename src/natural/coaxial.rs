@@ -4,7 +4,7 @@
 //! such an intersection lies on a circle about the common axis, so the
 //! computation is one quadratic equation in the position along the axis.
 
-use super::exact::{EPoint, Exact, epoint};
+use super::numbers::{EPoint, Exact, epoint};
 use super::result::{Component, ConicKind, Plane, PointKind};
 use super::types::{Cone, Natural, Sphere, axial_param};
 use crate::geom::vec3::{V3, add, cross, lift, norm2, orthogonal, scale, sub};

@@ -1,10 +1,10 @@
 //! Constructions: the components of an intersection built from the fast
-//! route's decision ([`super::fast::Case`]) — CGAL's split of predicates
+//! route's decision ([`super::predicates::Case`]) — CGAL's split of predicates
 //! and constructions.  The predicates have decided the class and counts
 //! (from signs, mostly in floating-point balls); a construction computes in
 //! exact integers only what that case needs, and never classifies again.
 
-use super::fast::Case;
+use super::predicates::Case;
 use super::prepared::{Kind, Prepared};
 use super::result::{Component, Plane};
 use super::types::Natural;
@@ -24,7 +24,7 @@ pub(crate) fn components(
     a: &Prepared,
     b: &Prepared,
     case: Case,
-    conics: Option<&super::fast::PlanarConics>,
+    conics: Option<&super::predicates::PlanarConics>,
 ) -> Result<Built, Error> {
     let (na, nb) = (a.natural(), b.natural());
     let mut planes = Vec::new();
@@ -117,9 +117,9 @@ pub(crate) fn components(
 }
 
 /// Directions of lines and conic axes scaled to their smallest form
-/// ([`super::exact::primitive_direction`]).
+/// ([`super::numbers::primitive_direction`]).
 fn small_directions(mut c: Component) -> Component {
-    use super::exact::primitive_direction;
+    use super::numbers::primitive_direction;
     match &mut c {
         Component::Line { direction, .. } => *direction = primitive_direction(direction),
         Component::Conic { axis_dirs, .. } => {

@@ -32,8 +32,8 @@
 //! through an affine point, and the connected components counted by
 //! union–find; a component touching a cut is unbounded.
 
-use super::exact::{EPoint, Exact};
-use super::fast::{M4, matrix};
+use super::numbers::{EPoint, Exact};
+use super::predicates::{M4, matrix};
 use super::prepared::{Kind, QIn};
 use super::zsqrt::{Zf, radicand};
 use crate::error::Error;
@@ -818,7 +818,7 @@ impl CurvePoint {
             let base = ruling_point[i].sub(&b.mul(&k));
             let inner = disc.mul(&k).mul(&k);
             let s = self.root * k.signum();
-            super::exact::nested(&base.a, &base.b, &e, &Q::one(), &inner.a, &inner.b, s)
+            super::numbers::nested(&base.a, &base.b, &e, &Q::one(), &inner.a, &inner.b, s)
         })
     }
 }
@@ -1293,11 +1293,23 @@ pub(crate) fn common_ruling(
                         let k = d[i].mul(&inv);
                         let inner = delta.mul(&k).mul(&k);
                         let s = sign * k.signum();
-                        super::exact::nested(&base.a, &base.b, &e, &Q::one(), &inner.a, &inner.b, s)
+                        super::numbers::nested(
+                            &base.a,
+                            &base.b,
+                            &e,
+                            &Q::one(),
+                            &inner.a,
+                            &inner.b,
+                            s,
+                        )
                     }));
                 }
             }
         }
     }
-    Some((super::exact::epoint(&x_0), super::exact::epoint(&d), points))
+    Some((
+        super::numbers::epoint(&x_0),
+        super::numbers::epoint(&d),
+        points,
+    ))
 }

@@ -18,9 +18,9 @@ pub(crate) mod coaxial;
 pub(crate) mod construct;
 pub(crate) mod curve;
 pub(crate) mod deciders;
-pub(crate) mod exact;
-pub(crate) mod fast;
+pub(crate) mod numbers;
 pub(crate) mod planar;
+pub(crate) mod predicates;
 pub(crate) mod prepared;
 pub(crate) mod result;
 pub(crate) mod tangency;
@@ -32,8 +32,8 @@ pub use crate::geom::cayley_rotation;
 pub use classify::{classify, classify_str};
 pub use curve::CurvePoint;
 pub use deciders::{AxesRelation, conic_intersection_thm8 as thm8};
-pub use exact::{EPoint, Exact, normalize_axis_direction, normalize_direction, normalize_plane};
-pub use fast::{ClassifyOptions, classify_counts, classify_prepared, classify_with};
+pub use numbers::{EPoint, Exact, normalize_axis_direction, normalize_direction, normalize_plane};
+pub use predicates::{ClassifyOptions, classify_counts, classify_prepared, classify_with};
 pub use prepared::Prepared;
 pub use result::{
     Class, Component, ConicKind, CurveBranch, NaturalReport, PlanarDeciders, Plane, PointKind,

@@ -17,7 +17,7 @@
 //! square root: everything is computed in Q(√d).
 
 use super::deciders::{AxialPlane, Conic2};
-use super::exact::{EPoint, Exact, epoint, epoint_equal, nested};
+use super::numbers::{EPoint, Exact, epoint, epoint_equal, nested};
 use super::result::{Component, ConicKind, Plane, PointKind};
 use crate::geom::vec3::{V3, cross, dot, norm2};
 use crate::number::{Q, QSqrt, qi};

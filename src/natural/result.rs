@@ -2,7 +2,7 @@
 //! exact components (contract §4 output).
 
 use super::deciders::AxesRelation;
-use super::exact::{EPoint, Exact};
+use super::numbers::{EPoint, Exact};
 use super::types::Natural;
 use crate::number::Q;
 use num_traits::One;
@@ -391,21 +391,6 @@ impl NaturalReport {
     /// How the class was decided, in words.
     pub fn method_description(&self) -> &str {
         self.method
-    }
-
-    /// The JSON of `quadsect natural --json` as compact text (what
-    /// `serde_json::to_string` of the report gives), written straight into
-    /// text without a `serde_json::Value` tree.
-    ///
-    /// ```
-    /// let a: quadsect::Natural = "sphere center=0,0,0 radius2=4".parse().unwrap();
-    /// let b: quadsect::Natural = "cylinder point=1,0,0 axis=0,0,1 radius2=1".parse().unwrap();
-    /// let r = quadsect::classify(&a, &b).unwrap();
-    /// assert_eq!(r.to_json_string(), serde_json::to_string(&r).unwrap());
-    /// ```
-    #[cfg(feature = "serde")]
-    pub fn to_json_string(&self) -> String {
-        crate::report::natural_json_text(self)
     }
 
     /// Remarks.

@@ -18,7 +18,7 @@
 //!   (two real branches cross); at a cone vertex V on the other surface, the
 //!   cone's form on the other surface's tangent plane at V decides the same.
 
-use super::exact::{EPoint, Exact, epoint, exact_of};
+use super::numbers::{EPoint, Exact, epoint, exact_of};
 use super::result::{Component, PointKind, SingularKind, SingularPoint};
 use super::types::Natural;
 use crate::error::Error;
@@ -28,10 +28,8 @@ use crate::geom::vec3::{V3, cross, dot, lift, norm2, orthogonal};
 use crate::number::{Q, QSqrt, qi};
 use crate::poly::mpoly::MPoly;
 use crate::poly::{QMPoly, QPoly};
-use crate::roots::{
-    GENERIC_FORMS, RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_at,
-    values_with,
-};
+use crate::roots::{RealAlg, separate, simplest_rational_in, values_at, values_with};
+use crate::system::{GENERIC_FORMS, Rur, solve_zero_dim};
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -323,7 +321,7 @@ pub fn has_real_curve(f1: &QMPoly, f2: &QMPoly) -> Result<bool, Error> {
     let g2 = crate::geom::gradient(f2);
     for l in GENERIC_FORMS {
         crate::budget::check_now();
-        let lin = crate::roots::linear_form(&l.map(qi));
+        let lin = crate::system::linear_form(&l.map(qi));
         let gl: [QMPoly; 3] = std::array::from_fn(|k| MPoly::constant(qi(l[k])));
         let det = dot(&cross(&g1, &g2), &gl);
         let Some(rur) = solve_zero_dim(&[f1.clone(), f2.clone(), det], std::slice::from_ref(&lin))?
@@ -454,7 +452,7 @@ pub fn classify_nonplanar(
                 None => {
                     notes.push(format!(
                         "the tangent cone at the singular point {} is degenerate; it is reported as not isolated",
-                        super::exact::epoint_text(&zero_point(z))
+                        super::numbers::epoint_text(&zero_point(z))
                     ));
                     false
                 }

@@ -10,7 +10,7 @@
 //! target and for AVX2, and the AVX2 copy is chosen at run time when the
 //! processor has it.  The results are identical (exact arithmetic).
 
-use super::reconstruct::Fp;
+use super::prime31::Fp;
 
 /// Defines `pub fn $name` that runs an AVX2-compiled copy of `$generic`
 /// when the processor supports it, the generic code otherwise.
@@ -82,7 +82,7 @@ fn mulmod_generic(fp: &Fp, a: &[u64], b: &[u64], c: &[u64]) -> Vec<u64> {
 /// subtraction as a compare and a masked subtract (every value is below
 /// 2^63, so the signed compare is exact).  The kernel for this processor
 /// is chosen once per product, not per row.  Euclid's algorithm modulo p
-/// ([`crate::roots::poisson`]) uses the same kernel for its row updates.
+/// (`poly::modp`) uses the same kernel for its row updates.
 #[inline(always)]
 pub fn fold_row_kernel() -> fn(&mut [u64], u64, &[u32], u64) {
     #[cfg(target_arch = "x86_64")]
@@ -260,7 +260,7 @@ fn dot_generic(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
 
 dispatch! {
     /// `y ← y·a + d (mod p)` elementwise, the Horner step of Garner's
-    /// mixed radix ([`super::reconstruct::CrtVec`]): `a < p < 2^31` with
+    /// mixed radix ([`super::prime31::CrtVec`]): `a < p < 2^31` with
     /// `w = ⌊a·2^32/p⌋` (Shoup's precomputed quotient), `y < 2^32` in and
     /// out (congruent, not reduced), `d < 2^31`.
     pub fn shoup_horner / shoup_horner_avx2 / shoup_horner_generic(y: &mut [u32], d: &[u32], a: u64, w: u64, p: u64) -> ()
@@ -340,7 +340,7 @@ pub fn shoup_quotients(p: u64, c: &[u64]) -> Vec<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::number::reconstruct::prime31;
+    use crate::number::prime31::prime31;
 
     fn rand_vec(seed: &mut u64, n: usize, p: u64) -> Vec<u64> {
         (0..n)
@@ -513,7 +513,7 @@ mod tests {
 #[cfg(test)]
 mod fold_tests {
     use super::*;
-    use crate::number::reconstruct::prime31;
+    use crate::number::prime31::prime31;
 
     /// A pseudo-random number below `m` (a linear congruential generator
     /// on `seed`; `m ≤ 2^31`).

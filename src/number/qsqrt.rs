@@ -17,7 +17,7 @@ use std::fmt;
 /// An exact real number `a + b√d` (rational `a`, `b`, and `d ≥ 0`).
 ///
 /// Comparison is exact, also between numbers of different fields Q(√d)
-/// (through [`QSqrt::to_real_alg`]); equal values hash equally.
+/// (by squaring once); equal values hash equally.
 ///
 /// ```
 /// use quadsect::{QSqrt, Rational};
@@ -86,29 +86,27 @@ impl QSqrt {
         super::Sign::from_i32(self.signum())
     }
 
-    /// The same number as a real algebraic number (a rational, or the root
-    /// of `(t − a)² − b²d` on the side of `a` given by the sign of `b`).
-    pub fn to_real_alg(&self) -> crate::roots::RealAlg {
-        use crate::roots::RealAlg;
-        if self.b.is_zero() {
-            return RealAlg::rational(self.a.clone());
-        }
-        // t² − 2a t + (a² − b²d), cleared of denominators
-        let c = [self.norm(), -(&self.a + &self.a), Q::one()];
-        let l = super::denom_lcm(c.iter());
-        let z: Vec<BigInt> = c.iter().map(|q| q.numer() * (&l / q.denom())).collect();
-        let roots = RealAlg::roots_of(&crate::poly::ZPoly::new(z));
-        let i = if self.b.is_positive() { 1 } else { 0 };
-        roots[i].clone()
-    }
-
-    /// Exact comparison of any two, in one field or not.
+    /// Exact comparison of any two, in one field or not.  Across fields,
+    /// `x − y = u + v` with `u = (a₁ − a₂) + b₁√d₁ ∈ Q(√d₁)` and
+    /// `v = −b₂√d₂`: when the signs of `u` and `v` differ, the larger of
+    /// `u² ∈ Q(√d₁)` and `v² = b₂²d₂` decides (one sign in Q(√d₁)).
     fn cmp_any(&self, o: &QSqrt) -> Ordering {
         if self.b.is_zero() || o.b.is_zero() || self.d == o.d {
-            self.cmp_exact(o)
-        } else {
-            self.to_real_alg().cmp_exact(&o.to_real_alg())
+            return self.cmp_exact(o);
         }
+        let u = QSqrt::from_parts(&self.a - &o.a, self.b.clone(), self.d.clone());
+        let (su, sv) = (u.signum(), -sign_q(&o.b));
+        let s = if su == 0 || su == sv {
+            if su == 0 { sv } else { su }
+        } else {
+            let v2 = QSqrt::rational(&o.b * &o.b * &o.d);
+            match u.mul(&u).sub(&v2).signum() {
+                1 => su,
+                -1 => sv,
+                _ => 0,
+            }
+        };
+        s.cmp(&0)
     }
 
     /// `a + b√d`, folding `√d` into the rational part when `d` is a square.
@@ -565,10 +563,12 @@ impl Ord for QSqrt {
 impl std::hash::Hash for QSqrt {
     /// Consistent with the exact equality (hashes the value, not the form).
     fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        if self.b.is_zero() {
-            self.a.hash(state);
-        } else {
-            self.to_real_alg().hash(state);
+        // a + b√d: the rational part a, b²d and the sign of b are the
+        // value's (√d is irrational), whatever the form of the radicand
+        self.a.hash(state);
+        if !self.b.is_zero() {
+            (&self.b * &self.b * &self.d).hash(state);
+            self.b.is_positive().hash(state);
         }
     }
 }

@@ -9,9 +9,11 @@
 
 pub mod extension;
 pub(crate) mod horner;
+mod macros;
+pub(crate) mod modp;
 pub mod mpoly;
 pub mod parse;
-mod public;
+mod polynomial;
 pub mod ring;
 pub(crate) mod sqfree;
 pub mod upoly;
@@ -21,7 +23,7 @@ pub mod zpoly;
 pub use mpoly::MPoly;
 pub use mpoly::{QMPoly, ZMPoly};
 pub use parse::{Limits, ParseError, parse_poly, parse_poly_in};
-pub use public::{IntPoly, Polynomial, Var};
+pub use polynomial::{IntPoly, Polynomial, Var};
 pub use ring::Ring;
 pub use upoly::UPoly;
 pub use zpoly::{QPoly, ZPoly};

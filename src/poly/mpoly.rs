@@ -629,38 +629,7 @@ impl<C: Ring> Neg for &MPoly<C> {
     }
 }
 
-macro_rules! forward_owned_mpoly {
-    ($tr:ident, $m:ident) => {
-        impl<C: Ring> $tr for MPoly<C> {
-            type Output = MPoly<C>;
-            fn $m(self, o: MPoly<C>) -> MPoly<C> {
-                (&self).$m(&o)
-            }
-        }
-        impl<C: Ring> $tr<&MPoly<C>> for MPoly<C> {
-            type Output = MPoly<C>;
-            fn $m(self, o: &MPoly<C>) -> MPoly<C> {
-                (&self).$m(o)
-            }
-        }
-        impl<C: Ring> $tr<MPoly<C>> for &MPoly<C> {
-            type Output = MPoly<C>;
-            fn $m(self, o: MPoly<C>) -> MPoly<C> {
-                self.$m(&o)
-            }
-        }
-    };
-}
-forward_owned_mpoly!(Add, add);
-forward_owned_mpoly!(Sub, sub);
-forward_owned_mpoly!(Mul, mul);
-
-impl<C: Ring> Neg for MPoly<C> {
-    type Output = MPoly<C>;
-    fn neg(self) -> MPoly<C> {
-        -&self
-    }
-}
+super::macros::forward_owned_ops!(MPoly, C);
 
 impl<C: Ring> Ring for MPoly<C> {
     fn rzero() -> Self {

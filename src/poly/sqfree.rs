@@ -29,7 +29,7 @@
 
 use super::mpoly::{MPoly, NVARS, ZMPoly};
 use crate::number::Q;
-use crate::number::modular::{Digits, Modulus, nth_prime};
+use crate::number::prime62::{Digits, Modulus, nth_prime};
 use crate::number::reconstruct::symmetric_mod;
 use crate::poly::QMPoly;
 use crate::poly::zpoly::gcd_degree_mod;
@@ -433,19 +433,6 @@ mod tests {
         assert_eq!(squarefree_decomposition(&p).unwrap().factors.len(), 1);
         assert!(repeated_factors(&p).is_none());
         assert!(repeated_factors(&parse_poly("(x^3 - y)^2*z").unwrap()).is_some());
-    }
-
-    /// A cube of a rotated quartic (degree 12, coefficients of a few
-    /// hundred bits): within the heuristic gcd's size limit.
-    #[test]
-    fn rotated_power_decomposes() {
-        use crate::number::q;
-        let r = crate::geom::cayley_rotation(&q(1, 3), &q(1, 4), &q(-1, 2));
-        let t = crate::geom::rotate(&parse_poly("x^4 + y^3*z - 2x*y + 1/3").unwrap(), &r);
-        let d = squarefree_decomposition(&t.pow(3).scale(&q(-5, 7))).unwrap();
-        assert_eq!(d.factors, vec![(t.to_primitive_z().0, 3)]);
-        let k = t.to_primitive_z().1;
-        assert_eq!(d.constant, q(-5, 7) * &k * &k * &k);
     }
 
     proptest::proptest! {

@@ -348,38 +348,7 @@ impl<R: Ring> Neg for &UPoly<R> {
     }
 }
 
-macro_rules! forward_owned_binop {
-    ($tr:ident, $m:ident) => {
-        impl<R: Ring> $tr for UPoly<R> {
-            type Output = UPoly<R>;
-            fn $m(self, o: UPoly<R>) -> UPoly<R> {
-                (&self).$m(&o)
-            }
-        }
-        impl<R: Ring> $tr<&UPoly<R>> for UPoly<R> {
-            type Output = UPoly<R>;
-            fn $m(self, o: &UPoly<R>) -> UPoly<R> {
-                (&self).$m(o)
-            }
-        }
-        impl<R: Ring> $tr<UPoly<R>> for &UPoly<R> {
-            type Output = UPoly<R>;
-            fn $m(self, o: UPoly<R>) -> UPoly<R> {
-                self.$m(&o)
-            }
-        }
-    };
-}
-forward_owned_binop!(Add, add);
-forward_owned_binop!(Sub, sub);
-forward_owned_binop!(Mul, mul);
-
-impl<R: Ring> Neg for UPoly<R> {
-    type Output = UPoly<R>;
-    fn neg(self) -> UPoly<R> {
-        -&self
-    }
-}
+super::macros::forward_owned_ops!(UPoly, R);
 
 /// Polynomials over a ring form a ring (used for the recursive
 /// representation R[y][x] in elimination).

@@ -10,7 +10,7 @@
 use super::ring::Ring;
 use super::upoly::UPoly;
 use crate::number::fixed::{AtWidth, Fixed, MAX_LIMBS, at_width, push_limbs};
-use crate::number::modular::{Digits, Modulus, primes};
+use crate::number::prime62::{Digits, Modulus, primes};
 use crate::number::{Q, sign_z};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -625,7 +625,7 @@ fn gcd_mod(a: &[u64], b: &[u64], m: &Modulus) -> Vec<u64> {
 /// degree, and accepted only when the primitive candidate divides both
 /// inputs exactly (so the answer is proven, whatever primes were used).
 fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
-    use crate::number::modular::{Crt, nth_prime};
+    use crate::number::prime62::{Crt, nth_prime};
     let g = a.lc().gcd(&b.lc());
     let gd = Digits::new(&g);
     let mut best: Option<usize> = None;

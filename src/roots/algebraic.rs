@@ -871,6 +871,32 @@ pub fn has_root_in_open(q: &ZPoly, a: &Q, b: &Q) -> bool {
     sign_variations(acc.coeffs()) > 0
 }
 
+impl crate::poly::IntPoly {
+    /// All distinct real roots, increasing, exactly (Descartes/VCA
+    /// isolation of the square-free part: O(n⁴ τ²) bit operations in the
+    /// worst case for degree n and τ-bit coefficients, far less in practice).
+    pub fn real_roots(&self) -> Vec<RealAlg> {
+        RealAlg::roots_of(self.inner())
+    }
+}
+
+impl crate::number::QSqrt {
+    /// The same number as a real algebraic number (a rational, or the root
+    /// of `(t − a)² − b²d` on the side of `a` given by the sign of `b`).
+    pub fn to_real_alg(&self) -> RealAlg {
+        let (a, b, d) = (self.a(), self.b(), self.d());
+        if b.is_zero() {
+            return RealAlg::rational(a.clone());
+        }
+        // t² − 2a t + (a² − b²d), cleared of denominators
+        let c = [a * a - b * b * d, -(a + a), Q::one()];
+        let l = crate::number::denom_lcm(c.iter());
+        let z: Vec<BigInt> = c.iter().map(|q| q.numer() * (&l / q.denom())).collect();
+        let roots = RealAlg::roots_of(&ZPoly::new(z));
+        roots[usize::from(b.is_positive())].clone()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -173,9 +173,7 @@ pub fn value_polynomial(phi: &ZPoly, num: &QPoly, den: &QPoly) -> ZPoly {
         let (nz, kn) = ZPoly::from_q(num);
         let (dz, kd) = ZPoly::from_q(den);
         let sigma = kn / kd;
-        if let Some(r) =
-            super::poisson::value_resultant(phi, &nz, &dz, sigma.numer(), sigma.denom())
-        {
+        if let Some(r) = crate::elim::value_resultant(phi, &nz, &dz, sigma.numer(), sigma.denom()) {
             return r.primitive_part().squarefree_part();
         }
     }
@@ -382,7 +380,7 @@ mod tests {
             let (nz, kn) = ZPoly::from_q(&num);
             let (dz, kd) = ZPoly::from_q(&den);
             let s = kn / kd;
-            let fast = crate::roots::poisson::value_resultant(&phi, &nz, &dz, s.numer(), s.denom())
+            let fast = crate::elim::value_resultant(&phi, &nz, &dz, s.numer(), s.denom())
                 .expect("den is invertible modulo φ");
             let general = value_polynomial_bivariate(&phi, &num, &den);
             assert_eq!(fast.primitive_part().squarefree_part(), general, "{phi:?}");
@@ -400,7 +398,7 @@ mod tests {
         let (nz, _) = ZPoly::from_q(&num);
         let (dz, _) = ZPoly::from_q(&den);
         let one = BigInt::one();
-        assert!(crate::roots::poisson::value_resultant(&phi, &nz, &dz, &one, &one).is_none());
+        assert!(crate::elim::value_resultant(&phi, &nz, &dz, &one, &one).is_none());
         assert_eq!(
             value_polynomial(&phi, &num, &den),
             value_polynomial_bivariate(&phi, &num, &den)

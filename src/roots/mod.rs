@@ -9,20 +9,13 @@
 //! decided exactly (gcds and exact evaluation at rationals).
 
 mod algebraic;
-pub mod census;
 mod enclose;
 mod inclusion;
 mod isolate;
-pub mod krawczyk;
-pub mod krawczyk_filter;
-pub mod modrur;
 mod newton;
-pub mod poisson;
 mod rational;
-mod report;
-pub mod rurcheck;
 mod sturm;
-mod zerodim;
+mod summary;
 
 pub use algebraic::{RealAlg, separate};
 pub use enclose::{
@@ -33,10 +26,8 @@ pub(crate) use isolate::descartes_in;
 pub use isolate::{RootInterval, bisect_once, isolate_real_roots, isolate_squarefree};
 pub(crate) use rational::no_rational_root_sieve;
 pub use rational::{simplest_rational_in, split_cubic};
-pub use report::{RealRoot, RootReport, analyze_roots};
 pub use sturm::SturmSequence;
-pub(crate) use zerodim::linear_form;
-pub use zerodim::{GENERIC_FORMS, Rur, solve_zero_dim};
+pub use summary::{RealRoot, RootReport, analyze_roots};
 
 // Used by the property tests (independent deciders checked against each
 // other: Sturm counts, Descartes bounds, interval enclosures).

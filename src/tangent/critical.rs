@@ -21,15 +21,15 @@
 //!   values, which pins down ν and μ exactly.
 
 use super::ellipsoid::Ellipsoid;
+use super::witness::WitnessSearch;
 use super::witness::{WitnessPoint, find_witness, witness_at_value};
-use crate::elim::groebner::{GPoly, MonoOrder, groebner};
 use crate::error::Error;
 use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, U, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
-use crate::roots::{
-    GENERIC_FORMS, RealAlg, Rur, separate, simplest_rational_in, solve_zero_dim, values_with,
-};
+use crate::roots::{RealAlg, separate, simplest_rational_in, values_with};
+use crate::system::groebner::{GPoly, MonoOrder, groebner};
+use crate::system::{GENERIC_FORMS, Rur, solve_zero_dim};
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
@@ -60,19 +60,15 @@ impl CriticalAnalysis {
     pub fn real_values(&self) -> Vec<RealAlg> {
         super::modular::with_conic_values(&self.values, &self.conics)
     }
+}
 
-    /// A witness near a real critical point whose value is `value`.
-    pub fn witness(
-        &self,
-        value: &RealAlg,
-        e: &Ellipsoid,
-        s: &QMPoly,
-        want: i32,
-    ) -> Option<WitnessPoint> {
-        if let Some(w) = super::modular::conic_witness(&self.conics, value, want) {
+impl WitnessSearch for CriticalAnalysis {
+    /// A witness near a real critical point whose value is `v`.
+    fn witness(&self, v: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
+        if let Some(w) = super::modular::conic_witness(&self.conics, v, want) {
             return Some(w);
         }
-        witness_at_value(&self.values, value, e, s, want, &|i, bits| {
+        witness_at_value(&self.values, v, e, s, want, &|i, bits| {
             Some(self.rur.approx_point(i, bits))
         })
     }
@@ -343,18 +339,12 @@ fn level_sets(
     })
 }
 
-impl LevelSetAnalysis {
+impl WitnessSearch for LevelSetAnalysis {
     /// A witness with S of sign `want`, from a level curve at a rational
     /// level of that sign strictly between ν and μ.
-    pub fn witness(
-        &self,
-        value: &RealAlg,
-        e: &Ellipsoid,
-        s: &QMPoly,
-        want: i32,
-    ) -> Option<WitnessPoint> {
+    fn witness(&self, v: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
         let (nu, mu) = (self.attained.first()?, self.attained.last()?);
-        let _ = value;
+        let _ = v;
         // a rational level q with sign(q) = want and ν < q < μ
         let mut lo = nu.to_rational_approx(64);
         let mut hi = mu.to_rational_approx(64);

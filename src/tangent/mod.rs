@@ -31,10 +31,10 @@ pub(crate) mod judging;
 pub(crate) mod modular;
 pub(crate) mod nonreduced;
 pub(crate) mod pencil;
-pub(crate) mod poisson;
 pub(crate) mod quadric;
 pub(crate) mod separable;
 pub(crate) mod slemma;
+pub(crate) mod square_subsystem;
 pub(crate) mod witness;
 
 pub use ellipsoid::Ellipsoid;
@@ -48,6 +48,7 @@ use crate::poly::{IntPoly, Polynomial, QMPoly, ZPoly};
 use crate::roots::RealAlg;
 use std::cmp::Ordering;
 use std::fmt;
+use witness::WitnessSearch;
 
 /// The overall answer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -291,7 +292,7 @@ pub(crate) enum Analysis {
     ModularRur(modular::ModularAnalysis),
     /// deg S ≥ 3 in general position: the Poisson route (square subsystem,
     /// resultants lifted beyond an a-priori bound).
-    Poisson(Box<poisson::PoissonAnalysis>),
+    Poisson(Box<square_subsystem::PoissonAnalysis>),
     /// deg S ≥ 3 with curves of critical points (symmetric inputs).
     LevelSets(critical::LevelSetAnalysis),
     /// S with a repeated factor, from its square-free decomposition.
@@ -665,7 +666,7 @@ pub(crate) enum Routed {
     /// The critical values.
     Values(Found),
     /// The signs of S at the real critical points only (verdict only).
-    Signs(Box<poisson::PoissonAnalysis>),
+    Signs(Box<square_subsystem::PoissonAnalysis>),
     /// No certificate (the reason).
     Undecided(String),
 }
@@ -680,7 +681,7 @@ pub(crate) fn critical_routes(
     sys: &critical::CriticalSystem,
     values: bool,
 ) -> Result<Routed, Error> {
-    if let Ok(an) = poisson::analyze_minors(e, surface, &sys.minors, values) {
+    if let Ok(an) = square_subsystem::analyze_minors(e, surface, &sys.minors, values) {
         let Some(j) = an.judging.clone() else {
             return Ok(Routed::Signs(Box::new(an)));
         };
@@ -981,7 +982,11 @@ fn finish(
 /// values: [`TangentOptions::without_values`]).  Every sign is decided
 /// (the analysis computes the values when one is not), and zero is never
 /// one of them, so the verdict is `separated` or `intersecting`.
-fn finish_signs(e: &Ellipsoid, surface: &QMPoly, an: poisson::PoissonAnalysis) -> TangentReport {
+fn finish_signs(
+    e: &Ellipsoid,
+    surface: &QMPoly,
+    an: square_subsystem::PoissonAnalysis,
+) -> TangentReport {
     let signs: Vec<i32> = an.enclosures.iter().map(|(s, _)| *s).collect();
     let (neg, pos) = (signs.contains(&-1), signs.contains(&1));
     let (verdict, intersect, side) = match (neg, pos) {

@@ -1,5 +1,5 @@
 //! S of degree ≥ 3, general position: the critical points of S on E by the
-//! multi-modular route ([`crate::roots::modrur`]) with S itself as the
+//! multi-modular route ([`crate::system::rur_modular`]) with S itself as the
 //! separating element.
 //!
 //! The critical points are the zeros of `E = 0, ∇S × ∇E = 0`
@@ -15,13 +15,15 @@
 //! are declined and go to the exact route.
 
 use super::ellipsoid::Ellipsoid;
+use super::witness::WitnessSearch;
 use super::witness::{WitnessPoint, witness_at_value};
 use crate::number::{Q, QSqrt, q};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZPoly};
 use crate::roots::RealAlg;
-use crate::roots::modrur::{Declined, ModularRur, solve_modular_implied};
-use crate::roots::{linear_form, value_polynomial, values_with};
+use crate::roots::{value_polynomial, values_with};
+use crate::system::linear_form;
+use crate::system::rur_modular::{Declined, ModularRur, solve_modular_implied};
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// When S alone does not separate the critical points (symmetric inputs),
@@ -78,19 +80,15 @@ impl ModularAnalysis {
     pub fn real_values(&self) -> Vec<RealAlg> {
         with_conic_values(&self.values, &self.conics)
     }
+}
 
-    /// A witness near the real critical point whose value is `value`.
-    pub fn witness(
-        &self,
-        value: &RealAlg,
-        e: &Ellipsoid,
-        s: &QMPoly,
-        want: i32,
-    ) -> Option<WitnessPoint> {
-        if let Some(w) = conic_witness(&self.conics, value, want) {
+impl WitnessSearch for ModularAnalysis {
+    /// A witness near the real critical point whose value is `v`.
+    fn witness(&self, v: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
+        if let Some(w) = conic_witness(&self.conics, v, want) {
             return Some(w);
         }
-        witness_at_value(&self.values, value, e, s, want, &|i, bits| {
+        witness_at_value(&self.values, v, e, s, want, &|i, bits| {
             self.rur.approx_point(i, bits)
         })
     }

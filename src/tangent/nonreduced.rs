@@ -32,6 +32,7 @@
 use super::critical::CriticalSystem;
 use super::ellipsoid::Ellipsoid;
 use super::witness::WitnessPoint;
+use super::witness::WitnessSearch;
 use super::{
     Analysis, Routed, TangentReport, Verdict, WitnessFinder, classify, critical_routes,
     decide_validated, finish, undecided, witness_for,
@@ -88,18 +89,14 @@ impl NonReducedAnalysis {
             None => None,
         }
     }
+}
 
+impl WitnessSearch for NonReducedAnalysis {
     /// A witness with S of sign `want`, near the real critical point of
-    /// value `value` (G-system), or among the single factor's witnesses.
-    pub fn witness(
-        &self,
-        value: &RealAlg,
-        e: &Ellipsoid,
-        s: &QMPoly,
-        want: i32,
-    ) -> Option<WitnessPoint> {
+    /// value `v` (G-system), or among the single factor's witnesses.
+    fn witness(&self, v: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
         if let Some(f) = &self.field {
-            return witness_for(&f.analysis, f.finder, e, s, value, want);
+            return witness_for(&f.analysis, f.finder, e, s, v, want);
         }
         self.factor_reports
             .iter()

@@ -28,6 +28,7 @@
 //! at non-real points.
 
 use super::ellipsoid::Ellipsoid;
+use super::witness::WitnessSearch;
 use super::witness::{WitnessPoint, find_witness};
 use crate::number::{Q, sqrt_bounds};
 use crate::poly::mpoly::{X, Y, Z};
@@ -211,19 +212,15 @@ impl SeparableAnalysis {
     pub fn has_curves(&self) -> bool {
         self.branches.iter().any(|b| b.curves)
     }
+}
 
-    /// A witness near a real critical point whose value is `value`.
-    pub fn witness(
-        &self,
-        value: &RealAlg,
-        e: &Ellipsoid,
-        s: &QMPoly,
-        want: i32,
-    ) -> Option<WitnessPoint> {
+impl WitnessSearch for SeparableAnalysis {
+    /// A witness near a real critical point whose value is `v`.
+    fn witness(&self, v: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
         let (b, xi) = self.branches.iter().find_map(|b| {
             b.real_points
                 .iter()
-                .find(|(_, v)| v.cmp_exact(value) == Ordering::Equal)
+                .find(|(_, w)| w.cmp_exact(v) == Ordering::Equal)
                 .map(|(x, _)| (b, x))
         })?;
         let g = self.general;

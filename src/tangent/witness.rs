@@ -90,6 +90,14 @@ pub fn snap_to_ellipsoid(e: &Ellipsoid, p: &[Q; 3]) -> Option<[QSqrt; 3]> {
     Some(out)
 }
 
+/// The witness search shared by the analyses of critical values: a point
+/// of E with S of sign `want` near a real critical point whose value is
+/// `v` (exactly on E, its sign checked exactly).  `None` when the
+/// analysis has no such point to start from.
+pub(crate) trait WitnessSearch {
+    fn witness(&self, v: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint>;
+}
+
 /// A witness near the real critical point whose exact value is `value`,
 /// given the values of the real critical points in order and, for the i-th
 /// one, an approximation of the point to `bits` bits (`approx(i, bits)`).

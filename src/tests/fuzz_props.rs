@@ -407,11 +407,17 @@ fn fuzzer_tangent_of_degree_beyond_f4_answers() {
     let v = answer_line(line);
     assert_eq!(v["id"], json!(3), "{v}");
     let deg = |d: &str| crate::poly::parse_poly(d).unwrap().to_primitive_z().0;
-    let sys =
-        crate::elim::poisson::SquareSystem::new([deg("x^121 - 1"), deg("y - 1"), deg("z - 1")]);
+    let sys = crate::system::square_resultant::SquareSystem::new([
+        deg("x^121 - 1"),
+        deg("y - 1"),
+        deg("z - 1"),
+    ]);
     assert!(sys.is_none(), "degree 121 is beyond F4");
-    let sys =
-        crate::elim::poisson::SquareSystem::new([deg("x^120 - 1"), deg("y - 1"), deg("z - 1")]);
+    let sys = crate::system::square_resultant::SquareSystem::new([
+        deg("x^120 - 1"),
+        deg("y - 1"),
+        deg("z - 1"),
+    ]);
     assert!(sys.is_some(), "degree 120 is within F4");
 }
 

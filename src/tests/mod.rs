@@ -27,6 +27,6 @@ mod kernel_reference;
 mod natural;
 mod natural_whole;
 mod nonreduced;
-mod poisson;
 mod printing;
+mod square_subsystem;
 mod tangent;

@@ -9,7 +9,7 @@ use crate::natural::classify::section7_agrees;
 use crate::natural::deciders::{
     AxesRelation, AxialPlane, pencil_determinant, pencil_has_planar_member, relation, thm8,
 };
-use crate::natural::exact::{EPoint, Exact};
+use crate::natural::numbers::{EPoint, Exact};
 use crate::natural::result::{Class, Component, NaturalReport};
 use crate::natural::tangency::section7;
 use crate::natural::{Natural, cayley_rotation, classify, parse_natural};

@@ -418,3 +418,15 @@ fn nonreduced_timings() {
         }
     }
 }
+
+/// A cube of a rotated quartic (degree 12, coefficients of a few
+/// hundred bits): within the heuristic gcd's size limit.
+#[test]
+fn rotated_power_decomposes() {
+    let r = cayley_rotation(&q(1, 3), &q(1, 4), &q(-1, 2));
+    let t = rotate(&parse_poly("x^4 + y^3*z - 2x*y + 1/3").unwrap(), &r);
+    let d = crate::poly::sqfree::squarefree_decomposition(&t.pow(3).scale(&q(-5, 7))).unwrap();
+    assert_eq!(d.factors, vec![(t.to_primitive_z().0, 3)]);
+    let k = t.to_primitive_z().1;
+    assert_eq!(d.constant, q(-5, 7) * &k * &k * &k);
+}

@@ -361,7 +361,7 @@ proptest! {
         if let Some(pt) = snap_to_ellipsoid(&ell, &p) {
             prop_assert!(eval_qsqrt(&ell.poly, &pt).is_zero());
             let v = eval_qsqrt(&sp, &pt);
-            let va = crate::natural::exact::Exact::Quad(v).to_alg();
+            let va = crate::natural::numbers::Exact::Quad(v).to_alg();
             prop_assert!(va.cmp_exact(r.min.as_ref().unwrap()) != Ordering::Less);
             prop_assert!(va.cmp_exact(r.max.as_ref().unwrap()) != Ordering::Greater);
         }
@@ -454,7 +454,7 @@ proptest! {
         for (px, py, pz) in samples {
             let p = [&ell.center[0] + q(px, 5), &ell.center[1] + q(py, 5), &ell.center[2] + q(pz, 5)];
             if let Some(pt) = snap_to_ellipsoid(&ell, &p) {
-                let va = crate::natural::exact::Exact::Quad(eval_qsqrt(&sp, &pt)).to_alg();
+                let va = crate::natural::numbers::Exact::Quad(eval_qsqrt(&sp, &pt)).to_alg();
                 prop_assert!(va.cmp_exact(r.min.as_ref().unwrap()) != Ordering::Less, "{} on {}: sample below ν", s, e);
                 prop_assert!(va.cmp_exact(r.max.as_ref().unwrap()) != Ordering::Greater, "{} on {}: sample above μ", s, e);
             }

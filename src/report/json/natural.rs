@@ -2,7 +2,7 @@
 
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
-use crate::natural::exact::{EPoint, Exact, normalize_axis_direction, normalize_plane};
+use crate::natural::numbers::{EPoint, Exact, normalize_axis_direction, normalize_plane};
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Plane, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
@@ -185,6 +185,22 @@ fn section7_w(s: &Section7) -> impl Json + '_ {
 /// follows with `route: "complete"` and the `fallback` reason.
 pub fn natural_json(r: &NaturalReport) -> Value {
     to_value(&natural_bytes(r))
+}
+
+impl NaturalReport {
+    /// The JSON of `quadsect natural --json` as compact text (what
+    /// `serde_json::to_string` of the report gives), written straight into
+    /// text without a `serde_json::Value` tree.
+    ///
+    /// ```
+    /// let a: quadsect::Natural = "sphere center=0,0,0 radius2=4".parse().unwrap();
+    /// let b: quadsect::Natural = "cylinder point=1,0,0 axis=0,0,1 radius2=1".parse().unwrap();
+    /// let r = quadsect::classify(&a, &b).unwrap();
+    /// assert_eq!(r.to_json_string(), serde_json::to_string(&r).unwrap());
+    /// ```
+    pub fn to_json_string(&self) -> String {
+        natural_json_text(self)
+    }
 }
 
 /// [`natural_json`] as compact JSON text, written without a `Value` tree

@@ -1,6 +1,6 @@
 //! Human-readable text of `quadsect natural` (contract §4 JSON and the human summary).
 
-use crate::natural::exact::{EPoint, epoint_text, normalize_direction};
+use crate::natural::numbers::{EPoint, epoint_text, normalize_direction};
 use crate::natural::result::{Class, Component, NaturalReport, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;

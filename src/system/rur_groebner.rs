@@ -3,16 +3,16 @@
 //! rational univariate representation; the real zeros are the real roots of
 //! the RUR's univariate polynomial (the form separates conjugate zeros).
 
-use super::RealAlg;
-use crate::elim::groebner::{GPoly, MonoOrder, groebner};
-use crate::elim::quotient::{
-    QMatrix, Quotient, krylov_full_likely, krylov_shape, mat_comb, mat_vec,
-    minpoly_and_squarefree_image,
-};
 use crate::error::Error;
 use crate::number::{Q, qi};
 use crate::poly::mpoly::{MPoly, X, Y, Z};
 use crate::poly::{QMPoly, QPoly, ZMPoly, ZPoly};
+use crate::roots::RealAlg;
+use crate::system::groebner::{GPoly, MonoOrder, groebner};
+use crate::system::quotient::{
+    QMatrix, Quotient, krylov_full_likely, krylov_shape, mat_comb, mat_vec,
+    minpoly_and_squarefree_image,
+};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
@@ -231,7 +231,7 @@ const RADICAL_PRIMES: usize = 600;
 /// an ideal containing a square-free polynomial in each variable is radical
 /// in characteristic 0; `sq_v` is the square-free part of the exact minimal
 /// polynomial of v on `Q[x]/I`, so it vanishes at every zero of I) by the
-/// multi-modular route ([`super::modrur`]) with a linear separating form.
+/// multi-modular route ([`super::rur_modular`]) with a linear separating form.
 /// Its certificate is exact: every root of `f` gives a zero of the
 /// generators (`sq_v` included, verified over Z), and the count of
 /// standard monomials modulo a prime bounds the number of zeros from above
@@ -252,11 +252,11 @@ fn radical_by_modular(
         .map(|&(a, b)| [qi(1), qi(a), qi(b)])
         .collect();
     let hs: Vec<QMPoly> = forms.iter().map(linear_form).collect();
-    let mr = super::modrur::solve_modular_implied(&all, &hs, RADICAL_PRIMES, &[]).ok()?;
+    let mr = super::rur_modular::solve_modular_implied(&all, &hs, RADICAL_PRIMES, &[]).ok()?;
     // Φ is a constant multiple of f′, invertible modulo the square-free f
     let mut coords: [QPoly; 3] = std::array::from_fn(|_| QPoly::zero());
     for (k, c) in coords.iter_mut().enumerate() {
-        *c = super::poisson::quotient_mod_f(&mr.coords[k], &mr.denom, &mr.f, RADICAL_PRIMES)?;
+        *c = super::rur_square::quotient_mod_f(&mr.coords[k], &mr.denom, &mr.f, RADICAL_PRIMES)?;
     }
     // each extra p = k·p′ (p′ primitive, integral, degree e) at ξ(t) is
     // k·p′ʰ(G, Φ)/Φ^e: numerator and denominator exactly over Z (not
@@ -267,7 +267,7 @@ fn radical_by_modular(
     for p in extra {
         let (pz, k) = p.to_primitive_z();
         let (num, den) = eval_homogeneous(&pz, &mr.coords, &mr.denom);
-        let q = super::poisson::quotient_mod_f(&num, &den, &mr.f, RADICAL_PRIMES)?.scale(&k);
+        let q = super::rur_square::quotient_mod_f(&num, &den, &mr.f, RADICAL_PRIMES)?.scale(&k);
         extra_values.push(crate::roots::value_polynomial(&mr.f, &q, &one));
         extra_polys.push(q);
     }

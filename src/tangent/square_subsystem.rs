@@ -1,6 +1,6 @@
 //! S of degree ≥ 3 in general position: the critical points of S on E from
 //! the exact RUR of a *square* subsystem, computed modulo primes and lifted
-//! by the CRT with an a-priori bound ([`crate::roots::poisson`]) — no
+//! by the CRT with an a-priori bound ([`crate::system::rur_square`]) — no
 //! reconstruction is guessed and no verification is needed.
 //!
 //! The critical points are the zeros of `E = 0, m = ∇S × ∇E = 0`
@@ -17,27 +17,28 @@
 //!
 //! The critical values: `D(u)`, the primitive part of
 //! `R̄^d · ∏ (u − S(ξ))` over the critical points, again by the CRT with a
-//! bound ([`crate::roots::poisson::value_polynomial`]); the value at each
+//! bound ([`crate::system::rur_square::value_polynomial`]); the value at each
 //! real critical point is identified among the real roots of D by interval
 //! evaluation of S on an enclosure of the point.
 
 use super::ellipsoid::Ellipsoid;
+use super::witness::WitnessSearch;
 use super::witness::{WitnessPoint, find_witness, witness_at_value};
-use crate::elim::f4::zmpoly_mod;
-use crate::elim::poisson::SquareSystem;
-use crate::number::reconstruct::{Fp, prime31};
+use crate::number::prime31::{Fp, prime31};
 use crate::number::{Q, dyadic, dyadic_floor, qi};
+use crate::poly::modp::{ModAlgebra, poly_gcd_mod, zpoly_mod};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::zpoly::DyadicSigner;
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
-use crate::roots::krawczyk::{Dyadic3, Fix, System, ZeroBox, eval_box};
-use crate::roots::krawczyk_filter::{BallSystem, enclose_on};
-use crate::roots::modrur::Declined;
-use crate::roots::poisson::{
-    ModAlgebra, PoissonRur, ValueMap, coordinate_eliminants, poly_gcd_mod, solve_square,
-    value_bound_bits, value_polynomial, zpoly_mod,
-};
 use crate::roots::{RealAlg, RootInterval, isolate_squarefree};
+use crate::system::groebner_modp::zmpoly_mod;
+use crate::system::krawczyk::{Dyadic3, Fix, System, ZeroBox, eval_box};
+use crate::system::krawczyk_filter::{BallSystem, enclose_on};
+use crate::system::rur_modular::Declined;
+use crate::system::rur_square::{
+    PoissonRur, ValueMap, coordinate_eliminants, solve_square, value_bound_bits, value_polynomial,
+};
+use crate::system::square_resultant::SquareSystem;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -217,26 +218,22 @@ impl PoissonAnalysis {
         }
         Some(Some(out))
     }
+}
 
-    /// A witness near the real critical point whose value is `value`.
-    pub fn witness(
-        &self,
-        value: &RealAlg,
-        e: &Ellipsoid,
-        s: &QMPoly,
-        want: i32,
-    ) -> Option<WitnessPoint> {
+impl WitnessSearch for PoissonAnalysis {
+    /// A witness near the real critical point whose value is `v`.
+    fn witness(&self, v: &RealAlg, e: &Ellipsoid, s: &QMPoly, want: i32) -> Option<WitnessPoint> {
         if !self.separates() {
-            return witness_at_value(&self.values, value, e, s, want, &|i, bits| {
+            return witness_at_value(&self.values, v, e, s, want, &|i, bits| {
                 self.approx_point(i, bits)
             });
         }
         // the points in the order of their approximate values' distance to
-        // the isolating interval of `value` (0 inside): the nearest is the
+        // the isolating interval of `v` (0 inside): the nearest is the
         // one (a witness is checked exactly, so an imprecise choice can
         // only cost a retry, never a wrong answer).  No refinement of
-        // `value`: a root of D(u) of high degree is costly to refine.
-        let (lo, hi) = value.interval();
+        // `v`: a root of D(u) of high degree is costly to refine.
+        let (lo, hi) = v.interval();
         let approx = self.approx_values(s);
         let mut order: Vec<(Q, usize)> = approx
             .iter()
@@ -378,7 +375,7 @@ pub fn analyze_minors(
 
 /// The real roots of `critical` (a factor of the RUR's squarefree `w`)
 /// read off the census, without an isolation: `None` unless every box is
-/// either real ([`CensusBox::is_real`](crate::roots::census::CensusBox::is_real))
+/// either real ([`CensusBox::is_real`](crate::system::census::CensusBox::is_real))
 /// or proved to hold a non-real zero with a non-real `ℓ`, and the real
 /// boxes' ℓ-intervals `ℓ(centre) ± Σ|ℓᵢ|·half` are pairwise disjoint.
 ///
@@ -390,7 +387,7 @@ pub fn analyze_minors(
 /// intervals are those of the boxes, about 2^-40 relative.
 pub(crate) fn census_real_roots(
     critical: &ZPoly,
-    census: &crate::roots::census::ZeroCensus,
+    census: &crate::system::census::ZeroCensus,
     form: [i64; 3],
 ) -> Option<Vec<RealAlg>> {
     let mut spans: Vec<(Q, Q)> = Vec::new();
@@ -398,7 +395,7 @@ pub(crate) fn census_real_roots(
     // 2^-50 of the exact ones relative to Σ|ℓᵢ|·|imᵢ| (with room to spare),
     // so `|Σ ℓᵢ imᵢ| − slack > Σ|ℓᵢ|·half` proves Im ℓ ≠ 0 on the box
     let lf = form.map(|l| l as f64);
-    let im_excludes_zero = |b: &crate::roots::census::CensusBox| {
+    let im_excludes_zero = |b: &crate::system::census::CensusBox| {
         let (mut mid, mut size, mut rad) = (0.0f64, 0.0f64, 0.0f64);
         for (l, z) in lf.iter().zip(&b.centre) {
             mid += l * z.im;
@@ -464,7 +461,7 @@ fn grid_index(x: &Q, g: i64, up: bool) -> BigInt {
 
 /// `ℓ(re centre) ± Σ|ℓᵢ|·half`, exactly: the values of ℓ on the real
 /// points of the box.
-fn real_ell_span(b: &crate::roots::census::CensusBox, form: [i64; 3]) -> Option<(Q, Q)> {
+fn real_ell_span(b: &crate::system::census::CensusBox, form: [i64; 3]) -> Option<(Q, Q)> {
     let q = |x: f64| crate::number::float::double_value(x);
     let h = q(b.half)?;
     let mut mid = Q::zero();
@@ -487,7 +484,7 @@ fn real_ell_span(b: &crate::roots::census::CensusBox, form: [i64; 3]) -> Option<
 /// 2^-40 instead of from the isolation's widths.
 fn narrow_from_census(
     points: &mut [RealAlg],
-    census: &crate::roots::census::ZeroCensus,
+    census: &crate::system::census::ZeroCensus,
     form: [i64; 3],
 ) {
     let spans: Vec<(Q, Q)> = census
@@ -758,7 +755,7 @@ fn coordinate_mahler_bits(
     nf: usize,
     bezout: usize,
 ) -> Result<Option<[u64; 3]>, Declined> {
-    let sqrt_bits = crate::roots::poisson::sqrt_bits(rur.w.degree().unwrap_or(0) + 1);
+    let sqrt_bits = crate::system::rur_square::sqrt_bits(rur.w.degree().unwrap_or(0) + 1);
     let rb = rur.leading_resultant().bits();
     let mahler = |p: &ZPoly| -> u64 {
         let top = p.coeffs().iter().map(|c| c.bits()).max().unwrap_or(0);
@@ -766,13 +763,13 @@ fn coordinate_mahler_bits(
     };
     let guess = mahler(&rur.w);
     let estimate = direct_value_bits(rur, h, nf, &[guess; 3]);
-    let target = crate::roots::poisson::value_target_bits(resultant_bits, nf, bezout, None);
+    let target = crate::system::rur_square::value_target_bits(resultant_bits, nf, bezout, None);
     #[cfg(test)]
     if GENERAL_BOUND_ONLY.with(|c| c.get()) {
         return Ok(None);
     }
     let others = (0..3)
-        .filter(|&v| rur.form != crate::roots::poisson::unit_form(v))
+        .filter(|&v| rur.form != crate::system::rur_square::unit_form(v))
         .count() as u64;
     if 3 * target.saturating_sub(estimate) <= 2 * others * rur.bound_bits {
         return Ok(None);

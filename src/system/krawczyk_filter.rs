@@ -88,7 +88,7 @@ impl BallSystem {
     }
 
     /// [`BallSystem::eval`] in any ball arithmetic (real, or complex for
-    /// [`crate::roots::census`]).
+    /// [`crate::system::census`]).
     pub(crate) fn eval_in<T: BallArith>(&self, x: &[T; 3]) -> Vec<T> {
         let pw = powers(x, self.deg);
         let mv: Vec<T> = self.monos.iter().map(|m| monomial(&pw, m)).collect();
@@ -316,7 +316,7 @@ fn to_zero_box(k: &[BallR; 3], r: f64) -> Option<ZeroBox> {
 mod tests {
     use super::*;
     use crate::poly::parse_poly;
-    use crate::roots::krawczyk::tests::{q, sys};
+    use crate::system::krawczyk::tests::{q, sys};
     use proptest::prelude::*;
 
     /// True when the exact point lies in the box.

@@ -33,10 +33,10 @@
 //! det(F₃(x, y, 1) on K[x, y]/(F₁(x, y, 1), F₂(x, y, 1)))` when the binary
 //! resultant is non-zero (else another variable plays z).
 
-use super::f4::{
+use super::groebner_modp::{
     ModGb, ModPoly, ModQuotient, Mono, exps, groebner_mod, mono, normalize, zmpoly_mod,
 };
-use crate::number::reconstruct::Fp;
+use crate::number::prime31::Fp;
 use crate::poly::ZMPoly;
 use crate::poly::mpoly::{X, Y, Z};
 use num_bigint::BigInt;
@@ -82,14 +82,14 @@ pub fn leading_form(p: &ZMPoly) -> ZMPoly {
 
 impl SquareSystem {
     /// The system, or `None` when a polynomial is zero or constant, or of
-    /// a degree beyond the F4 limit [`MAX_DEGREE`](super::f4::MAX_DEGREE)
+    /// a degree beyond the F4 limit [`MAX_DEGREE`](super::groebner_modp::MAX_DEGREE)
     /// (its monomials do not fit [`Mono`]).
     pub fn new(gens: [ZMPoly; 3]) -> Option<SquareSystem> {
         let mut degs = [0u32; 3];
         for (d, g) in degs.iter_mut().zip(&gens) {
             *d = g
                 .total_degree()
-                .filter(|&d| d > 0 && d <= super::f4::MAX_DEGREE)?;
+                .filter(|&d| d > 0 && d <= super::groebner_modp::MAX_DEGREE)?;
         }
         let forms = std::array::from_fn(|i| leading_form(&gens[i]));
         Some(SquareSystem {

@@ -14,7 +14,8 @@
 //! `M/2`, hence is zero: `D·Q̃ = H` exactly.  All arithmetic in the loop is
 //! on machine words; big integers appear only in the CRT.
 
-use crate::number::reconstruct::{CrtVec, Fp, prime31, symmetric_bits};
+use crate::number::prime31::{CrtVec, Fp, prime31};
+use crate::number::reconstruct::symmetric_bits;
 use crate::poly::ZMPoly;
 use crate::poly::ZPoly;
 use crate::poly::mpoly::{X, Y, Z};

@@ -171,7 +171,7 @@ const MAX_KRYLOV_PRIMES: usize = 3000;
 /// The Krylov vectors `v, M v, …, Mⁿ v` modulo p (`M` by columns, n its
 /// size), in a vector with room for `cap` columns.
 fn krylov_mod(
-    fp: &crate::number::reconstruct::Fp,
+    fp: &crate::number::prime31::Fp,
     mp: &[Vec<u64>],
     v: Vec<u64>,
     cap: usize,
@@ -230,7 +230,7 @@ struct KrylovData<'a> {
 /// fraction-free).
 #[allow(clippy::type_complexity)]
 fn modular_dependency(kd: &KrylovData) -> Option<(Vec<Q>, Option<Vec<Vec<Q>>>)> {
-    use crate::number::reconstruct::{CrtVec, Fp, prime31};
+    use crate::number::prime31::{CrtVec, Fp, prime31};
     let ws = kd.ws;
     let n = ws.len() - 1;
     let mut best: Option<usize> = None;
@@ -303,7 +303,8 @@ fn modular_dependency(kd: &KrylovData) -> Option<(Vec<Q>, Option<Vec<Vec<Q>>>)> 
         }
         next_bits = crt.modulus_bits() + (crt.modulus_bits() / 4).max(62);
         crt.flush();
-        let Some((nums, den)) = crate::roots::modrur::reconstruct(crt.values(), crt.modulus())
+        let Some((nums, den)) =
+            crate::number::reconstruct::reconstruct_common(crt.values(), crt.modulus())
         else {
             continue;
         };
@@ -360,7 +361,7 @@ fn modular_dependency(kd: &KrylovData) -> Option<(Vec<Q>, Option<Vec<Vec<Q>>>)> 
 /// column has one).  Later columns then hold the coordinates of each
 /// column in the pivot columns.
 fn gauss_jordan_mod(
-    fp: &crate::number::reconstruct::Fp,
+    fp: &crate::number::prime31::Fp,
     a: &mut [Vec<u64>],
     stop: usize,
 ) -> (Vec<usize>, usize) {
@@ -474,7 +475,7 @@ pub type KrylovShape = (QPoly, Option<Vec<Vec<Q>>>);
 /// make A cyclic, or would not separate): a wrong `false` costs a
 /// candidate, never a wrong answer.
 pub fn krylov_full_likely(m: &QMatrix, v: &[Q]) -> bool {
-    use crate::number::reconstruct::{Fp, prime31};
+    use crate::number::prime31::{Fp, prime31};
     let n = v.len();
     let mut tried = 0;
     for j in 0..8 {
@@ -733,9 +734,9 @@ fn krylov_from(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::elim::groebner::{MonoOrder, groebner};
     use crate::number::{q, qi};
     use crate::poly::parse_poly;
+    use crate::system::groebner::{MonoOrder, groebner};
 
     #[test]
     fn minpoly_of_coordinates() {

@@ -3,7 +3,7 @@
 //! need no verification: every object lifted by the CRT is a *resultant*
 //! (an integer polynomial in the input coefficients), its image modulo p is
 //! what is computed modulo p, and Sombra's bound on its size says how many
-//! primes determine it ([`crate::elim::poisson`]).
+//! primes determine it ([`crate::system::square_resultant`]).
 //!
 //! * The **RUR** with respect to a linear form ℓ ([`solve_square`]):
 //!   `w(u) = Res(u − ℓ, f) = ± R̄ · ∏_ξ (u − ℓ(ξ))` over the
@@ -19,17 +19,18 @@
 //!   `h(ξ(T))` in `F_p[T]/(f)`; its size is bounded through Landau's
 //!   inequality by Sombra's bound on `Res(u − h, f)`.
 
-use super::modrur::Declined;
-use crate::elim::f4::{
-    ModGb, ModPoly, ModQuotient, Mono, SparseMult, exps, mono, rank, zmpoly_mod,
-};
-use crate::elim::poisson::{PrimeFail, SquareSystem, max_coeff, resultant_bound_bits};
+use super::rur_modular::Declined;
 use crate::number::Q;
 use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
-use crate::number::reconstruct::{BlockResidues, CrtVec, Fp, prime31};
+use crate::number::prime31::{BlockResidues, CrtVec, Fp, prime31};
+use crate::poly::modp::{ModAlgebra, berlekamp_massey, rem_mod};
 use crate::poly::{ZMPoly, ZPoly};
+use crate::system::groebner_modp::{
+    ModGb, ModPoly, ModQuotient, Mono, SparseMult, exps, mono, rank, zmpoly_mod,
+};
+use crate::system::square_resultant::{PrimeFail, SquareSystem, max_coeff, resultant_bound_bits};
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 /// The exact RUR of a square system (see the module documentation).
 #[derive(Clone, Debug)]
@@ -63,7 +64,7 @@ pub struct PoissonRur {
 #[derive(Clone, Debug)]
 pub struct RurCensus {
     /// One certified box per zero of F.
-    pub zeros: crate::roots::census::ZeroCensus,
+    pub zeros: crate::system::census::ZeroCensus,
     /// `±R̄` exactly (its own CRT beyond Sombra's bound on it).
     pub rbar: BigInt,
     /// The primes of R̄'s CRT.
@@ -93,7 +94,7 @@ impl PoissonRur {
 
     /// The zero at a rational τ rounded down to dyadics of scale `2^-k`
     /// (integer arithmetic only; `None` where `w′(τ) = 0`).
-    pub fn point_dyadic(&self, t: &Q, k: usize) -> Option<crate::roots::krawczyk::Dyadic3> {
+    pub fn point_dyadic(&self, t: &Q, k: usize) -> Option<crate::system::krawczyk::Dyadic3> {
         let (dn, dd) = self.wd.eval_homogeneous(t.numer(), t.denom());
         if dn.is_zero() {
             return None;
@@ -105,7 +106,7 @@ impl PoissonRur {
             num[i] = n * &dd;
             den[i] = d * &dn;
         }
-        Some(crate::roots::krawczyk::Dyadic3::floor_ratio(&num, &den, k))
+        Some(crate::system::krawczyk::Dyadic3::floor_ratio(&num, &den, k))
     }
 
     /// The zero at a rational τ (exact; `None` where `w′(τ) = 0`).
@@ -155,47 +156,6 @@ pub(crate) fn kronecker_mod(
     let fd = alg.derivative();
     let g: [Vec<u64>; 3] = std::array::from_fn(|k| mulmod(fp, &sol[1 + k], &fd, c));
     Some((alg.low(), g))
-}
-
-/// The minimal polynomial (ascending, monic) of a linearly recurrent
-/// sequence over F_p by Berlekamp–Massey: the monic `m` of least degree L
-/// with `Σ_i m_i a_{k+i} = 0` for all `k + L < a.len()`.
-fn berlekamp_massey(fp: &Fp, a: &[u64]) -> Vec<u64> {
-    // connection polynomial C(x) = 1 + c₁x + … with a_k + Σ c_i a_{k−i} = 0
-    let mut c: Vec<u64> = vec![1];
-    let mut b: Vec<u64> = vec![1];
-    let (mut l, mut m, mut bd) = (0usize, 1usize, 1u64);
-    for k in 0..a.len() {
-        crate::budget::check();
-        let mut d = a[k];
-        for i in 1..=l.min(c.len() - 1) {
-            d = fp.add(d, fp.mul(c[i], a[k - i]));
-        }
-        if d == 0 {
-            m += 1;
-            continue;
-        }
-        let coef = fp.mul(d, fp.inv(bd).expect("non-zero discrepancy"));
-        let old = c.clone();
-        if c.len() < b.len() + m {
-            c.resize(b.len() + m, 0);
-        }
-        for (i, &bi) in b.iter().enumerate() {
-            c[i + m] = fp.sub(c[i + m], fp.mul(coef, bi));
-        }
-        if 2 * l <= k {
-            l = k + 1 - l;
-            b = old;
-            bd = d;
-            m = 1;
-        } else {
-            m += 1;
-        }
-    }
-    c.resize(l + 1, 0);
-    // m(T) = T^L·C(1/T): ascending coefficients are C reversed
-    c.reverse();
-    c
 }
 
 /// The coordinates of the normal forms of x, y, z on `basis`.
@@ -292,217 +252,66 @@ pub(crate) fn kronecker_sparse(
     Some((alg.low(), g))
 }
 
-/// Arithmetic in `F_p[T]/(f)` for a monic `f` of degree n ≥ 1.
-pub(crate) struct ModAlgebra {
-    fp: Fp,
-    /// `T^n = Σ c_j T^j` (length n).
-    c: Vec<u64>,
-    /// Shoup's quotients of c, for [`ModAlgebra::times_t`].
-    cw: Vec<u64>,
+/// coprime to f, as the polynomial of degree < deg f: computed modulo word
+/// primes (`num · den⁻¹` in `F_p[T]/(f)`), lifted by the CRT and rational
+/// reconstruction with a common denominator on a geometric schedule, and
+/// returned only when `q·den ≡ num (mod f)` holds exactly (f, primitive,
+/// divides `d·(q·den − num)` over Z, d the common denominator).  Exact
+/// extended Euclid over Q would build the same answer through remainders
+/// whose coefficients are far longer.  `None` when no verified answer came
+/// within `max_primes`.
+pub(crate) fn quotient_mod_f(
+    num: &ZPoly,
+    den: &ZPoly,
+    f: &ZPoly,
+    max_primes: usize,
+) -> Option<crate::poly::QPoly> {
+    let n = f.degree().filter(|&n| n >= 1)?;
+    let mut crt = CrtVec::new(n);
+    let mut next_bits = 62u64;
+    for j in 0..max_primes {
+        crate::budget::check_now();
+        let fp = Fp::new(prime31(j));
+        let red = |p: &ZPoly| -> Vec<u64> { p.coeffs().iter().map(|c| fp.reduce_big(c)).collect() };
+        let fm = red(f);
+        if fm.last() == Some(&0) {
+            continue;
+        }
+        let Some(alg) = ModAlgebra::from_poly(fp, &fm) else {
+            continue;
+        };
+        let reduce = |a: &[u64]| -> Vec<u64> {
+            let mut r = rem_mod(&fp, a, &fm);
+            r.resize(n, 0);
+            r
+        };
+        let Some(dinv) = alg.inv(&reduce(&red(den))) else {
+            continue;
+        };
+        crt.push(&fp, &alg.mul(&reduce(&red(num)), &dinv));
+        if crt.modulus_bits() < next_bits {
+            continue;
+        }
+        next_bits = crt.modulus_bits() + (crt.modulus_bits() / 4).max(62);
+        crt.flush();
+        let Some((nums, d)) =
+            crate::number::reconstruct::reconstruct_common(crt.values(), crt.modulus())
+        else {
+            continue;
+        };
+        // q = Σ nums_i T^i / d: f divides nums·den − d·num over Z (f is
+        // primitive: exact division over Z, no fractions)
+        let qz = ZPoly::new(nums);
+        let h = &(&qz * den) - &num.scale(&d);
+        if h.is_zero() || h.div_exact(f).is_some() {
+            return Some(qz.to_q().scale(&Q::new(BigInt::one(), d)));
+        }
+    }
+    None
 }
 
+/// Polynomials in x, y, z (modulo p) evaluated in the algebra.
 impl ModAlgebra {
-    /// From `c` with `T^n = Σ c_j T^j`.
-    pub(crate) fn from_c(fp: Fp, c: Vec<u64>) -> ModAlgebra {
-        let cw = crate::number::modkernel::shoup_quotients(fp.p, &c);
-        ModAlgebra { fp, c, cw }
-    }
-
-    /// From a polynomial with ascending residues and a non-zero leading
-    /// coefficient (made monic).
-    pub(crate) fn from_poly(fp: Fp, f: &[u64]) -> Option<ModAlgebra> {
-        let (&lc, low) = f.split_last()?;
-        if low.is_empty() {
-            return None;
-        }
-        let inv = fp.inv(lc)?;
-        let c = low.iter().map(|&a| fp.neg(fp.mul(a, inv))).collect();
-        Some(ModAlgebra::from_c(fp, c))
-    }
-
-    fn n(&self) -> usize {
-        self.c.len()
-    }
-
-    /// The low coefficients of the monic `f`.
-    pub(crate) fn low(&self) -> Vec<u64> {
-        self.c.iter().map(|&x| self.fp.neg(x)).collect()
-    }
-
-    /// `f` ascending, monic.
-    fn full(&self) -> Vec<u64> {
-        let mut f = self.low();
-        f.push(1);
-        f
-    }
-
-    /// `f′ mod f` (degree < n: f′ itself).
-    pub(crate) fn derivative(&self) -> Vec<u64> {
-        let fp = &self.fp;
-        let n = self.n();
-        let low = self.low();
-        let mut fd = vec![0u64; n];
-        for j in 1..n {
-            fd[j - 1] = fp.mul(j as u64 % fp.p, low[j]);
-        }
-        fd[n - 1] = n as u64 % fp.p;
-        fd
-    }
-
-    /// `gcd(f, f′) = 1`.
-    pub(crate) fn is_squarefree(&self) -> bool {
-        poly_gcd_mod(&self.fp, &self.full(), &self.derivative()).len() == 1
-    }
-
-    /// Product.
-    pub(crate) fn mul(&self, a: &[u64], b: &[u64]) -> Vec<u64> {
-        mulmod(&self.fp, a, b, &self.c)
-    }
-
-    /// The inverse of `a` (`None` when `gcd(a, f) ≠ 1`), by extended Euclid.
-    pub(crate) fn inv(&self, a: &[u64]) -> Option<Vec<u64>> {
-        let fp = &self.fp;
-        let n = self.n();
-        let (g, s) = euclid(fp, self.full(), a.to_vec(), Some(n));
-        // g = gcd(f, a) (not normalised), s·a ≡ g (mod f)
-        if g.len() != 1 {
-            return None;
-        }
-        let k = fp.inv(g[0])?;
-        let s = s.expect("cofactor requested");
-        Some(s.iter().map(|&x| fp.mul(x, k)).collect())
-    }
-
-    /// `Tr(T^m)` for `m < count` (power sums of the roots of f, Newton).
-    fn traces(&self, count: usize) -> Vec<u64> {
-        let fp = &self.fp;
-        let n = self.n();
-        let a = self.low(); // f = T^n + Σ a_k T^k
-        let mut p = vec![0u64; count];
-        if count == 0 {
-            return p;
-        }
-        p[0] = n as u64 % fp.p;
-        // p_1 … p_{m−1}, for the dot product with a_{n−k} … a_{n−1}
-        let mut rev: Vec<u64> = Vec::with_capacity(count);
-        for m in 1..count {
-            // p_m = −(m·a_{n−m} [m ≤ n] + Σ_{i=1}^{min(m−1, n)} a_{n−i} p_{m−i})
-            let mut acc = if m <= n {
-                fp.mul(m as u64 % fp.p, a[n - m])
-            } else {
-                0
-            };
-            let k = (m - 1).min(n);
-            if k > 0 {
-                // p_{m−1}, p_{m−2}, …, p_{m−k} against a_{n−1}, …, a_{n−k}
-                let ps = &rev[rev.len() - k..];
-                acc = fp.add(acc, crate::number::modkernel::dot(fp, ps, &a[n - k..n]));
-            }
-            p[m] = fp.neg(acc);
-            rev.push(p[m]);
-        }
-        p
-    }
-
-    /// `T·v mod f`: a shift and one fold (n products).
-    fn times_t(&self, v: &[u64]) -> Vec<u64> {
-        let mut out = Vec::with_capacity(self.n());
-        out.push(0);
-        out.extend_from_slice(&v[..self.n() - 1]);
-        self.fold_top(&mut out, v[self.n() - 1]);
-        out
-    }
-
-    /// `out ← out + top·T^n mod f` (the fold of [`Self::times_t`]).
-    fn fold_top(&self, out: &mut [u64], top: u64) {
-        if top != 0 {
-            crate::number::modkernel::axpy_shoup(self.fp.p, out, top, &self.c, &self.cw);
-        }
-    }
-
-    /// The columns `s·T^j mod f` (`j < n`) of the multiplication by `s`,
-    /// one after the other, each from the one before by a shift and a fold
-    /// (`n²` products).
-    fn mult_columns(&self, s: &[u64]) -> Vec<u64> {
-        let n = self.n();
-        let mut m = Vec::with_capacity(n * n);
-        m.extend_from_slice(&s[..s.len().min(n)]);
-        m.resize(n, 0);
-        for j in 1..n {
-            let prev = (j - 1) * n;
-            let top = m[prev + n - 1];
-            m.push(0);
-            m.extend_from_within(prev..prev + n - 1);
-            self.fold_top(&mut m[j * n..], top);
-        }
-        m
-    }
-
-    /// [`Self::mult_columns`] as 32-bit entries, for
-    /// [`mat_vec`](crate::number::modkernel::mat_vec).
-    fn mult_matrix(&self, s: &[u64]) -> Vec<u32> {
-        self.mult_columns(s).into_iter().map(|x| x as u32).collect()
-    }
-
-    /// The characteristic polynomial of the multiplication by `s`
-    /// (ascending, monic, degree n): power sums `Tr(s^k)` by baby steps
-    /// and giant steps, then Newton's identities (p > n).  With r = ⌈√(n+1)⌉
-    /// and `G = s^r`, `Tr(s^(jr+i)) = λ_j(s^i)` for the linear forms
-    /// `λ_j = Tr(G^j ·)`: the baby steps `s^i` are products by the matrix
-    /// of s, the forms `λ_(j+1)(x) = λ_j(G·x)` products by the transpose
-    /// of G's matrix (`λ_0` = the traces of the powers of T), so about
-    /// `(2√n + 4)·n²` products in all, no product modulo f.
-    pub(crate) fn charpoly(&self, s: &[u64]) -> Vec<u64> {
-        use crate::number::modkernel::{dot, mat_vec};
-        let fp = &self.fp;
-        let n = self.n();
-        let r = (1..)
-            .find(|&r: &usize| r * r > n)
-            .expect("r² > n for some r");
-        let ms = self.mult_matrix(s);
-        // baby steps s^0 … s^(r−1), then G = s^r
-        let mut one = vec![0u64; n];
-        one[0] = 1;
-        let mut baby: Vec<Vec<u64>> = vec![one];
-        for i in 1..=r {
-            crate::budget::check();
-            let next = mat_vec(fp, &ms, n, &baby[i - 1]);
-            baby.push(next);
-        }
-        let giant = baby.pop().expect("r + 1 powers");
-        let mg = self.mult_columns(&giant);
-        // power sums P_k = Tr(s^k) for k = 1 … n
-        let mut ps = vec![0u64; n + 1];
-        let mut lam = self.traces(n);
-        let mut k0 = 0;
-        while k0 <= n {
-            crate::budget::check();
-            for (i, b) in baby.iter().enumerate() {
-                let k = k0 + i;
-                if k > n {
-                    break;
-                }
-                ps[k] = dot(fp, &lam, b);
-            }
-            k0 += r;
-            if k0 <= n {
-                lam = mg.chunks_exact(n).map(|col| dot(fp, &lam, col)).collect();
-            }
-        }
-        // Newton: χ = Σ e_k u^(n−k), k·e_k = −Σ_{i=1}^k P_i e_{k−i}
-        let mut e = vec![0u64; n + 1];
-        e[0] = 1;
-        // prev = P_n, …, P_1: Σ P_i e_{k−i} = e_0 … e_{k−1} against P_k … P_1
-        let prev: Vec<u64> = ps[1..].iter().rev().copied().collect();
-        for k in 1..=n {
-            let acc = dot(fp, &e[..k], &prev[n - k..]);
-            let inv = fp.inv(k as u64 % fp.p).expect("p > n");
-            e[k] = fp.neg(fp.mul(acc, inv));
-        }
-        e.reverse();
-        e
-    }
-
     /// [`ModAlgebra::eval`] when coordinate `sep` is T itself (the
     /// separating coordinate of a RUR; `xyz[sep]` is not read): a term
     /// `c·u1^a·u2^b·T^e` adds `c·T^e·u2^b` (powers of u2 by its matrix,
@@ -647,216 +456,6 @@ impl ModAlgebra {
         }
         horner(by_x, xyz[0])
     }
-}
-
-fn trimmed(a: &[u64]) -> Vec<u64> {
-    let mut v = a.to_vec();
-    while v.last() == Some(&0) {
-        v.pop();
-    }
-    v
-}
-
-/// `a rem b` modulo p (ascending, trimmed; `b` non-zero).
-fn rem_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
-    let mut r = a.to_vec();
-    let b: Vec<u32> = trimmed(b).iter().map(|&x| x as u32).collect();
-    let il = fp
-        .inv(*b.last().expect("non-zero divisor") as u64)
-        .expect("non-zero");
-    divide_lazy(fp, &mut r, &b, il, None);
-    reduced_trimmed(fp, &r)
-}
-
-/// `num / den` in `Q[T]/(f)` for a square-free `f` (degree ≥ 1) and `den`
-/// coprime to f, as the polynomial of degree < deg f: computed modulo word
-/// primes (`num · den⁻¹` in `F_p[T]/(f)`), lifted by the CRT and rational
-/// reconstruction with a common denominator on a geometric schedule, and
-/// returned only when `q·den ≡ num (mod f)` holds exactly (f, primitive,
-/// divides `d·(q·den − num)` over Z, d the common denominator).  Exact
-/// extended Euclid over Q would build the same answer through remainders
-/// whose coefficients are far longer.  `None` when no verified answer came
-/// within `max_primes`.
-pub(crate) fn quotient_mod_f(
-    num: &ZPoly,
-    den: &ZPoly,
-    f: &ZPoly,
-    max_primes: usize,
-) -> Option<crate::poly::QPoly> {
-    let n = f.degree().filter(|&n| n >= 1)?;
-    let mut crt = CrtVec::new(n);
-    let mut next_bits = 62u64;
-    for j in 0..max_primes {
-        crate::budget::check_now();
-        let fp = Fp::new(prime31(j));
-        let red = |p: &ZPoly| -> Vec<u64> { p.coeffs().iter().map(|c| fp.reduce_big(c)).collect() };
-        let fm = red(f);
-        if fm.last() == Some(&0) {
-            continue;
-        }
-        let Some(alg) = ModAlgebra::from_poly(fp, &fm) else {
-            continue;
-        };
-        let reduce = |a: &[u64]| -> Vec<u64> {
-            let mut r = rem_mod(&fp, a, &fm);
-            r.resize(n, 0);
-            r
-        };
-        let Some(dinv) = alg.inv(&reduce(&red(den))) else {
-            continue;
-        };
-        crt.push(&fp, &alg.mul(&reduce(&red(num)), &dinv));
-        if crt.modulus_bits() < next_bits {
-            continue;
-        }
-        next_bits = crt.modulus_bits() + (crt.modulus_bits() / 4).max(62);
-        crt.flush();
-        let Some((nums, d)) = super::modrur::reconstruct(crt.values(), crt.modulus()) else {
-            continue;
-        };
-        // q = Σ nums_i T^i / d: f divides nums·den − d·num over Z (f is
-        // primitive: exact division over Z, no fractions)
-        let qz = ZPoly::new(nums);
-        let h = &(&qz * den) - &num.scale(&d);
-        if h.is_zero() || h.div_exact(f).is_some() {
-            return Some(qz.to_q().scale(&Q::new(BigInt::one(), d)));
-        }
-    }
-    None
-}
-
-/// `Res(a, b)` modulo p by Euclid's algorithm, for `a`, `b` with non-zero
-/// leading coefficients modulo p (ascending): `Res(a, b) = (−1)^(mn)
-/// lc(b)^(m − deg r)·Res(b, r)` with `r = a rem b`, down to a constant.
-pub(crate) fn resultant_mod(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
-    let (mut a, mut b) = (trimmed(a), trimmed(b));
-    let mut acc = 1u64;
-    loop {
-        let (Some(m), Some(n)) = (a.len().checked_sub(1), b.len().checked_sub(1)) else {
-            return 0;
-        };
-        if n == 0 {
-            return fp.mul(acc, fp.pow(b[0], m as u64));
-        }
-        let r = rem_mod(fp, &a, &b);
-        if r.is_empty() {
-            return 0;
-        }
-        if m * n % 2 == 1 {
-            acc = fp.neg(acc);
-        }
-        acc = fp.mul(acc, fp.pow(b[n], (m - (r.len() - 1)) as u64));
-        (a, b) = (b, r);
-    }
-}
-
-/// The gcd modulo p (not normalised; ascending, trimmed).
-pub(crate) fn poly_gcd_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
-    euclid(fp, a.to_vec(), b.to_vec(), None).0
-}
-
-/// Euclid's algorithm modulo p on `(a, b)`: the gcd (reduced, trimmed, not
-/// normalised) and, when `cofactor = Some(len)`, an `s` of length `len`
-/// with `s·b ≡ gcd (mod a)` (cofactors truncated to `len` terms, which
-/// is exact when `len > deg a`).
-///
-/// Rows are kept lazily below p² and updated by the vector kernel of the
-/// modular product (`row ← row + t·d` with the divisor `d` made monic and
-/// stored on 32 bits); only leading coefficients are reduced on the way,
-/// and a remainder once, when it becomes the next divisor.
-fn euclid(
-    fp: &Fp,
-    a: Vec<u64>,
-    b: Vec<u64>,
-    cofactor: Option<usize>,
-) -> (Vec<u64>, Option<Vec<u64>>) {
-    let len = cofactor.unwrap_or(0);
-    let (mut r0, mut r1) = (a, b);
-    let mut s0 = vec![0u64; len];
-    let mut s1 = vec![0u64; len];
-    if len > 0 {
-        s1[0] = 1;
-    }
-    loop {
-        trim_lazy(fp, &mut r1);
-        if r1.is_empty() {
-            break;
-        }
-        // the divisor and its cofactor reduced once, on 32 bits; the
-        // quotient's terms are top·lc⁻¹
-        let d = crate::number::modkernel::reduce_to_u32(fp, &r1);
-        let il = fp
-            .inv(*d.last().expect("non-empty") as u64)
-            .expect("non-zero");
-        let e = (len > 0).then(|| {
-            // entries past the cofactor's degree were never touched
-            let sl = s1.iter().rposition(|&x| x != 0).map_or(0, |i| i + 1);
-            let mut e = crate::number::modkernel::reduce_to_u32(fp, &s1[..sl]);
-            while e.last() == Some(&0) {
-                e.pop();
-            }
-            e
-        });
-        divide_lazy(fp, &mut r0, &d, il, e.as_deref().map(|e| (&mut s0[..], e)));
-        std::mem::swap(&mut r0, &mut r1);
-        std::mem::swap(&mut s0, &mut s1);
-    }
-    let g = reduced_trimmed(fp, &r0);
-    let s = (len > 0).then(|| s0.iter().map(|&x| fp.reduce(x)).collect());
-    (g, s)
-}
-
-/// `r ← r rem d` for `d` with 32-bit entries below p and leading
-/// coefficient inverse `il`, `r` with entries below p² (left so, trimmed of
-/// leading zeros modulo p); with `cof = Some((s, e))` also `s ← s − q·e`
-/// for the quotient q (terms past `s.len()` dropped).
-fn divide_lazy(
-    fp: &Fp,
-    r: &mut Vec<u64>,
-    d: &[u32],
-    il: u64,
-    mut cof: Option<(&mut [u64], &[u32])>,
-) {
-    let fold = crate::number::modkernel::fold_row_kernel();
-    let p2 = fp.p2;
-    let low = &d[..d.len() - 1];
-    trim_lazy(fp, r);
-    while r.len() >= d.len() {
-        let top = fp.reduce(*r.last().expect("non-empty"));
-        let k = r.len() - d.len();
-        let t = fp.neg(fp.mul(top, il));
-        let end = r.len() - 1;
-        fold(&mut r[k..end], t, low, p2);
-        if let Some((s, e)) = cof.as_mut()
-            && k < s.len()
-        {
-            let m = e.len().min(s.len() - k);
-            fold(&mut s[k..k + m], t, &e[..m], p2);
-        }
-        r.pop();
-        trim_lazy(fp, r);
-    }
-}
-
-/// Drops the leading entries that are zero modulo p.
-fn trim_lazy(fp: &Fp, r: &mut Vec<u64>) {
-    while let Some(&x) = r.last() {
-        if fp.reduce(x) != 0 {
-            break;
-        }
-        r.pop();
-    }
-}
-
-/// Entries reduced modulo p, leading zeros dropped.
-fn reduced_trimmed(fp: &Fp, a: &[u64]) -> Vec<u64> {
-    let r: Vec<u64> = a.iter().map(|&x| fp.reduce(x)).collect();
-    trimmed(&r)
-}
-
-/// Residues of an integer polynomial (ascending).
-pub(crate) fn zpoly_mod(fp: &Fp, p: &ZPoly) -> Vec<u64> {
-    p.coeffs().iter().map(|c| fp.reduce_big(c)).collect()
 }
 
 /// The linear form of the variable `v`.
@@ -1061,7 +660,7 @@ fn try_census(
     if w.degree() != Some(n) {
         return None;
     }
-    let zeros = crate::roots::census::census(&sys.gens, &w, &v)?;
+    let zeros = crate::system::census::census(&sys.gens, &w, &v)?;
     // the census proves n distinct zeros: exactly the Bézout number
     if zeros.boxes.len() != n {
         return None;
@@ -1294,85 +893,6 @@ pub fn value_polynomial(
     ))
 }
 
-/// `Res_λ(φ(λ), sd·u·den(λ) − sn·num(λ))` exactly, for `φ` of degree
-/// n ≥ 1 and integer `num`, `den` (not zero), by the CRT over word primes
-/// up to Hadamard's bound on the Sylvester matrix (L1 norms of the rows):
-/// modulo p it is `lc(φ)^(k − deg den)·Res(φ, den)·Σ_i sn^(n−i)·sd^i·χ_i·u^i`,
-/// k = max(deg num, deg den) and χ the characteristic polynomial of the
-/// multiplication by `num/den` in `F_p[λ]/(φ)` (Poisson's formula, ∏ over
-/// the roots of φ of `sd·den·u − sn·num`).  `None` when `Res(φ, den)`
-/// vanishes modulo the first primes (den vanishes at a root of φ, or is
-/// likely to), so that the caller's general resultant runs instead.
-pub(crate) fn value_resultant(
-    phi: &ZPoly,
-    num: &ZPoly,
-    den: &ZPoly,
-    sn: &BigInt,
-    sd: &BigInt,
-) -> Option<ZPoly> {
-    let n = phi.degree().filter(|&n| n >= 1)?;
-    let (dn, dd) = (num.degree()?, den.degree()?);
-    let k = dn.max(dd);
-    let l1 = |p: &ZPoly| -> BigInt { p.coeffs().iter().map(|c| c.abs()).sum() };
-    let g1 = sd.abs() * l1(den) + sn.abs() * l1(num);
-    let bound = k as u64 * l1(phi).bits() + n as u64 * g1.bits();
-    crate::budget::check_size("a resultant", n + 1, bound);
-    let ints: Vec<&BigInt> = [phi, num, den]
-        .iter()
-        .flat_map(|p| p.coeffs())
-        .chain([sn, sd])
-        .collect();
-    let mut blocks = BlockResidues::new(ints);
-    let mut crt = CrtVec::new(n + 1);
-    let mut degenerate = 0usize;
-    for j in 0..MAX_VALUE_PRIMES {
-        crate::budget::check_now();
-        if crt.modulus_bits() > bound + 1 {
-            return Some(ZPoly::new(crt.symmetric_values()));
-        }
-        let fp = Fp::new(prime31(j));
-        let all = blocks.residues(j, &fp);
-        let (fm, rest) = all.split_at(n + 1);
-        let (nm, rest) = rest.split_at(dn + 1);
-        let (dm, rest) = rest.split_at(dd + 1);
-        let (snp, sdp) = (rest[0], rest[1]);
-        if fm[n] == 0 || nm[dn] == 0 || dm[dd] == 0 || snp == 0 || sdp == 0 {
-            continue;
-        }
-        let res = resultant_mod(&fp, fm, dm);
-        if res == 0 {
-            degenerate += 1;
-            if crt.primes() == 0 && degenerate >= 4 {
-                return None;
-            }
-            continue;
-        }
-        let alg = ModAlgebra::from_poly(fp, fm)?;
-        let reduce = |a: &[u64]| -> Vec<u64> {
-            let mut r = rem_mod(&fp, a, fm);
-            r.resize(n, 0);
-            r
-        };
-        // den is invertible modulo φ_p: their resultant is not zero
-        let dinv = alg.inv(&reduce(dm))?;
-        let chi = alg.charpoly(&alg.mul(&reduce(nm), &dinv));
-        let mut c = fp.mul(fp.pow(fm[n], (k - dd) as u64), res);
-        // c·sn^(n−i)·sd^i from i = 0 up
-        c = fp.mul(c, fp.pow(snp, n as u64));
-        let ratio = fp.mul(sdp, fp.inv(snp).expect("non-zero"));
-        let mut out = vec![0u64; n + 1];
-        for (o, &x) in out.iter_mut().zip(&chi) {
-            *o = fp.mul(c, x);
-            c = fp.mul(c, ratio);
-        }
-        crt.push(&fp, &out);
-    }
-    None
-}
-
-/// The largest number of primes of [`value_resultant`].
-const MAX_VALUE_PRIMES: usize = 200_000;
-
 /// Sombra's bound (bits) on the coefficients of `Res(u − h, system)`.
 pub fn value_bound_bits(sys: &SquareSystem, h: &ZMPoly) -> u64 {
     let e = h.total_degree().unwrap_or(0).max(1);
@@ -1386,97 +906,11 @@ pub fn value_bound_bits(sys: &SquareSystem, h: &ZMPoly) -> u64 {
     resultant_bound_bits(&degs, &bounds)
 }
 
-/// `len` pseudo-random residues modulo p (a linear congruential
-/// generator on `seed`), for the tests of the arithmetic modulo p.
-#[cfg(test)]
-pub(crate) fn residues_for_tests(fp: &Fp, seed: &mut u64, len: usize) -> Vec<u64> {
-    (0..len)
-        .map(|_| {
-            *seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (*seed >> 33) % fp.p
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::elim::poisson::SquareSystem;
     use crate::poly::parse_poly;
-
-    /// Berlekamp–Massey finds the recurrence of a sequence built from one:
-    /// `a_{k+3} = 5a_{k+2} − 2a_{k+1} + 7a_k` (minimal polynomial
-    /// `T³ − 5T² + 2T − 7`).
-    #[test]
-    fn berlekamp_massey_finds_the_recurrence() {
-        let fp = Fp::new(prime31(4));
-        let mut a = vec![1u64, 2, 3];
-        for k in 0..20 {
-            let next = fp.add(
-                fp.sub(fp.mul(5, a[k + 2]), fp.mul(2, a[k + 1])),
-                fp.mul(7, a[k]),
-            );
-            a.push(next);
-        }
-        let m = berlekamp_massey(&fp, &a);
-        assert_eq!(m, vec![fp.neg(7), 2, fp.neg(5), 1]);
-    }
-
-    /// Naive product modulo p (ascending), for the checks below.
-    fn mul_naive(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
-        let mut r = vec![0u64; a.len() + b.len() - 1];
-        for (i, &x) in a.iter().enumerate() {
-            for (j, &y) in b.iter().enumerate() {
-                r[i + j] = fp.add(r[i + j], fp.mul(x, y));
-            }
-        }
-        r
-    }
-
-    /// The lazy Euclid (rows below p², vector row updates): inverses are
-    /// inverses, a common factor is found by the gcd and blocks the
-    /// inverse, and the remainder is that of the schoolbook division.
-    #[test]
-    fn lazy_euclid_inverse_gcd_and_remainder() {
-        let fp = Fp::new(prime31(3));
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut rnd = |len: usize| residues_for_tests(&fp, &mut seed, len);
-        for n in [1usize, 2, 7, 40, 129] {
-            let mut f = rnd(n);
-            f.push(1);
-            let alg = ModAlgebra::from_poly(fp, &f).expect("monic");
-            let a = rnd(n);
-            let inv = alg.inv(&a).expect("a random element is invertible");
-            let mut one = vec![0u64; n];
-            one[0] = 1;
-            assert_eq!(alg.mul(&a, &inv), one, "degree {n}");
-            // a common factor g of degree 3: no inverse, gcd = c·g
-            let mut g = rnd(3);
-            g.push(1);
-            let mut h = rnd(n);
-            h.push(1);
-            let fg = mul_naive(&fp, &g, &h);
-            let ag = mul_naive(&fp, &g, &rnd(n.max(2) - 1));
-            let alg = ModAlgebra::from_poly(fp, &fg).expect("monic");
-            let mut ar = rem_mod(&fp, &ag, &fg);
-            ar.resize(fg.len() - 1, 0);
-            assert!(alg.inv(&ar).is_none(), "a common factor blocks the inverse");
-            let d = poly_gcd_mod(&fp, &fg, &ag);
-            assert!(d.len() >= g.len(), "the gcd contains the common factor");
-            assert!(rem_mod(&fp, &d, &g).is_empty(), "g divides the gcd");
-            // remainder: a = q·b + r with deg r < deg b
-            let b = h.clone();
-            let q = rnd(5);
-            let r = rnd(n.min(b.len() - 1));
-            let mut a2 = mul_naive(&fp, &q, &b);
-            for (x, &y) in a2.iter_mut().zip(&r) {
-                *x = fp.add(*x, y);
-            }
-            assert_eq!(rem_mod(&fp, &a2, &b), trimmed(&r));
-        }
-    }
+    use crate::system::square_resultant::SquareSystem;
 
     /// The sparse Kronecker images (ℓ = z, Berlekamp–Massey on the sparse
     /// multiplication matrix) equal the dense ones (Krylov and a solve).

@@ -8,7 +8,7 @@
 //! multiplication by any polynomial is a matrix on `A`, and everything about
 //! the finitely many solutions (their number, coordinates, values of other
 //! polynomials) is linear algebra on those matrices (see
-//! [`crate::elim::quotient`]).  Every step is exact, so the basis — and
+//! [`crate::system::quotient`]).  Every step is exact, so the basis — and
 //! hence the solution set — is certified complete.
 
 use crate::number::Q;
@@ -584,8 +584,8 @@ mod doc_examples {
 
     #[test]
     fn doc_groebner() {
-        use crate::elim::groebner::{GPoly, MonoOrder, groebner};
         use crate::poly::parse_poly;
+        use crate::system::groebner::{GPoly, MonoOrder, groebner};
         let slots = [0, 1, 2];
         let f: Vec<GPoly> = ["x^2 + y^2 - 1", "x - y"]
             .iter()

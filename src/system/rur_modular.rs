@@ -1,6 +1,6 @@
 //! Zero-dimensional systems in x, y, z by multi-modular computation with an
 //! exact certificate: a Gröbner basis modulo 31-bit primes (F4,
-//! [`crate::elim::f4`]), the rational univariate representation modulo each
+//! [`crate::system::groebner_modp`]), the rational univariate representation modulo each
 //! prime with a *polynomial* separating element `h`, Chinese remaindering
 //! and rational reconstruction until the images stabilise, and then an exact
 //! verification over Z of both directions:
@@ -25,16 +25,17 @@
 //! Nothing computed modulo p is trusted: a wrong or premature reconstruction
 //! fails the exact checks and the caller falls back to the exact route.
 
-use super::RealAlg;
-use super::rurcheck::{Check, CheckFailure, vanish_on_roots};
-use crate::elim::f4::{
-    ModPoly, ModQuotient, Mono, groebner_mod, mono, standard_monomials_of, zmpoly_mod,
-};
+use super::rur_check::{Check, CheckFailure, vanish_on_roots};
 use crate::number::Q;
 use crate::number::modkernel::{mat_vec, mulmod, solve_columns};
-use crate::number::reconstruct::{CrtVec, Fp, prime31, rational_reconstruction, symmetric_mod};
+use crate::number::prime31::{CrtVec, Fp, prime31};
+use crate::number::reconstruct::{rational_reconstruction, reconstruct_common};
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, ZPoly};
+use crate::roots::RealAlg;
+use crate::system::groebner_modp::{
+    ModPoly, ModQuotient, Mono, groebner_mod, mono, standard_monomials_of, zmpoly_mod,
+};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -215,7 +216,7 @@ fn image_mod_p(
         // would cure
         let mut f_full = f_low.clone();
         f_full.push(1);
-        if crate::roots::poisson::poly_gcd_mod(fp, &f_full, &fd).len() > 1 {
+        if crate::poly::modp::poly_gcd_mod(fp, &f_full, &fd).len() > 1 {
             return Err(ImageFail::NotRadical);
         }
         let mut residues = f_low;
@@ -241,7 +242,7 @@ fn qmpoly_mod(fp: &Fp, p: &QMPoly) -> Option<ModPoly> {
         let n = fp.reduce_big(c.numer());
         out.push((mono(e[X], e[Y], e[Z]), fp.mul(n, fp.inv(d)?) as u32));
     }
-    crate::elim::f4::normalize(&mut out);
+    crate::system::groebner_modp::normalize(&mut out);
     Some(out)
 }
 
@@ -277,35 +278,8 @@ struct Candidate {
     den: BigInt,
 }
 
-/// Rational reconstruction of all values with a running common denominator
-/// (after the first few coefficients most are integers times it): the
-/// numerators over the final common denominator.
-pub(crate) fn reconstruct(values: &[BigInt], m: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
-    let bound_bits = (m.bits() - 1) / 2;
-    let mut den = BigInt::one();
-    // (numerator, denominator at the time) per value
-    let mut out: Vec<(BigInt, BigInt)> = Vec::with_capacity(values.len());
-    for v in values {
-        crate::budget::check();
-        let a = (v * &den).mod_floor(m);
-        let s = symmetric_mod(&a, m);
-        if s.bits() <= bound_bits {
-            out.push((s, den.clone()));
-            continue;
-        }
-        let (n, d) = rational_reconstruction(&a, m)?;
-        den *= &d;
-        if den.bits() > bound_bits {
-            return None;
-        }
-        out.push((n, den.clone()));
-    }
-    let nums = out.into_iter().map(|(n, d)| n * (&den / d)).collect();
-    Some((nums, den))
-}
-
 fn candidate_of(values: &[BigInt], m: &BigInt, n: usize) -> Option<Candidate> {
-    let (nums, den) = reconstruct(values, m)?;
+    let (nums, den) = reconstruct_common(values, m)?;
     Some(Candidate { n, nums, den })
 }
 
@@ -449,7 +423,7 @@ pub fn solve_modular_implied(
         .chain(hs.iter().filter_map(|h| h.total_degree()))
         .max()
         .unwrap_or(0);
-    if maxdeg > crate::elim::f4::MAX_DEGREE / 4 {
+    if maxdeg > crate::system::groebner_modp::MAX_DEGREE / 4 {
         return Err(Declined("degree too large for the modular route".into()));
     }
     let decline = |s: &str| Err(Declined(s.into()));
@@ -539,7 +513,7 @@ pub fn solve_modular_implied(
                 // route that would run otherwise)
                 if count.is_none() && !exact_tried {
                     exact_tried = true;
-                    count = super::zerodim::quotient_dimension(gens)
+                    count = super::rur_groebner::quotient_dimension(gens)
                         .map(|bound| CountCertificate { prime: None, bound });
                 }
                 let Some(cc) = count.clone() else {

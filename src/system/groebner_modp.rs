@@ -17,7 +17,7 @@
 //! polynomials modulo p — which is all the completeness argument of
 //! `roots::modrur` needs (see docs/maths.md).
 
-use crate::number::reconstruct::Fp;
+use crate::number::prime31::Fp;
 
 /// A monomial `x^a y^b z^c`, packed as `a | b << 8 | c << 16 | (a+b+c) << 24`
 /// (exponents and degree below 128, so products never carry).
@@ -827,9 +827,9 @@ pub fn zmpoly_mod(fp: &Fp, p: &crate::poly::ZMPoly) -> ModPoly {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::elim::groebner::{GPoly, MonoOrder, groebner};
-    use crate::number::reconstruct::prime31;
+    use crate::number::prime31::prime31;
     use crate::poly::parse_poly;
+    use crate::system::groebner::{GPoly, MonoOrder, groebner};
 
     /// A degree that does not fit the packing panics instead of packing
     /// another monomial (fuzzing found `y^788` reaching here).
@@ -861,7 +861,7 @@ mod tests {
                     }
                     g
                 };
-                let want = crate::elim::groebner::cmp_mono(&to(m), &to(n), MonoOrder::GrevLex);
+                let want = crate::system::groebner::cmp_mono(&to(m), &to(n), MonoOrder::GrevLex);
                 assert_eq!(rank(m).cmp(&rank(n)), want, "{:?} {:?}", exps(m), exps(n));
             }
         }

@@ -5,15 +5,17 @@
 //! verification of the old modular route), the exact route over Q, direct
 //! definitions of resultants and characteristic polynomials.
 
-use crate::elim::f4::zmpoly_mod;
-use crate::elim::poisson::SquareSystem;
 use crate::number::Q;
-use crate::number::reconstruct::{Fp, prime31};
+use crate::number::prime31::{Fp, prime31};
+use crate::poly::modp::ModAlgebra;
 use crate::poly::mpoly::{X, Y, Z};
 use crate::poly::{QMPoly, ZMPoly, parse_poly};
 use crate::roots::RealAlg;
-use crate::roots::poisson::{ModAlgebra, solve_square};
-use crate::roots::rurcheck::{Check, vanish_on_roots};
+use crate::system::groebner_modp::zmpoly_mod;
+use crate::system::rur_check::{Check, vanish_on_roots};
+use crate::system::rur_square::solve_square;
+use crate::system::square_resultant::SquareSystem;
+use crate::tangent::witness::WitnessSearch;
 use crate::tangent::{Ellipsoid, Verdict};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -24,7 +26,7 @@ fn zpoly(s: &str) -> ZMPoly {
 }
 
 /// The forms of `solve_square` used by the tangent route.
-const FORMS: [[i64; 3]; 4] = crate::tangent::poisson::FORMS;
+const FORMS: [[i64; 3]; 4] = crate::tangent::square_subsystem::FORMS;
 
 /// The RUR satisfies every equation at every root, exactly: `w` divides
 /// the homogenised compositions `W^k·f(V/W)` at `(V, w′)` in Z[u] (the
@@ -74,7 +76,7 @@ fn the_rur_is_exact() {
         assert!(bits <= rur.bound_bits, "{bits} > {}", rur.bound_bits);
         // the coordinate eliminants: of degree Bézout with lc ±lc(w), each
         // vanishing at its coordinate of every zero; ℓ's is w itself
-        let elims = crate::roots::poisson::coordinate_eliminants(&rur, 5000).unwrap();
+        let elims = crate::system::rur_square::coordinate_eliminants(&rur, 5000).unwrap();
         for (v, p) in elims.iter().enumerate() {
             assert_eq!(p.degree(), Some(sys.bezout()), "{gens:?}");
             assert_eq!(p.lc().abs(), rur.w.lc().abs(), "{gens:?}");
@@ -145,7 +147,7 @@ fn leading_resultant_of_linear_forms_is_the_determinant() {
 fn algebra_mod_p_is_consistent() {
     let fp = Fp::new(prime31(5));
     let mut seed = 17u64;
-    let mut rnd = |n: usize| crate::roots::poisson::residues_for_tests(&fp, &mut seed, n);
+    let mut rnd = |n: usize| crate::poly::modp::residues_for_tests(&fp, &mut seed, n);
     for n in [1usize, 2, 5, 16, 33] {
         let mut f = rnd(n);
         f.push(1);
@@ -205,7 +207,7 @@ fn algebra_mod_p_is_consistent() {
 fn charpoly_is_the_product_over_the_roots_of_a_split_f() {
     let fp = Fp::new(prime31(7));
     let mut seed = 41u64;
-    let mut rnd = |n: usize| crate::roots::poisson::residues_for_tests(&fp, &mut seed, n);
+    let mut rnd = |n: usize| crate::poly::modp::residues_for_tests(&fp, &mut seed, n);
     // (Σ cᵢ Xⁱ)·(X − a), ascending
     let times_linear = |c: &[u64], a: u64| -> Vec<u64> {
         let mut out = vec![0u64; c.len() + 1];
@@ -253,7 +255,7 @@ fn ellipsoid(e: &str) -> Ellipsoid {
 fn agrees_with_the_exact_route(e: &str, s: &str) {
     let ell = ellipsoid(e);
     let sp = parse_poly(s).unwrap();
-    let an = crate::tangent::poisson::analyze(&ell, &sp, true)
+    let an = crate::tangent::square_subsystem::analyze(&ell, &sp, true)
         .unwrap_or_else(|d| panic!("{s} on {e}: declined ({d:?})"));
     let exact = match crate::tangent::critical::analyze(&ell, &sp).unwrap() {
         crate::tangent::critical::Outcome::Finite(x) => x,
@@ -271,7 +273,7 @@ fn agrees_with_the_exact_route(e: &str, s: &str) {
     // verdict only: when every sign is decided from boxes (the float
     // filter first), one enclosure per real critical point, each holding
     // an exact critical value of its sign
-    let vo_an = crate::tangent::poisson::analyze(&ell, &sp, false).unwrap();
+    let vo_an = crate::tangent::square_subsystem::analyze(&ell, &sp, false).unwrap();
     if vo_an.judging.is_none() {
         assert_eq!(
             vo_an.enclosures.len(),
@@ -348,12 +350,12 @@ fn the_direct_bound_gives_the_same_judging_polynomial() {
         ),
     ] {
         let (ell, sp) = (ellipsoid(e), parse_poly(s).unwrap());
-        let direct = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
+        let direct = crate::tangent::square_subsystem::analyze(&ell, &sp, true).unwrap();
         let bits = direct.value_direct_bits.expect("the direct bound is used");
         assert!(bits < direct.value_bound_bits, "{s} on {e}");
-        crate::tangent::poisson::GENERAL_BOUND_ONLY.with(|c| c.set(true));
-        let general = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
-        crate::tangent::poisson::GENERAL_BOUND_ONLY.with(|c| c.set(false));
+        crate::tangent::square_subsystem::GENERAL_BOUND_ONLY.with(|c| c.set(true));
+        let general = crate::tangent::square_subsystem::analyze(&ell, &sp, true).unwrap();
+        crate::tangent::square_subsystem::GENERAL_BOUND_ONLY.with(|c| c.set(false));
         assert!(general.value_direct_bits.is_none());
         assert_eq!(direct.judging, general.judging, "{s} on {e}");
         assert!(direct.value_primes < general.value_primes, "{s} on {e}");
@@ -384,12 +386,12 @@ const CENSUS_CASES: [(&str, &str); 3] = [
 /// saves primes.
 #[test]
 fn the_census_bound_gives_the_same_rur_and_judging_polynomial() {
-    use crate::roots::poisson::NO_CENSUS;
+    use crate::system::rur_square::NO_CENSUS;
     for (e, s) in CENSUS_CASES {
         let (ell, sp) = (ellipsoid(e), parse_poly(s).unwrap());
-        let with = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
+        let with = crate::tangent::square_subsystem::analyze(&ell, &sp, true).unwrap();
         NO_CENSUS.with(|c| c.set(true));
-        let without = crate::tangent::poisson::analyze(&ell, &sp, true);
+        let without = crate::tangent::square_subsystem::analyze(&ell, &sp, true);
         NO_CENSUS.with(|c| c.set(false));
         let without = without.unwrap();
         assert!(without.rur.census.is_none());
@@ -412,7 +414,7 @@ fn the_census_bound_gives_the_same_rur_and_judging_polynomial() {
         );
         assert!(with.rur.primes < without.rur.primes, "{s} on {e}");
         // the eliminant bound from the census holds the exact eliminants
-        let elims = crate::roots::poisson::coordinate_eliminants(&without.rur, 5000).unwrap();
+        let elims = crate::system::rur_square::coordinate_eliminants(&without.rur, 5000).unwrap();
         for (v, p) in elims.iter().enumerate() {
             let bits = p.coeffs().iter().map(|x| x.bits()).max().unwrap();
             assert!(
@@ -432,11 +434,14 @@ fn the_census_bound_gives_the_same_rur_and_judging_polynomial() {
 fn census_boxes_give_the_real_roots_of_the_isolation() {
     for (e, s) in CENSUS_CASES {
         let (ell, sp) = (ellipsoid(e), parse_poly(s).unwrap());
-        let an = crate::tangent::poisson::analyze(&ell, &sp, false).unwrap();
+        let an = crate::tangent::square_subsystem::analyze(&ell, &sp, false).unwrap();
         let c = an.rur.census.as_ref().expect("the census certifies");
-        let from_boxes =
-            crate::tangent::poisson::census_real_roots(&an.critical, &c.zeros, an.rur.form)
-                .expect("every box is classified");
+        let from_boxes = crate::tangent::square_subsystem::census_real_roots(
+            &an.critical,
+            &c.zeros,
+            an.rur.form,
+        )
+        .expect("every box is classified");
         let isolated = RealAlg::roots_of(&an.critical);
         assert!(!isolated.is_empty());
         assert_eq!(from_boxes.len(), isolated.len(), "{s} on {e}");
@@ -460,7 +465,7 @@ fn census_boxes_give_the_real_roots_of_the_isolation() {
 /// it declines.
 #[test]
 fn the_census_is_about_the_system_not_the_candidate() {
-    use crate::roots::census::census;
+    use crate::system::census::census;
     let gens = [
         "x^2 + 2y^2 + 3z^2 - 6",
         "x^3 - 2x*y + z - 1",
@@ -504,8 +509,8 @@ fn the_census_is_about_the_system_not_the_candidate() {
 #[test]
 fn multiple_critical_points_are_declined() {
     let (e, s) = ("x^2 + y^2 + z^2 - 1", "x^3 - 2y*z + x*y*z + 5");
-    let d =
-        crate::tangent::poisson::analyze(&ellipsoid(e), &parse_poly(s).unwrap(), true).unwrap_err();
+    let d = crate::tangent::square_subsystem::analyze(&ellipsoid(e), &parse_poly(s).unwrap(), true)
+        .unwrap_err();
     assert!(d.0.contains("multiple zeros"), "{d:?}");
     let r = crate::tangent::decide_str(e, s).unwrap();
     assert_eq!(r.verdict(), Verdict::Separated);
@@ -551,7 +556,7 @@ proptest! {
         let ell = Ellipsoid::from_poly(&e).unwrap();
         // inputs with curves of critical points or symmetric values go to
         // other routes; here only the general-position ones are compared
-        prop_assume!(crate::tangent::poisson::analyze(&ell, &sp, true).is_ok());
+        prop_assume!(crate::tangent::square_subsystem::analyze(&ell, &sp, true).is_ok());
         prop_assume!(matches!(
             crate::tangent::critical::analyze(&ell, &sp),
             Ok(crate::tangent::critical::Outcome::Finite(_))
@@ -569,7 +574,7 @@ proptest! {
 fn witnesses_of_min_and_max_and_of_another_surface() {
     let ell = ellipsoid("2x^2 + y^2 + 3z^2 + x*y - y*z - 7");
     let sp = parse_poly("x^3 + y^3 - z^3 + x*z - 2y + 1").unwrap();
-    let an = crate::tangent::poisson::analyze(&ell, &sp, true).unwrap();
+    let an = crate::tangent::square_subsystem::analyze(&ell, &sp, true).unwrap();
     let vals = an.real_values();
     let (lo, hi) = (vals.first().unwrap(), vals.last().unwrap());
     assert!(lo.signum() < 0 && hi.signum() > 0, "an intersecting pair");
@@ -577,7 +582,7 @@ fn witnesses_of_min_and_max_and_of_another_surface() {
     let pos = an.witness(hi, &ell, &sp, 1).expect("a positive witness");
     assert_eq!((neg.sign, pos.sign), (-1, 1));
     let minus = -sp.clone();
-    let an_minus = crate::tangent::poisson::analyze(&ell, &minus, true).unwrap();
+    let an_minus = crate::tangent::square_subsystem::analyze(&ell, &minus, true).unwrap();
     let top = an_minus.real_values().last().unwrap().clone();
     let w = an.witness(&top, &ell, &minus, 1).expect("a witness for −S");
     assert_eq!(w.sign, 1);
@@ -607,7 +612,7 @@ fn witnesses_of_min_and_max_and_of_another_surface() {
 /// interval lies in it, and no dyadic with one bit less does.
 #[test]
 fn shortest_dyadics() {
-    use crate::tangent::poisson::short_dyadic_in;
+    use crate::tangent::square_subsystem::short_dyadic_in;
     let q = |n: i64, d: i64| Q::new(BigInt::from(n), BigInt::from(d));
     for (lo, hi, want) in [
         (q(1, 3), q(2, 3), (BigInt::from(1), 1)),
@@ -628,7 +633,7 @@ fn shortest_dyadics() {
 
 #[test]
 fn judging_roots_from_approximate_values() {
-    use crate::tangent::poisson::isolate_by_values;
+    use crate::tangent::square_subsystem::isolate_by_values;
     // (u + 2)(u − 1)(u − 3)(u² + 1): real roots −2, 1, 3
     let d = [[2, 1], [-1, 1], [-3, 1], [1, 0]]
         .iter()

@@ -361,13 +361,6 @@ impl IntPoly {
         IntPoly(self.0.squarefree_part())
     }
 
-    /// All distinct real roots, increasing, exactly (Descartes/VCA
-    /// isolation of the square-free part: O(n⁴ τ²) bit operations in the
-    /// worst case for degree n and τ-bit coefficients, far less in practice).
-    pub fn real_roots(&self) -> Vec<crate::roots::RealAlg> {
-        crate::roots::RealAlg::roots_of(&self.0)
-    }
-
     /// Printed in the variable `v`.
     pub fn to_string_in(&self, v: Var) -> String {
         MPoly::from_univariate(&self.0.to_q(), v.index()).to_string_canonical()
