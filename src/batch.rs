@@ -24,7 +24,7 @@ use std::sync::{Arc, Condvar, Mutex, mpsc};
 /// op's, `id`, `op` or a limit is an error of kind `bad-field`.
 ///
 /// ```
-/// use quadsect::budget::Budget;
+/// use quadsect::Budget;
 /// let line = r#"{"op":"roots","poly":"x^3000-3x^1001+1","time_limit":0}"#;
 /// let obj = serde_json::from_str(line).unwrap();
 /// let e = quadsect::batch::run_op_within(&obj, &Budget::default()).unwrap_err();
@@ -63,7 +63,7 @@ pub fn answer_line(line: &str) -> Value {
 /// exactly one answer object, never a panic.
 ///
 /// ```
-/// use quadsect::budget::Budget;
+/// use quadsect::Budget;
 /// use std::time::Duration;
 /// let none = Budget::unlimited().with_time_limit(Some(Duration::ZERO));
 /// let v = quadsect::batch::answer_line_within(r#"{"id":7,"op":"roots","poly":"x^3000-3x^1001+1"}"#, &none);
@@ -93,7 +93,7 @@ pub fn answer_line_within(line: &str, budget: &Budget) -> Value {
 /// answer).
 ///
 /// ```
-/// use quadsect::budget::Budget;
+/// use quadsect::Budget;
 /// let line = r#"{"id":"c","op":"natural","a":"sphere 0 0 0 4","b":"cylinder 1 0 0 0 0 1 1"}"#;
 /// let text = quadsect::batch::answer_line_text_within(line, &Budget::default());
 /// assert_eq!(text, quadsect::batch::answer_line_within(line, &Budget::default()).to_string());
@@ -109,7 +109,7 @@ pub fn answer_line_text_within(line: &str, budget: &Budget) -> String {
 /// file (the checker `quadsect_check` rebuilds the surfaces from it).
 ///
 /// ```
-/// use quadsect::budget::Budget;
+/// use quadsect::Budget;
 /// let line = r#"{"id":1,"op":"roots","poly":"x^2 - 2"}"#;
 /// let text = quadsect::batch::answer_line_text_echoed(line, &Budget::default());
 /// let v: serde_json::Value = serde_json::from_str(&text).unwrap();

@@ -5,12 +5,12 @@
 //!
 //! 1. **Ellipsoid vs algebraic surface** (the *tangent point method*): do an
 //!    ellipsoid `E = 0` and a surface `S = 0` intersect, touch, or stay
-//!    apart — and on which side of `S` does `E` lie?  [`tangent::decide`]
+//!    apart — and on which side of `S` does `E` lie?  [`decide`]
 //!    returns the exact minimum ν and maximum μ of S on E (they intersect
 //!    iff ν ≤ 0 ≤ μ, touch iff ν = 0 or μ = 0), the judging polynomial
 //!    D(u), and exact witness points.
 //! 2. **Two natural quadrics** (spheres, circular cylinders, right circular
-//!    cones): [`natural::classify`] says whether the intersection is two
+//!    cones): [`classify`] says whether the intersection is two
 //!    conics, a conic and a double line, lines, isolated points, empty or a
 //!    genuine space curve, and gives every conic, line and point exactly.
 //! 3. **The algebra kernel**: real roots of univariate polynomials
@@ -24,14 +24,12 @@
 //! ## One example per job
 //!
 //! ```
-//! use quadsect::{Ellipsoid, Natural, Polynomial, Var};
-//! use quadsect::tangent::{self, Verdict};
-//! use quadsect::natural::{self, Class};
+//! use quadsect::{Class, Ellipsoid, Natural, Polynomial, Var, Verdict};
 //!
 //! // 1. the paper's Example 1: separated, min 7/9 and max 187/9 exactly
 //! let e: Ellipsoid = "x^2 + y^2 + z^2 - 25".parse()?;
 //! let s: Polynomial = "(x-9)^2/9 + y^2/4 + z^2/16 - 1".parse()?;
-//! let r = tangent::decide(&e, &s)?;
+//! let r = quadsect::decide(&e, &s)?;
 //! assert_eq!(r.verdict(), Verdict::Separated);
 //! assert_eq!((r.min().unwrap().to_string(), r.max().unwrap().to_string()),
 //!            ("7/9".to_string(), "187/9".to_string()));
@@ -39,7 +37,7 @@
 //! // 2. two perpendicular unit cylinders meet in two ellipses
 //! let a: Natural = "cylinder point=0,0,0 axis=1,0,0 radius2=1".parse()?;
 //! let b: Natural = "cylinder point=0,0,0 axis=0,1,0 radius2=1".parse()?;
-//! let n = natural::classify(&a, &b)?;
+//! let n = quadsect::classify(&a, &b)?;
 //! assert_eq!(n.class(), Class::Conics);
 //! assert_eq!(n.conics(), 2);
 //!
@@ -127,7 +125,7 @@
 //!
 //! Every operation runs under a [`Budget`] (time, memory, sizes,
 //! cancellation; [`Budget::default`] unless the `_with` variant is given
-//! one).  Running out is an answer — [`tangent::Verdict::Undecided`] with
+//! one).  Running out is an answer — [`Verdict::Undecided`] with
 //! [`tangent::Undecided::Budget`] — or an error of kind
 //! [`ErrorKind::Budget`], never a hang.
 //!
@@ -176,20 +174,22 @@ pub mod tangent;
 #[cfg(test)]
 mod tests;
 
-pub use budget::{Budget, Exhausted, Limit};
+pub use budget::limits::{Budget, Exhausted, Limit};
 pub use error::{Error, ErrorKind};
 pub use geom::{cayley_rotation, is_rotation};
 pub use kernel::{
     ResultantReport, Root, RootsReport, resultant, resultant_str, resultant_with, roots, roots_str,
     roots_with,
 };
-pub use natural::{
-    Class, ClassifyOptions, Cone, Cylinder, Natural, NaturalReport, Sphere, classify, classify_with,
-};
+pub use natural::classify::classify;
+pub use natural::predicates::{ClassifyOptions, classify_with};
+pub use natural::result::{Class, NaturalReport};
+pub use natural::types::{Cone, Cylinder, Natural, Sphere};
 pub use number::{NumberMode, QSqrt, Sign};
 pub use poly::{IntPoly, Polynomial, Var};
 pub use roots::RealAlg;
-pub use tangent::{Ellipsoid, TangentOptions, TangentReport, Verdict, decide, decide_with};
+pub use tangent::api::{TangentOptions, TangentReport, Verdict, decide, decide_with};
+pub use tangent::ellipsoid::Ellipsoid;
 
 /// Parses an exact number: an integer (`-12`), a rational (`7/9`), a
 /// decimal (`1.77777777777` is exactly 177777777777/10¹¹) or a scientific

@@ -4,7 +4,7 @@
 //! limit, and `quadsect batch` streams, keeps order and ids, and ends
 //! quietly on a closed pipe.
 
-use quadsect::budget::{Budget, Limit};
+use quadsect::{Budget, Limit};
 use serde_json::Value;
 use std::io::{BufRead, BufReader, Read, Write};
 use std::process::{Command, Stdio};
@@ -423,8 +423,9 @@ fn batch_into_a_closed_pipe_ends_quietly() {
 
 #[test]
 fn library_answers_under_a_budget() {
-    use quadsect::tangent::{TangentOptions, Undecided, Verdict};
+    use quadsect::tangent::Undecided;
     use quadsect::{Class, ClassifyOptions, ErrorKind, Natural, Polynomial, Var};
+    use quadsect::{TangentOptions, Verdict};
     let none = Budget::unlimited().with_time_limit(Some(Duration::ZERO));
     // tangent: undecided with the limit
     let e: quadsect::Ellipsoid = "x^2+y^2+z^2-25".parse().unwrap();

@@ -2,8 +2,10 @@
 //! is an external crate, so it sees nothing but the public API).  CI runs it
 //! with the default features and with `--no-default-features`.
 
-use quadsect::natural::{Class, Component};
-use quadsect::tangent::{Method, Side, Undecided, Verdict};
+use quadsect::Class;
+use quadsect::Verdict;
+use quadsect::natural::Component;
+use quadsect::tangent::{Method, Side, Undecided};
 use quadsect::{
     Budget, ClassifyOptions, Cone, Cylinder, Ellipsoid, ErrorKind, IntPoly, Limit, Natural,
     Polynomial, QSqrt, Rational, RealAlg, Sign, Sphere, TangentOptions, Var,

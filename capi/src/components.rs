@@ -8,9 +8,10 @@ use crate::boundary::{Answer, answer_into, qs_error, read_ref};
 use crate::float::{exact, round_outward};
 use crate::options::{budget_of, qs_options};
 use crate::typed::{natural_of, natural_result, qs_natural_f64, qs_natural_result};
+use engine::ClassifyOptions;
 use engine::natural::{
-    ClassifyOptions, Component, ConicKind, CurveBranch, EPoint, Exact, PointKind, SingularKind,
-    SingularPoint, normalize_axis_direction, normalize_plane,
+    Component, ConicKind, CurveBranch, EPoint, Exact, PointKind, SingularKind, SingularPoint,
+    normalize_axis_direction, normalize_plane,
 };
 use engine::{BigInt, Budget, Error, QSqrt, Rational};
 use num_traits::Zero;
@@ -538,7 +539,7 @@ fn components(
     budget: Budget,
 ) -> Result<Answer<Box<Owned>>, Error> {
     let (a, b) = (natural_of(a, "a")?, natural_of(b, "b")?);
-    let r = engine::natural::classify_with(&a, &b, &ClassifyOptions::with_budget(budget))?;
+    let r = engine::classify_with(&a, &b, &ClassifyOptions::with_budget(budget))?;
     let (result, exhausted) = natural_result(&r)?;
     let mut owned = Owned {
         head: qs_natural_components {
@@ -630,7 +631,7 @@ mod tests {
         QS_CLASS_POINTS, QS_CLASS_SAME_SURFACE, QS_CLASS_UNDECIDED, QS_CONE, QS_CYLINDER,
         QS_SPHERE, qs_natural_classify_f64,
     };
-    use engine::natural::NaturalReport;
+    use engine::NaturalReport;
     use engine::{Rational, RealAlg};
     use proptest::prelude::*;
     use serde_json::Value;
@@ -672,7 +673,7 @@ mod tests {
     /// The engine's exact answer for the same doubles.
     fn exact_report(a: &qs_natural_f64, b: &qs_natural_f64) -> NaturalReport {
         let (a, b) = (natural_of(a, "a").unwrap(), natural_of(b, "b").unwrap());
-        engine::natural::classify_with(&a, &b, &ClassifyOptions::default()).unwrap()
+        engine::classify_with(&a, &b, &ClassifyOptions::default()).unwrap()
     }
 
     /// `|x − value| ≤ bound`, decided exactly, and the bound tight: a few

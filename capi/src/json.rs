@@ -252,7 +252,7 @@ mod tests {
         let (code, v) = call(qs_natural_json, a, b);
         assert_eq!(code, 0);
         let v = v.unwrap();
-        let r = engine::natural::classify(&a.parse().unwrap(), &b.parse().unwrap()).unwrap();
+        let r = engine::classify(&a.parse().unwrap(), &b.parse().unwrap()).unwrap();
         assert_eq!(v, serde_json::to_value(&r).unwrap());
         assert_eq!(v["conics"], 2);
     }

@@ -5,11 +5,13 @@
 use crate::boundary::{Answer, answer_into, input_error, qs_error, read_ref};
 use crate::float::{Enclosure, enclose, exact};
 use crate::options::{budget_of, qs_options};
-use engine::natural::{AxesRelation, Class, ClassifyOptions, NaturalReport};
-use engine::tangent::{Containment, Side, TangentOptions, Undecided, Verdict};
+use engine::natural::AxesRelation;
+use engine::tangent::{Containment, Side, Undecided};
+use engine::{Class, ClassifyOptions, NaturalReport};
 use engine::{
     Cone, Cylinder, Ellipsoid, Error, Natural, Polynomial, Rational, RealAlg, Sphere, Var,
 };
+use engine::{TangentOptions, Verdict};
 use std::ffi::c_int;
 use std::ptr;
 
@@ -300,7 +302,7 @@ fn classify(
 ) -> Result<Answer<qs_natural_result>, Error> {
     let (a, b) = (natural_of(a, "a")?, natural_of(b, "b")?);
     let options = ClassifyOptions::with_budget(budget).without_components();
-    let r = engine::natural::classify_with(&a, &b, &options)?;
+    let r = engine::classify_with(&a, &b, &options)?;
     natural_result(&r)
 }
 
@@ -413,7 +415,7 @@ fn tangent(
 ) -> Result<Answer<qs_tangent_result>, Error> {
     let e = ellipsoid_of(e)?;
     let s = quadric_of(quadric)?;
-    let r = engine::tangent::decide_with(&e, &s, &TangentOptions::with_budget(budget))?;
+    let r = engine::decide_with(&e, &s, &TangentOptions::with_budget(budget))?;
     let verdict = match r.verdict() {
         Verdict::Intersecting => QS_VERDICT_INTERSECTING,
         Verdict::Touching => QS_VERDICT_TOUCHING,

@@ -1,15 +1,14 @@
 //! Fuzz the natural-quadric parser (short syntax and JSON, through the
 //! public `str::parse::<Natural>` and `Natural::parse_in`) and, when two
 //! quadrics parse, their classification under a compute budget of 0.5 s
-//! (`natural::classify_with`): never a panic, never a run past the budget
+//! (`quadsect::classify_with`): never a panic, never a run past the budget
 //! by more than 1 s, and a quadric that parses prints (`to_short`) to text
 //! that parses back to the same quadric.
 //!
 //! Input: the two quadrics' texts separated by the first newline.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use quadsect::natural::{self, ClassifyOptions};
-use quadsect::{Budget, Natural, NumberMode};
+use quadsect::{Budget, ClassifyOptions, Natural, NumberMode};
 use std::time::{Duration, Instant};
 
 const LIMIT: Duration = Duration::from_millis(500);
@@ -50,7 +49,7 @@ fuzz_target!(|data: &[u8]| {
             // the last byte picks the route: full components or the fast counts
             options.components = data.last().is_none_or(|b| b & 1 == 0);
             let (t0, c0) = (Instant::now(), cpu_time());
-            let _ = natural::classify_with(&x, &y, &options);
+            let _ = quadsect::classify_with(&x, &y, &options);
             let (took, cpu) = (t0.elapsed(), cpu_time() - c0);
             assert!(
                 took.min(cpu) <= LIMIT + SLACK,

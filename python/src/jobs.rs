@@ -5,7 +5,8 @@
 use crate::guard;
 use crate::numbers::RealAlgebraic;
 use pyo3::prelude::*;
-use quadsect::tangent::{TangentOptions, Undecided};
+use quadsect::TangentOptions;
+use quadsect::tangent::Undecided;
 use quadsect::{Ellipsoid, Error, Polynomial, RealAlg, Var};
 
 fn json_text<T: serde::Serialize>(report: &T) -> Result<String, Error> {
@@ -54,7 +55,7 @@ pub(crate) fn tangent(
     guard::run(py, || {
         let e: Ellipsoid = parse(ellipsoid, "in the ellipsoid")?;
         let s: Polynomial = parse(surface, "in the surface")?;
-        let r = quadsect::tangent::decide_with(&e, &s, &options)?;
+        let r = quadsect::decide_with(&e, &s, &options)?;
         let c = r.certificate();
         let undecided = r.undecided().map(|u| {
             let kind = match u {

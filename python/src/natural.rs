@@ -9,9 +9,9 @@ use crate::guard;
 use crate::numbers::{Frac, QuadraticIrrational, RealAlgebraic, fraction, to_rational};
 use pyo3::prelude::*;
 use pyo3::types::{PyString, PyTuple};
+use quadsect::ClassifyOptions;
 use quadsect::natural::{
-    ClassifyOptions, Component, CurveBranch, EPoint, Exact, SingularPoint,
-    normalize_axis_direction, normalize_plane,
+    Component, CurveBranch, EPoint, Exact, SingularPoint, normalize_axis_direction, normalize_plane,
 };
 use quadsect::{
     Class, Cone, Cylinder, Error, ErrorKind, Natural, NaturalReport, QSqrt, Rational, Sphere,
@@ -205,9 +205,7 @@ pub(crate) fn natural(
         let qb = ib.natural("in the second quadric")?;
         // boxed at once: the report is large, and moves of it would cost
         // a noticeable part of a fast call
-        Ok(Box::new(quadsect::natural::classify_with(
-            &qa, &qb, &options,
-        )?))
+        Ok(Box::new(quadsect::classify_with(&qa, &qb, &options)?))
     })?;
     let report = NativeReport { r };
     let head = report.head();
@@ -235,7 +233,7 @@ pub(crate) fn _engine_time(
         let qb = ib.natural("in the second quadric")?;
         let t = Instant::now();
         for _ in 0..number.max(1) {
-            std::hint::black_box(quadsect::natural::classify_with(&qa, &qb, &options)?);
+            std::hint::black_box(quadsect::classify_with(&qa, &qb, &options)?);
         }
         Ok(t.elapsed().as_secs_f64() / f64::from(number.max(1)))
     })

@@ -315,7 +315,7 @@ fn agrees_with_the_tangent_point_method() {
     for (a, b) in pairs {
         let r = report(&a, &b);
         let sb = tangent_ellipsoid(&b).polynomial();
-        let t = crate::tangent::decide(&tangent_ellipsoid(&a), &sb).unwrap();
+        let t = crate::decide(&tangent_ellipsoid(&a), &sb).unwrap();
         assert_eq!(
             t.verdict(),
             surfaces(r.kind()),
@@ -457,7 +457,7 @@ mod props {
         ) {
             let r = report(&a, &b);
             let sb = tangent_ellipsoid(&b).polynomial();
-            let t = crate::tangent::decide(&tangent_ellipsoid(&a), &sb).unwrap();
+            let t = crate::decide(&tangent_ellipsoid(&a), &sb).unwrap();
             prop_assert_eq!(t.verdict(), surfaces(r.kind()), "{:?}", r.kind());
         }
 

@@ -58,8 +58,7 @@ fn conic_string(f: &super::deciders::Conic2) -> String {
 /// sweep), ≈ 0.5–3 ms on small integers.
 ///
 /// ```
-/// use quadsect::Natural;
-/// use quadsect::natural::{classify, Class};
+/// use quadsect::{Class, Natural, classify};
 /// let a: Natural = "cone vertex=0,0,0 axis=1,0,0 tan2=1".parse().unwrap();
 /// let b: Natural = "cone vertex=0,0,0 axis=0,1,0 tan2=3".parse().unwrap();
 /// let r = classify(&a, &b).unwrap();
@@ -216,7 +215,8 @@ pub fn section7_agrees(s7: &Section7, comps: &[Component]) -> bool {
 /// and classifies them.
 ///
 /// ```
-/// use quadsect::natural::{classify_str, Class};
+/// use quadsect::Class;
+/// use quadsect::natural::classify_str;
 /// let r = classify_str(
 ///     "cylinder point=0,0,0 axis=1,0,0 radius2=1",
 ///     "cylinder point=0,0,0 axis=0,1,0 radius2=1").unwrap();

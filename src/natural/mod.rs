@@ -28,17 +28,19 @@ pub(crate) mod topology;
 pub(crate) mod types;
 pub(crate) mod zsqrt;
 
-pub use crate::geom::cayley_rotation;
-pub use classify::{classify, classify_str};
+pub(crate) use classify::classify;
+pub use classify::classify_str;
 pub use curve::CurvePoint;
 pub use deciders::{AxesRelation, conic_intersection_thm8 as thm8};
 pub use numbers::{EPoint, Exact, normalize_axis_direction, normalize_direction, normalize_plane};
-pub use predicates::{ClassifyOptions, classify_counts, classify_prepared, classify_with};
+pub(crate) use predicates::{ClassifyOptions, classify_with};
+pub use predicates::{classify_counts, classify_prepared};
 pub use prepared::Prepared;
+pub(crate) use result::NaturalReport;
 pub use result::{
-    Class, Component, ConicKind, CurveBranch, NaturalReport, PlanarDeciders, Plane, PointKind,
-    SingularKind, SingularPoint,
+    Component, ConicKind, CurveBranch, PlanarDeciders, Plane, PointKind, SingularKind,
+    SingularPoint,
 };
 pub use tangency::Section7;
+pub(crate) use types::Natural;
 pub(crate) use types::parse_natural;
-pub use types::{Cone, Cylinder, Natural, Sphere};

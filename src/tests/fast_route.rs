@@ -6,9 +6,8 @@
 //! motions.
 
 use crate::cli::examples::natural::NATURAL_EXAMPLES;
-use crate::natural::{
-    ClassifyOptions, Natural, cayley_rotation, classify, classify_with, parse_natural,
-};
+use crate::geom::cayley_rotation;
+use crate::natural::{ClassifyOptions, Natural, classify, classify_with, parse_natural};
 use crate::number::{Q, q, qi};
 use proptest::prelude::*;
 

@@ -286,3 +286,34 @@ fn sign_of_detects_zero_exactly() {
     let s2 = &roots[1];
     assert_eq!(s2.cmp_exact(&r[1]), Ordering::Less);
 }
+
+proptest! {
+    /// `QSqrt`'s order across fields (one squaring in Q(√d₁)) agrees with
+    /// the order of the same numbers as real algebraic numbers (their
+    /// minimal polynomials' isolating intervals), and equal values hash
+    /// equally whatever the form of the radicand (`b√(k²d) = bk·√d`).
+    #[test]
+    fn qsqrt_order_across_fields_agrees_with_real_algebraic(
+        a in (-40i64..40, 1i64..9), b in (-40i64..40, 1i64..9), d in 2i64..30,
+        a2 in (-40i64..40, 1i64..9), b2 in (-40i64..40, 1i64..9), d2 in 2i64..30,
+        k in 1i64..5,
+    ) {
+        use crate::number::QSqrt;
+        use std::hash::{Hash, Hasher};
+        let q = |(n, m): (i64, i64)| Q::new(n.into(), m.into());
+        let x = QSqrt::new(q(a), q(b), Q::from_integer(d.into()));
+        let y = QSqrt::new(q(a2), q(b2), Q::from_integer(d2.into()));
+        prop_assert_eq!(x.cmp(&y), x.to_real_alg().cmp_exact(&y.to_real_alg()));
+        // near-equal values across fields: y moved onto x's rational part
+        let z = QSqrt::new(q(a), q(b2), Q::from_integer(d2.into()));
+        prop_assert_eq!(x.cmp(&z), x.to_real_alg().cmp_exact(&z.to_real_alg()));
+        let hash = |v: &QSqrt| {
+            let mut h = std::collections::hash_map::DefaultHasher::new();
+            v.hash(&mut h);
+            h.finish()
+        };
+        let other_form = QSqrt::new(q(a), q(b) / Q::from_integer(k.into()), Q::from_integer((k * k * d).into()));
+        prop_assert_eq!(&x, &other_form);
+        prop_assert_eq!(hash(&x), hash(&other_form));
+    }
+}

@@ -4,6 +4,7 @@
 //! pencil is consistent with the class; §7 agrees with the curve topology.
 
 use crate::cli::examples::natural::NATURAL_EXAMPLES;
+use crate::geom::cayley_rotation;
 use crate::geom::eval_qsqrt;
 use crate::natural::classify::section7_agrees;
 use crate::natural::deciders::{
@@ -12,7 +13,7 @@ use crate::natural::deciders::{
 use crate::natural::numbers::{EPoint, Exact};
 use crate::natural::result::{Class, Component, NaturalReport};
 use crate::natural::tangency::section7;
-use crate::natural::{Natural, cayley_rotation, classify, parse_natural};
+use crate::natural::{Natural, classify, parse_natural};
 use crate::number::{Q, QSqrt, q, qi};
 use crate::poly::ZPoly;
 use num_traits::{One, Zero};
@@ -719,11 +720,11 @@ proptest! {
             let s2 = &rho2q / qi(d * d);
             if s2 >= Q::one() { return None; }
             let v = [&o3[0] + &u[0] * qi(d), &o3[1] + &u[1] * qi(d), qi(0)];
-            Some(Natural::Cone(crate::natural::Cone::new(v, [u[0].clone(), u[1].clone(), qi(0)], &s2 / (Q::one() - &s2)).ok()?))
+            Some(Natural::Cone(crate::Cone::new(v, [u[0].clone(), u[1].clone(), qi(0)], &s2 / (Q::one() - &s2)).ok()?))
         };
         let Some(a) = cone(u1, d1) else { return Ok(()); };
         let b = if cyl {
-            Natural::Cylinder(crate::natural::Cylinder::new(o3.clone(), [u2[0].clone(), u2[1].clone(), qi(0)], rho2q.clone()).unwrap())
+            Natural::Cylinder(crate::Cylinder::new(o3.clone(), [u2[0].clone(), u2[1].clone(), qi(0)], rho2q.clone()).unwrap())
         } else {
             match cone(u2, d2) { Some(c) => c, None => return Ok(()) }
         };

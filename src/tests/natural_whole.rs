@@ -106,8 +106,9 @@ fn both_rulings_count_the_same_components_on_the_benchmark_pairs() {
 
 // ----------------------------------------------------------------- properties
 
+use crate::geom::cayley_rotation;
 use crate::natural::numbers::Exact;
-use crate::natural::{Component, cayley_rotation, parse_natural};
+use crate::natural::{Component, parse_natural};
 use crate::number::{Q, q, qi};
 use crate::roots::RealAlg;
 use proptest::prelude::*;

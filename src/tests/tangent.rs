@@ -272,7 +272,7 @@ fn bad_input_is_rejected() {
 // ----------------------------------------------------------------- properties
 
 fn cayley(a: i64, b: i64, c: i64, d: i64) -> [[Q; 3]; 3] {
-    crate::natural::cayley_rotation(&q(a, d), &q(b, d), &q(c, d))
+    crate::geom::cayley_rotation(&q(a, d), &q(b, d), &q(c, d))
 }
 
 /// `p(R⁻¹(x − t))`: the polynomial of the moved surface.
