@@ -353,7 +353,8 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
                 1 => {
                     let (kq, lam) = (kq(), lam());
                     // along L: k·|D|²·K/(−a′); along the normal: k
-                    let along = kq.mul(&lam, d).mul(&inv_a, d).scale(&-kk.clone());
+                    let k_out = kq.to_qsqrt(d);
+                    let along_out = k_out.mul(&lam.mul(&inv_a, d).scale(&-kk.clone()).to_qsqrt(d));
                     let circle = a1.add(&lam.scale(kk)).is_zero();
                     out.push(Component::Conic {
                         plane: plane(),
@@ -364,7 +365,7 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
                         },
                         center: Some(center()),
                         vertex: None,
-                        axes2: vec![Exact::Quad(along.to_qsqrt(d)), Exact::Quad(kq.to_qsqrt(d))],
+                        axes2: vec![Exact::Quad(along_out), Exact::Quad(k_out)],
                         axis_dirs: vec![epoint(&out3(&dir, d)), rat_point(&n())],
                         focal2: None,
                         double: l.double,
@@ -379,8 +380,8 @@ fn section(fr: &Frame, h: &[[Z; 3]; 3], l: &ZLine, d: &Z) -> (Vec<Component>, Op
         } else if sk != 0 {
             // along = −k·|D|²·K/a′
             let (kq, lam) = (kq(), lam());
-            let along = kq.mul(&lam, d).mul(&inv_a, d).scale(&-kk.clone());
-            let (k_out, along_out) = (kq.to_qsqrt(d), along.to_qsqrt(d));
+            let k_out = kq.to_qsqrt(d);
+            let along_out = k_out.mul(&lam.mul(&inv_a, d).scale(&-kk.clone()).to_qsqrt(d));
             let (axes2, dirs) = if sk > 0 {
                 (
                     vec![Exact::Quad(k_out), Exact::Quad(along_out.neg())],

@@ -240,6 +240,26 @@ pub fn dyadic_floor(n: &Z, d: &Z, k: usize) -> Q {
 /// the constructions' large integers.
 pub fn q_new(n: Z, d: Z) -> Q {
     debug_assert!(!d.is_zero());
+    // long operands where one divides the other (an integer, or 1/k: a
+    // construction's value with its denominator cancelled): one division
+    // instead of Euclid over all the bits
+    if d.bits() >= 512 && !n.is_zero() {
+        let n_big = n.bits() >= d.bits();
+        let (big, small) = if n_big { (&n, &d) } else { (&d, &n) };
+        if big.bits() - small.bits() < 64 {
+            // q = big/small exactly (signs included): n/d = q, or 1/q
+            let (q, r) = num_integer::Integer::div_rem(big, small);
+            if r.is_zero() {
+                return if n_big {
+                    Q::new_raw(q, Z::one())
+                } else if q.is_negative() {
+                    Q::new_raw(-Z::one(), -q)
+                } else {
+                    Q::new_raw(Z::one(), q)
+                };
+            }
+        }
+    }
     let g = gcd_z(&n, &d);
     let (mut n, mut d) = if g.is_one() { (n, d) } else { (n / &g, d / &g) };
     if d.is_negative() {
@@ -595,6 +615,35 @@ mod tests {
             proptest::prop_assert!(canon(&q_add(&x, &y), &(&rx + &ry)));
             proptest::prop_assert!(canon(&q_add(&x, &-&x), &Q::zero()));
             proptest::prop_assert!(canon(&q_sub(&x, &y), &(&rx - &ry)));
+        }
+
+        /// `q_new`'s division shortcut on long operands (≥ 512 bits) where
+        /// one divides the other, with every sign, and its miss (a common
+        /// factor that is not the whole of either): num-rational's
+        /// canonical values.
+        #[test]
+        fn long_divisible_rationals_agree(
+            g in proptest::collection::vec(proptest::num::u64::ANY, 8..14),
+            k in proptest::collection::vec(proptest::num::u64::ANY, 0..2),
+            m in 2u64..1000,
+            signs in (proptest::bool::ANY, proptest::bool::ANY),
+        ) {
+            let make = |v: &[u64]| -> BigInt {
+                v.iter().fold(BigInt::zero(), |acc, &w| (acc << 64usize) + w)
+            };
+            let g: BigInt = make(&g) + 1;
+            let k: BigInt = make(&k) + 1;
+            let sg = |s: bool, x: BigInt| if s { -x } else { x };
+            for (n, d) in [
+                (&g * &k, g.clone()),
+                (g.clone(), &g * &k),
+                (g.clone(), g.clone()),
+                (&g * m, &g * (m + 1)),
+            ] {
+                let (n, d) = (sg(signs.0, n), sg(signs.1, d));
+                let (x, r) = (q_new(n.clone(), d.clone()), Q::new(n, d));
+                proptest::prop_assert!(x.numer() == r.numer() && x.denom() == r.denom(), "{} vs {}", x, r);
+            }
         }
     }
 
