@@ -168,7 +168,48 @@ pub fn kernel_suite(inputs: &Value, rows: &mut Vec<Row>) -> Result<(), Error> {
             extra: Default::default(),
         });
     }
+    gcd_cases(rows);
     Ok(())
+}
+
+/// Integer gcds (the reductions to lowest terms of the exact outputs):
+/// Lehmer's gcd on limbs beside num-bigint's binary gcd, on fixed
+/// pseudo-random operands — coprime, and with a common factor of three
+/// quarters of their bits (a construction's unreduced value).
+fn gcd_cases(rows: &mut Vec<Row>) {
+    use num_integer::Integer;
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut big = |bits: usize| {
+        (0..bits.div_ceil(64)).fold(num_bigint::BigInt::from(1), |acc, _| {
+            (acc << 64usize) + num_bigint::BigInt::from(rng.next())
+        })
+    };
+    for bits in [1_000usize, 13_000] {
+        let g = big(bits * 3 / 4);
+        let cases = [
+            ("coprime", big(bits), big(bits)),
+            ("common-factor", &g * big(bits / 4), &g * big(bits / 4)),
+        ];
+        for (what, a, b) in cases {
+            for (who, lehmer) in [("Lehmer on limbs", true), ("num-bigint (binary)", false)] {
+                let (m, n) = measure(|| {
+                    black_box(if lehmer {
+                        crate::number::gcd_z(&a, &b)
+                    } else {
+                        a.gcd(&b)
+                    });
+                });
+                rows.push(Row {
+                    suite: "kernel",
+                    id: format!("gcd-{bits}-{what}"),
+                    desc: format!("integer gcd, {who}"),
+                    median: m,
+                    samples: n,
+                    extra: Default::default(),
+                });
+            }
+        }
+    }
 }
 
 /// A pseudo-random generator (xorshift) so the benchmark inputs are fixed.
