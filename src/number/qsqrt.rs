@@ -400,7 +400,9 @@ impl QSqrt {
         if d.is_zero() {
             return None;
         }
-        let ratio = x / d;
+        // Lehmer's gcd for the reduction (num-rational's division reduces
+        // with the binary gcd: most of a long answer's time)
+        let ratio = q_mul(x, &d.recip());
         exact_sqrt_q(&ratio).map(|r| QSqrt::new(Q::zero(), r, d.clone()))
     }
 
