@@ -821,6 +821,12 @@ pub fn value_polynomial(
     if nf == 0 {
         return Ok((ZPoly::constant(BigInt::one()), 0));
     }
+    // the polynomial is evaluated in its packed form modulo p
+    if map.eval.total_degree().unwrap_or(0) > crate::system::groebner_modp::MAX_DEGREE {
+        return Err(Declined(
+            "the polynomial whose values are asked for is of too high a degree for the modular evaluation".into(),
+        ));
+    }
     let target = value_target_bits(resultant_bits, nf, bezout, map.direct_bits);
     let rbar = rur.leading_resultant();
     let mut crt = CrtVec::new(nf + 1);

@@ -524,6 +524,10 @@ fn linear_at_rur(k: &QMPoly, rur: &PoissonRur) -> ZPoly {
 /// of g with `w′` invertible.  Returns that prime.
 fn nonzero_at_roots(rur: &PoissonRur, g: &ZPoly, h: &ZMPoly) -> Option<u64> {
     let ng = g.degree()?;
+    // h is evaluated in its packed form modulo p
+    if h.total_degree().unwrap_or(0) > crate::system::groebner_modp::MAX_DEGREE {
+        return None;
+    }
     for k in 0..8 {
         let fp = Fp::new(prime31(1000 + k));
         let gm = zpoly_mod(&fp, g);

@@ -430,3 +430,18 @@ fn rotated_power_decomposes() {
     let k = t.to_primitive_z().1;
     assert_eq!(d.constant, q(-5, 7) * &k * &k * &k);
 }
+
+/// A repeated factor of a power beyond the F4 packing (exponents up to 127
+/// per monomial; the Python property test found `x^130y`): the value
+/// polynomial of S declines the modular evaluation and another route
+/// answers, never an internal error.
+#[test]
+fn powers_beyond_the_f4_packing_are_answered() {
+    for (s, want) in [
+        ("x^130y", Verdict::Intersecting),
+        ("x*y^126*z", Verdict::Intersecting),
+    ] {
+        let r = crate::tangent::decide_str("x^2 + 2y^2 + 3z^2 - 6", s).unwrap();
+        assert_eq!(r.verdict(), want, "{s}");
+    }
+}
