@@ -16,6 +16,25 @@ use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{One, Zero};
 use std::sync::Mutex;
 
+/// `a + b mod p` for residues `a, b < p < 2^63` (both prime fields).
+#[inline(always)]
+pub(crate) fn add_mod(a: u64, b: u64, p: u64) -> u64 {
+    let s = a + b;
+    if s >= p { s - p } else { s }
+}
+
+/// `a − b mod p` for residues `a, b < p < 2^63`.
+#[inline(always)]
+pub(crate) fn sub_mod(a: u64, b: u64, p: u64) -> u64 {
+    if a >= b { a - b } else { a + p - b }
+}
+
+/// `−a mod p` for a residue `a < p`.
+#[inline(always)]
+pub(crate) fn neg_mod(a: u64, p: u64) -> u64 {
+    if a == 0 { 0 } else { p - a }
+}
+
 /// Arithmetic modulo a prime `p < 2^31`: elements are `u64` in `[0, p)`.
 ///
 /// Products of two elements are below `2^62`, so sums of a few products can
@@ -69,20 +88,19 @@ impl Fp {
     /// Sum.
     #[inline(always)]
     pub fn add(&self, a: u64, b: u64) -> u64 {
-        let s = a + b;
-        if s >= self.p { s - self.p } else { s }
+        add_mod(a, b, self.p)
     }
 
     /// Difference.
     #[inline(always)]
     pub fn sub(&self, a: u64, b: u64) -> u64 {
-        if a >= b { a - b } else { a + self.p - b }
+        sub_mod(a, b, self.p)
     }
 
     /// Negation.
     #[inline(always)]
     pub fn neg(&self, a: u64) -> u64 {
-        if a == 0 { 0 } else { self.p - a }
+        neg_mod(a, self.p)
     }
 
     /// `a^e`, by squaring and multiplying.

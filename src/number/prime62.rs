@@ -58,20 +58,19 @@ impl Modulus {
     /// Sum.
     #[inline(always)]
     pub fn add(&self, a: u64, b: u64) -> u64 {
-        let s = a + b;
-        if s >= self.n { s - self.n } else { s }
+        super::prime31::add_mod(a, b, self.n)
     }
 
     /// Difference.
     #[inline(always)]
     pub fn sub(&self, a: u64, b: u64) -> u64 {
-        if a >= b { a - b } else { a + self.n - b }
+        super::prime31::sub_mod(a, b, self.n)
     }
 
     /// Negation.
     #[inline(always)]
     pub fn neg(&self, a: u64) -> u64 {
-        if a == 0 { 0 } else { self.n - a }
+        super::prime31::neg_mod(a, self.n)
     }
 
     /// Into Montgomery form.
