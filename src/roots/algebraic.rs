@@ -148,12 +148,24 @@ impl RealAlg {
     /// candidate of small height, and one exact evaluation tests it.  The
     /// widths tried are 2^-16, 2^-64 and finally `1/(2 lc²)` (capped at
     /// 2^-2048) — at that width the test is complete, since a rational root
-    /// `a/b` has `b | lc` and two such rationals are `1/lc²` apart.
+    /// `a/b` has `b | lc` and two such rationals are `1/lc²` apart.  None
+    /// of this when a sieve modulo small primes proves that the polynomial,
+    /// divided by its power of `u` (the root 0 is told apart by the
+    /// interval), has no rational root.
     pub fn simplify(&self) -> RealAlg {
-        let Repr::Root { poly, .. } = &self.repr else {
+        let Repr::Root { poly, lo, hi } = &self.repr else {
             return self.clone();
         };
-        if super::rational::no_rational_root_sieve(poly) {
+        // 0 as a root of `poly` (a factor u^k: the value 0 of a surface on
+        // its own zeros) says nothing of the other roots; they are the
+        // roots of poly / u^k, sieved on their own
+        let k = poly.coeffs().iter().take_while(|c| c.is_zero()).count();
+        if k > 0 && lo.is_negative() && hi.is_positive() {
+            // the open interval holds exactly one root, and 0 is one
+            return RealAlg::rational(Q::zero());
+        }
+        let rest = ZPoly::new(poly.coeffs()[k..].to_vec());
+        if super::rational::no_rational_root_sieve(&rest) {
             return self.clone();
         }
         let l = num_traits::Signed::abs(&poly.lc());
@@ -915,6 +927,34 @@ mod tests {
         assert_eq!(s2.interval(), (q(7, 5), q(3, 2)));
         assert_eq!(s2.cmp_rational(&q(141, 100)), Ordering::Greater);
         assert_eq!(s2.cmp_rational(&q(142, 100)), Ordering::Less);
+    }
+
+    /// A factor u (the value 0) neither hides the other rational roots nor
+    /// makes the irrational ones look rational; the root 0 is told apart
+    /// by its interval.
+    #[test]
+    fn simplify_beside_the_root_zero() {
+        let u = ZPoly::from_i64s(&[0, 1]);
+        let sq2 = ZPoly::from_i64s(&[-2, 0, 1]);
+        let sq3 = ZPoly::from_i64s(&[-3, 0, 1]);
+        let half = ZPoly::from_i64s(&[-1, 2]);
+        // u(u² − 2)(u² − 3): the sieve modulo 5 proves the rest irrational
+        let p = &(&u * &sq2) * &sq3;
+        let roots = RealAlg::roots_of(&p);
+        assert_eq!(roots.len(), 5);
+        for r in &roots {
+            let s = r.simplify();
+            assert_eq!(s.cmp_exact(r), Ordering::Equal);
+            let zero = r.sign_of(&u) == 0;
+            assert_eq!(s.as_rational().is_some(), zero, "{r:?}");
+        }
+        // u(2u − 1)(u² − 2): 1/2 is still found rational
+        let p = &(&u * &half) * &sq2;
+        let rational: Vec<Q> = RealAlg::roots_of(&p)
+            .iter()
+            .filter_map(|r| r.simplify().as_rational().cloned())
+            .collect();
+        assert_eq!(rational, vec![Q::zero(), q(1, 2)]);
     }
 
     #[test]
