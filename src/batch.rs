@@ -36,7 +36,13 @@ use std::sync::{Arc, Condvar, Mutex, mpsc};
 /// ```
 pub fn run_op_within(obj: &Map<String, Value>, budget: &Budget) -> Result<Value, Error> {
     let (request, budget) = crate::request::Request::from_line(obj, budget)?;
-    Ok(request.execute(&budget)?.to_json())
+    let svg = crate::request::Request::svg_wanted(obj)?;
+    let answer = request.execute(&budget)?;
+    let mut v = answer.to_json();
+    if svg && let (Some(text), Value::Object(m)) = (answer.svg(), &mut v) {
+        m.insert("svg".into(), Value::String(text));
+    }
+    Ok(v)
 }
 
 /// [`run_op_within`] under the default budget ([`Budget::default`]).
@@ -174,7 +180,20 @@ fn with_request(answer: Value, line: &str) -> Value {
 /// [`run_op_within`] as compact JSON text.
 fn run_op_text_within(obj: &Map<String, Value>, budget: &Budget) -> Result<String, Error> {
     let (request, budget) = crate::request::Request::from_line(obj, budget)?;
-    Ok(request.execute(&budget)?.to_json_text())
+    let svg = crate::request::Request::svg_wanted(obj)?;
+    let answer = request.execute(&budget)?;
+    let mut text = answer.to_json_text();
+    if svg
+        && let Some(picture) = answer.svg()
+        && text.ends_with('}')
+    {
+        // the picture as the answer object's last member
+        text.pop();
+        text.push_str(",\"svg\":");
+        text.push_str(&Value::String(picture).to_string());
+        text.push('}');
+    }
+    Ok(text)
 }
 
 /// The line's `id` and its answer: the line parsed as a JSON object and
@@ -944,10 +963,10 @@ mod tests {
     fn every_known_field_of_every_op_is_accepted() {
         let lines = [
             json!({"id": 1, "op": "tangent", "ellipsoid": "x^2+y^2+z^2-1", "surface": "x-2",
-                   "values": false, "float": true, "time_limit": 5, "memory_limit": 256}),
+                   "values": false, "float": true, "svg": true, "time_limit": 5, "memory_limit": 256}),
             json!({"id": 2, "op": "natural", "a": "sphere center=0,0,0 radius2=1",
                    "b": {"kind": "sphere", "center": ["3", "0", "0"], "radius2": "1"},
-                   "components": false, "float": false, "time_limit": 5, "memory_limit": 256}),
+                   "components": false, "float": false, "svg": false, "time_limit": 5, "memory_limit": 256}),
             json!({"id": 3, "op": "roots", "poly": "x^2-2", "time_limit": 5, "memory_limit": 256}),
             json!({"id": 4, "op": "resultant", "f": "x^2+y^2-1", "g": "x-y", "var": "x",
                    "time_limit": 5, "memory_limit": 256}),
@@ -960,6 +979,12 @@ mod tests {
         for line in lines {
             let v = answer(line.clone(), &Budget::default());
             assert_eq!(v["ok"], true, "{line}: {v}");
+            // the picture exactly when asked for
+            assert_eq!(
+                v["result"].get("svg").is_some(),
+                line["svg"] == true,
+                "{line}"
+            );
             let op = line["op"].as_str().unwrap();
             let (_, fields) = crate::request::OPS.iter().find(|(n, _)| *n == op).unwrap();
             for f in *fields {

@@ -65,6 +65,7 @@
 //! | `geom` | the shared geometry floor: vectors, matrices, quadric forms, rigid motions |
 //! | [`tangent`], [`natural`] | the two domains (siblings on `geom`, never importing each other) |
 //! | `report` | all formatting: JSON (feature `serde`) and human text |
+//! | `draw` | the answers' pictures: SVG text ([`NaturalReport::svg`], [`TangentReport::svg`]), PNG with feature `png` |
 //! | [`batch`] | the JSON-lines protocol of `quadsect batch` (feature `serde`) |
 //! | `cli` | the command-line program (feature `cli`) |
 //!
@@ -136,6 +137,9 @@
 //! * `serde`: `Serialize` for the reports (the JSON of `--json`, keys in the
 //!   documented order), the JSON input form of natural quadrics, and
 //!   [`batch::answer_line`].
+//! * `png` (with `cli`): `svg_to_png`, PNG images of the pictures
+//!   (`NaturalReport::svg`, `TangentReport::svg`, which need no feature)
+//!   by resvg, pure Rust.
 //!
 //! See `docs/contract.md` in the repository for the full input/output
 //! contract.
@@ -156,6 +160,7 @@ pub mod budget;
 #[doc(hidden)]
 pub mod cli;
 pub mod contact;
+mod draw;
 mod elim;
 mod error;
 mod geom;
@@ -175,6 +180,8 @@ pub mod tangent;
 mod tests;
 
 pub use budget::limits::{Budget, Exhausted, Limit};
+#[cfg(feature = "png")]
+pub use draw::png::svg_to_png;
 pub use error::{Error, ErrorKind};
 pub use geom::{cayley_rotation, is_rotation};
 pub use kernel::{

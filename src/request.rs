@@ -54,8 +54,11 @@ pub(crate) enum Answer {
 /// The operations by name, with the fields of their batch lines (besides
 /// [`LINE_FIELDS`]).
 pub(crate) const OPS: [(&str, &[&str]); 5] = [
-    ("tangent", &["ellipsoid", "surface", "values", "float"]),
-    ("natural", &["a", "b", "components", "float"]),
+    (
+        "tangent",
+        &["ellipsoid", "surface", "values", "float", "svg"],
+    ),
+    ("natural", &["a", "b", "components", "float", "svg"]),
     ("ellipsoid-contact", &["a", "b"]),
     ("roots", &["poly"]),
     ("resultant", &["f", "g", "var"]),
@@ -454,6 +457,12 @@ mod json {
             Ok((Request::from_fields(obj, &op)?, budget))
         }
 
+        /// The line's `"svg": true` (tangent and natural): the answer then
+        /// carries its picture as `"svg"`.
+        pub(crate) fn svg_wanted(obj: &Map<String, Value>) -> Result<bool, Error> {
+            flag(obj, "svg", false)
+        }
+
         /// The request of a known op's fields.
         fn from_fields(obj: &Map<String, Value>, op: &str) -> Result<Request, Error> {
             Ok(match op {
@@ -498,6 +507,15 @@ mod json {
     }
 
     impl Answer {
+        /// The picture of a tangent or natural answer (SVG text).
+        pub(crate) fn svg(&self) -> Option<String> {
+            match self {
+                Answer::Tangent(r) => Some(r.svg()),
+                Answer::Natural(r) => Some(r.svg()),
+                _ => None,
+            }
+        }
+
         /// The JSON of `--json`.
         pub(crate) fn to_json(&self) -> Value {
             match self {

@@ -273,3 +273,81 @@ fn batch_lines_may_tighten_their_limits_and_unknown_fields_are_errors() {
         assert!(help.contains(word), "{word}: {help}");
     }
 }
+
+/// `--svg` and `--png` on `natural` and `tangent`, `examples --figures`,
+/// the batch field `"svg"`, and a picture that cannot be written.
+#[test]
+fn pictures_from_the_command_line_and_the_batch() {
+    let dir = std::env::temp_dir().join(format!("quadsect-pictures-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (svg, png) = (dir.join("n.svg"), dir.join("n.png"));
+    let (code, out, err) = run(&[
+        "natural",
+        CYL,
+        CONE,
+        "--svg",
+        svg.to_str().unwrap(),
+        "--png",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("class     points"), "{out}");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg") && text.contains("class points"));
+    assert_eq!(&std::fs::read(&png).unwrap()[1..4], b"PNG");
+    let t = dir.join("t.svg");
+    let (code, _, err) = run(&[
+        "tangent",
+        "--ellipsoid",
+        "x^2+y^2+z^2-25",
+        "--surface",
+        "x - 5",
+        "--svg",
+        t.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        std::fs::read_to_string(&t)
+            .unwrap()
+            .contains("verdict: touching")
+    );
+    // a directory that cannot be written: an I/O error, exit status 2
+    let (code, _, err) = run(&["natural", CYL, CONE, "--svg", "/nonexistent/dir/x.svg"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("cannot write /nonexistent/dir/x.svg"), "{err}");
+    // one figure per paper example
+    let figs = dir.join("figures");
+    let (code, _, err) = run(&["examples", "--figures", figs.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let n = std::fs::read_dir(&figs).unwrap().count();
+    assert!(n >= 25, "{n} figures");
+    // batch: "svg": true adds the picture; a non-boolean is a bad field
+    let lines = format!(
+        "{}\n{}\n{}\n",
+        r#"{"id":1,"op":"natural","a":"sphere center=0,0,0 radius2=4","b":"sphere center=3,0,0 radius2=4","svg":true}"#,
+        r#"{"id":2,"op":"tangent","ellipsoid":"x^2+y^2+z^2-25","surface":"x-6","svg":true}"#,
+        r#"{"id":3,"op":"natural","a":"sphere center=0,0,0 radius2=4","b":"sphere center=3,0,0 radius2=4","svg":"yes"}"#,
+    );
+    let input = dir.join("lines.jsonl");
+    std::fs::write(&input, lines).unwrap();
+    let (code, out, err) = run(&["batch", "--threads", "1", input.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let answers: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert!(
+        answers[0]["result"]["svg"]
+            .as_str()
+            .unwrap()
+            .contains("class conics")
+    );
+    assert!(
+        answers[1]["result"]["svg"]
+            .as_str()
+            .unwrap()
+            .contains("verdict: separated")
+    );
+    assert_eq!(answers[2]["error"]["kind"], "bad-field");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -902,6 +902,39 @@ int qs_natural_json_opts(const char *a,
                          struct qs_error **err);
 
 /**
+ * The picture of the tangent method's answer for `ellipsoid` and
+ * `surface` (as for `qs_tangent_json_opts`) as SVG text in `*out_svg`
+ * (free it with `qs_string_free`): E from two sides shaded by the sign of
+ * S, the curve S = 0 on E, the certificate's witness points, the verdict.
+ * Codes as `qs_tangent_json_opts` (3: the budget ran out, `*out_svg` is
+ * the picture of the `undecided` answer).
+ *
+ * # Safety
+ * As `qs_tangent_json_opts`, with `out_svg` for `out_json`.
+ */
+int qs_tangent_svg(const char *ellipsoid,
+                   const char *surface,
+                   const struct qs_options *opts,
+                   char **out_svg,
+                   struct qs_error **err);
+
+/**
+ * The picture of two natural quadrics' answer (inputs as for
+ * `qs_natural_json_opts`) as SVG text in `*out_svg` (free it with
+ * `qs_string_free`): a 3D view with the components coloured by kind, the
+ * axial plane when the axes are coplanar, the class and counts.  Codes as
+ * `qs_natural_json_opts`.
+ *
+ * # Safety
+ * As `qs_natural_json_opts`, with `out_svg` for `out_json`.
+ */
+int qs_natural_svg(const char *a,
+                   const char *b,
+                   const struct qs_options *opts,
+                   char **out_svg,
+                   struct qs_error **err);
+
+/**
  * One line of the `quadsect batch` protocol: `line` is one JSON object
  * (`{"id":7,"op":"roots","poly":"x^2-2"}`; ops `tangent`, `natural`,
  * `roots`, `resultant`), `*out` becomes its answer line, without a

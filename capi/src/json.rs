@@ -159,6 +159,95 @@ pub unsafe extern "C" fn qs_natural_json_opts(
     unsafe { json_entry("natural", [("a", a), ("b", b)], opts, out_json, err) }
 }
 
+/// The picture of an answer: runs `op` with `"svg": true` and returns the
+/// answer's `svg` member, with the budget error when the answer is
+/// `undecided` because a budget ran out (its picture is still drawn).
+///
+/// # Safety
+/// As [`json_entry`].
+unsafe fn svg_entry(
+    op: &str,
+    args: [(&str, *const c_char); 2],
+    opts: *const qs_options,
+    out_svg: *mut *mut c_char,
+    err: *mut *mut qs_error,
+) -> c_int {
+    // SAFETY: the caller's contract
+    unsafe {
+        answer_into(out_svg, "out_svg", ptr::null_mut(), err, || {
+            let a = read_str(args[0].1, args[0].0)?;
+            let b = read_str(args[1].1, args[1].0)?;
+            let mut obj = Map::new();
+            obj.insert("op".into(), Value::from(op));
+            obj.insert(args[0].0.into(), Value::from(a));
+            obj.insert(args[1].0.into(), Value::from(b));
+            obj.insert("svg".into(), Value::from(true));
+            if op == "tangent" && !values_of(opts) {
+                obj.insert("values".into(), Value::from(false));
+            }
+            let answer = engine::batch::run_op_within(&obj, &budget_of(opts))?;
+            let reason = &answer["reason"];
+            let exhausted = (reason["kind"] == "budget").then(|| {
+                let message = reason["message"].as_str().unwrap_or("budget exhausted");
+                Error::new(ErrorKind::Budget, message)
+            });
+            let svg = answer["svg"]
+                .as_str()
+                .ok_or_else(|| Error::internal("the answer has no picture"))?;
+            Ok((host_string(svg), exhausted))
+        })
+    }
+}
+
+/// The picture of the tangent method's answer for `ellipsoid` and
+/// `surface` (as for `qs_tangent_json_opts`) as SVG text in `*out_svg`
+/// (free it with `qs_string_free`): E from two sides shaded by the sign of
+/// S, the curve S = 0 on E, the certificate's witness points, the verdict.
+/// Codes as `qs_tangent_json_opts` (3: the budget ran out, `*out_svg` is
+/// the picture of the `undecided` answer).
+///
+/// # Safety
+/// As `qs_tangent_json_opts`, with `out_svg` for `out_json`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn qs_tangent_svg(
+    ellipsoid: *const c_char,
+    surface: *const c_char,
+    opts: *const qs_options,
+    out_svg: *mut *mut c_char,
+    err: *mut *mut qs_error,
+) -> c_int {
+    // SAFETY: the caller's contract
+    unsafe {
+        svg_entry(
+            "tangent",
+            [("ellipsoid", ellipsoid), ("surface", surface)],
+            opts,
+            out_svg,
+            err,
+        )
+    }
+}
+
+/// The picture of two natural quadrics' answer (inputs as for
+/// `qs_natural_json_opts`) as SVG text in `*out_svg` (free it with
+/// `qs_string_free`): a 3D view with the components coloured by kind, the
+/// axial plane when the axes are coplanar, the class and counts.  Codes as
+/// `qs_natural_json_opts`.
+///
+/// # Safety
+/// As `qs_natural_json_opts`, with `out_svg` for `out_json`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn qs_natural_svg(
+    a: *const c_char,
+    b: *const c_char,
+    opts: *const qs_options,
+    out_svg: *mut *mut c_char,
+    err: *mut *mut qs_error,
+) -> c_int {
+    // SAFETY: the caller's contract
+    unsafe { svg_entry("natural", [("a", a), ("b", b)], opts, out_svg, err) }
+}
+
 /// One line of the `quadsect batch` protocol: `line` is one JSON object
 /// (`{"id":7,"op":"roots","poly":"x^2-2"}`; ops `tangent`, `natural`,
 /// `roots`, `resultant`), `*out` becomes its answer line, without a
@@ -275,6 +364,51 @@ mod tests {
         let (code, r) = call(qs_tangent_json, "x^2+y^2-z^2-1", "x");
         assert_eq!(code, 2);
         assert_eq!(r.unwrap_err().0, "not-an-ellipsoid");
+    }
+
+    #[test]
+    fn pictures_are_the_engines_svg() {
+        let svg = |f: unsafe extern "C" fn(
+            *const c_char,
+            *const c_char,
+            *const qs_options,
+            *mut *mut c_char,
+            *mut *mut qs_error,
+        ) -> c_int,
+                   a: &str,
+                   b: &str|
+         -> (c_int, String) {
+            let (a, b) = (CString::new(a).unwrap(), CString::new(b).unwrap());
+            let mut out = ptr::null_mut();
+            let code = unsafe {
+                f(
+                    a.as_ptr(),
+                    b.as_ptr(),
+                    ptr::null(),
+                    &mut out,
+                    ptr::null_mut(),
+                )
+            };
+            let text = if out.is_null() {
+                String::new()
+            } else {
+                owned(out)
+            };
+            (code, text)
+        };
+        let (a, b) = (
+            "sphere center=0,0,0 radius2=4",
+            "cylinder point=1,0,0 axis=0,0,1 radius2=1",
+        );
+        let (code, text) = svg(qs_natural_svg, a, b);
+        assert_eq!(code, 0);
+        let r = engine::classify(&a.parse().unwrap(), &b.parse().unwrap()).unwrap();
+        assert_eq!(text, r.svg());
+        let (code, text) = svg(qs_tangent_svg, "x^2+y^2+z^2-25", "x-6");
+        assert_eq!(code, 0);
+        assert!(text.contains("verdict: separated"));
+        let (code, text) = svg(qs_tangent_svg, "x^2+y^2+z^2-25", "x-)");
+        assert_eq!((code, text.as_str()), (2, ""));
     }
 
     #[test]

@@ -382,8 +382,11 @@ class TangentResult(_Result):
         critical_values: List[RealAlgebraic],
         nonreal_point_values: List[RealAlgebraic],
         undecided: Optional[Tuple[str, str]],
+        inputs: Optional[Tuple[str, str, Optional[float], bool]] = None,
     ) -> None:
         super().__init__(json_text, text)
+        # (ellipsoid, surface, time_limit, values): what svg() draws again
+        self._inputs = inputs
         self.min = min
         self.max = max
         #: The real critical values of S on E (increasing), exactly.
@@ -441,13 +444,33 @@ class TangentResult(_Result):
         rationals as ``Fraction``; approximations and polynomials as str)."""
         return _decode(self._json["certificate"])
 
+    def svg(self) -> str:
+        """The picture of the answer as SVG text: E from two opposite sides,
+        shaded by the sign of S (red S > 0, blue S < 0), the curve S = 0 on
+        E, the certificate's witness points, and a legend with the verdict
+        and the extreme values (the CLI's ``tangent --svg``).  The answer is
+        computed again from the inputs (a few milliseconds for quadrics).
+
+        >>> svg = quadsect.tangent("x^2+y^2+z^2-25", "(x-6)^2/9+y^2/4+z^2/16-1").svg()
+        >>> svg.startswith("<svg"), "verdict: intersecting" in svg
+        (True, True)
+        """
+        if self._inputs is None:
+            raise ValueError("this result does not know its inputs (built by hand)")
+        return _quadsect.tangent_svg(*self._inputs)
+
+    def _repr_svg_(self) -> str:
+        """The picture, for Jupyter."""
+        return self.svg()
+
     def __repr__(self) -> str:
         return f"TangentResult(verdict={self.verdict!r}, min={self.min!r}, max={self.max!r})"
 
     def __reduce__(self):
         return (_rebuild_tangent, (_json.dumps(self._json), self._text, self.min, self.max,
                                    self.critical_values, self.nonreal_point_values,
-                                   (self.undecided_kind, self.reason) if self.reason else None))
+                                   (self.undecided_kind, self.reason) if self.reason else None,
+                                   self._inputs))
 
 
 def _rebuild_tangent(*args: Any) -> TangentResult:
@@ -590,6 +613,27 @@ class NaturalResult:
     def notes(self) -> List[str]:
         """Remarks."""
         return list(self.to_json().get("notes", []))
+
+    def svg(self) -> str:
+        """The picture of the answer as SVG text: a 3D view of both surfaces
+        with the components drawn thick and coloured by kind, the axial
+        plane of the paper's figures when the axes are coplanar, and a
+        legend with the class, the counts and the route (the CLI's
+        ``natural --svg``).
+
+        >>> r = quadsect.natural("sphere center=0,0,0 radius2=4", "sphere center=3,0,0 radius2=4")
+        >>> "class conics" in r.svg()
+        True
+        """
+        if self._report is None:
+            # rebuilt by pickle: the quadrics are in the JSON
+            j = self.to_json()
+            return natural(_json.dumps(j["a"]), _json.dumps(j["b"])).svg()
+        return self._report.svg()
+
+    def _repr_svg_(self) -> str:
+        """The picture, for Jupyter."""
+        return self.svg()
 
     def __repr__(self) -> str:
         return (
@@ -740,7 +784,8 @@ def tangent(
     >>> v.verdict, v.values_skipped, v.min
     ('intersecting', True, None)
     """
-    return TangentResult(*_quadsect.tangent(ellipsoid, surface, time_limit, values))
+    return TangentResult(*_quadsect.tangent(ellipsoid, surface, time_limit, values),
+                         inputs=(ellipsoid, surface, time_limit, values))
 
 
 def natural(

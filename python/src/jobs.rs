@@ -22,6 +22,27 @@ fn algebraic(values: &[RealAlg]) -> Vec<RealAlgebraic> {
     values.iter().cloned().map(RealAlgebraic::new).collect()
 }
 
+/// The tangent method's options: the budget, and the values or not.
+fn options(py: Python<'_>, time_limit: Option<f64>, values: bool) -> PyResult<TangentOptions> {
+    let options = TangentOptions::with_budget(guard::budget(py, time_limit)?);
+    Ok(if values {
+        options
+    } else {
+        options.without_values()
+    })
+}
+
+/// The tangent method on the inputs' text.
+fn decide(
+    ellipsoid: &str,
+    surface: &str,
+    options: &TangentOptions,
+) -> Result<quadsect::TangentReport, Error> {
+    let e: Ellipsoid = parse(ellipsoid, "in the ellipsoid")?;
+    let s: Polynomial = parse(surface, "in the surface")?;
+    quadsect::decide_with(&e, &s, options)
+}
+
 /// What `tangent` hands to the Python half.
 type TangentParts = (
     String,
@@ -48,14 +69,9 @@ pub(crate) fn tangent(
     time_limit: Option<f64>,
     values: bool,
 ) -> PyResult<TangentParts> {
-    let mut options = TangentOptions::with_budget(guard::budget(py, time_limit)?);
-    if !values {
-        options = options.without_values();
-    }
+    let options = options(py, time_limit, values)?;
     guard::run(py, || {
-        let e: Ellipsoid = parse(ellipsoid, "in the ellipsoid")?;
-        let s: Polynomial = parse(surface, "in the surface")?;
-        let r = quadsect::decide_with(&e, &s, &options)?;
+        let r = decide(ellipsoid, surface, &options)?;
         let c = r.certificate();
         let undecided = r.undecided().map(|u| {
             let kind = match u {
@@ -74,6 +90,22 @@ pub(crate) fn tangent(
             undecided,
         ))
     })
+}
+
+/// tangent_svg(ellipsoid, surface, time_limit, values) -> str: the
+/// picture of the answer (`TangentReport::svg`), computed again from the
+/// inputs.
+#[pyfunction]
+#[pyo3(signature = (ellipsoid, surface, time_limit = None, values = true))]
+pub(crate) fn tangent_svg(
+    py: Python<'_>,
+    ellipsoid: &str,
+    surface: &str,
+    time_limit: Option<f64>,
+    values: bool,
+) -> PyResult<String> {
+    let options = options(py, time_limit, values)?;
+    guard::run(py, || Ok(decide(ellipsoid, surface, &options)?.svg()))
 }
 
 /// What `roots` hands to the Python half: JSON, text, (root, multiplicity).

@@ -40,6 +40,7 @@ fn _quadsect(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<batch::Batch>()?;
     m.add_function(wrap_pyfunction!(numbers::exact, m)?)?;
     m.add_function(wrap_pyfunction!(jobs::tangent, m)?)?;
+    m.add_function(wrap_pyfunction!(jobs::tangent_svg, m)?)?;
     m.add_function(wrap_pyfunction!(natural::natural, m)?)?;
     m.add_function(wrap_pyfunction!(natural::natural_native, m)?)?;
     m.add_function(wrap_pyfunction!(natural::natural_from_parts, m)?)?;

@@ -281,6 +281,11 @@ impl NativeReport {
         self.r.notes().to_vec()
     }
 
+    /// The picture of the answer (SVG text, `NaturalReport::svg`).
+    fn svg(&self, py: Python<'_>) -> PyResult<String> {
+        guard::run(py, || Ok(self.r.svg()))
+    }
+
     /// The components as tuples (see `quadsect/_components.py`,
     /// `_component`): exact numbers and `(value, bound)` doubles.
     fn components<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyTuple>>> {

@@ -331,3 +331,26 @@ def test_answers_serialise_like_the_cli_json():
     r = quadsect.natural(*PERPENDICULAR)
     line = quadsect.answer_line(json.dumps({"id": 1, "op": "natural", "a": str(PERPENDICULAR[0]), "b": PERPENDICULAR[1]}))
     assert json.loads(line)["result"] == r.to_json()
+
+
+# ------------------------------------------------------------------ pictures
+
+
+def test_pictures_of_both_jobs_and_their_jupyter_display():
+    t = quadsect.tangent(E1, S1)
+    svg = t.svg()
+    assert svg.startswith("<svg") and "verdict: separated" in svg
+    assert t._repr_svg_() == svg
+    # a pickled result draws the same picture (it keeps its inputs)
+    assert pickle.loads(pickle.dumps(t)).svg() == svg
+    n = quadsect.natural(Cylinder((0, 0, 0), (1, 0, 0), 1),
+                         "cylinder point=0,0,0 axis=0,1,0 radius2=1")
+    nsvg = n.svg()
+    assert "class conics" in nsvg and "axial plane" in nsvg
+    assert n._repr_svg_() == nsvg
+    # rebuilt by pickle: drawn again from the quadrics in its JSON
+    assert pickle.loads(pickle.dumps(n)).svg() == nsvg
+    # the batch protocol's "svg" field gives the same text
+    line = json.dumps({"id": 1, "op": "natural", "a": "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+                       "b": "cylinder point=0,0,0 axis=0,1,0 radius2=1", "svg": True})
+    assert json.loads(quadsect.answer_line(line))["result"]["svg"] == nsvg

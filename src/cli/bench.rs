@@ -943,6 +943,7 @@ pub fn run(
         "tangent",
         "nonreduced",
         "natural",
+        "figures",
         "contact",
     ]
     .contains(&suite)
@@ -950,7 +951,7 @@ pub fn run(
         return Err(Error::new(
             ErrorKind::Input,
             format!(
-                "unknown benchmark suite \"{suite}\" (kernel, tangent, nonreduced, natural, contact or all)"
+                "unknown benchmark suite \"{suite}\" (kernel, tangent, nonreduced, natural, figures, contact or all)"
             ),
         ));
     }
@@ -979,10 +980,60 @@ pub fn run(
         natural_suite(&mut rows)?;
         pairs_suite(pairs_path, &mut rows)?;
     }
+    if all || suite == "figures" {
+        figures_suite(&mut rows)?;
+    }
     if suite == "contact" {
         super::bench_contact::contact_suite(pairs_path, &mut rows)?;
     }
     Ok(rows)
+}
+
+/// The pictures of the papers' examples (issue 38): the SVG text from an
+/// answer already computed, and the PNG rendered from it (fonts loaded
+/// before timing: once per process).
+fn figures_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
+    use super::examples::{natural::NATURAL_EXAMPLES, tangent::PAPER_004};
+    let mut pictures: Vec<(String, Box<dyn Fn() -> String>)> = Vec::new();
+    for (i, ex) in NATURAL_EXAMPLES.iter().enumerate() {
+        let r = crate::natural::classify(&ex.a.parse()?, &ex.b.parse()?)?;
+        pictures.push((format!("natural_{:02}", i + 1), Box::new(move || r.svg())));
+    }
+    for (i, ex) in PAPER_004.iter().enumerate() {
+        let r = crate::tangent::decide_str(ex.ellipsoid, ex.surface)?;
+        pictures.push((format!("tangent_{:02}", i + 1), Box::new(move || r.svg())));
+    }
+    let _ = crate::svg_to_png(&pictures[0].1())?;
+    for (id, draw) in &pictures {
+        let (t, n) = measure(|| {
+            std::hint::black_box(draw());
+        });
+        rows.push(Row {
+            suite: "figures",
+            id: format!("{id}_svg"),
+            desc: "the answer's picture as SVG text".into(),
+            median: t,
+            samples: n,
+            extra: Default::default(),
+        });
+        let svg = draw();
+        let (t, n) = measure_with(
+            || {
+                std::hint::black_box(crate::svg_to_png(&svg).ok());
+            },
+            0.05,
+            5,
+        );
+        rows.push(Row {
+            suite: "figures",
+            id: format!("{id}_png"),
+            desc: "the SVG rendered to PNG (resvg)".into(),
+            median: t,
+            samples: n,
+            extra: Default::default(),
+        });
+    }
+    Ok(())
 }
 
 /// Human-readable seconds.

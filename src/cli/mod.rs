@@ -35,6 +35,10 @@ enum Command {
         /// Machine-readable output.
         #[arg(long)]
         json: bool,
+        /// Also write one SVG figure per paper example into DIR (created if
+        /// missing): NAME.svg, named after the paper and the example.
+        #[arg(long, value_name = "DIR")]
+        figures: Option<std::path::PathBuf>,
     },
     /// Real roots of a univariate polynomial: counts and isolating intervals.
     Roots {
@@ -90,6 +94,13 @@ enum Command {
         /// point is proven by an interval enclosure.
         #[arg(long, overrides_with = "values")]
         no_values: bool,
+        /// Also draw the answer into FILE as SVG: E shaded by the sign of S,
+        /// the curve S = 0 on E, the certificate's witness points.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<std::path::PathBuf>,
+        /// Also draw the answer into FILE as PNG (the SVG picture rendered).
+        #[arg(long, value_name = "FILE")]
+        png: Option<std::path::PathBuf>,
     },
     /// Two natural quadrics (sphere, cylinder, cone): class, conics, lines, points.
     Natural {
@@ -112,13 +123,22 @@ enum Command {
         /// ties to even).
         #[arg(long)]
         float: bool,
+        /// Also draw the answer into FILE as SVG: a 3D view of both surfaces
+        /// and the components, and the axial plane when the axes are
+        /// coplanar.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<std::path::PathBuf>,
+        /// Also draw the answer into FILE as PNG (the SVG picture rendered).
+        #[arg(long, value_name = "FILE")]
+        png: Option<std::path::PathBuf>,
     },
     /// Median timings of the kernel (resultants, isolation, Sturm), the tangent
     /// point method and the natural-quadric deciders.
     Bench {
         /// kernel, tangent, nonreduced (surfaces with a repeated factor),
-        /// natural, contact (ellipsoid pairs; --pairs takes a JSON-lines file
-        /// of scripts/bench_contact.py) or all (all but contact).
+        /// natural, figures (the examples' pictures, SVG and PNG), contact
+        /// (ellipsoid pairs; --pairs takes a JSON-lines file of
+        /// scripts/bench_contact.py) or all (all but contact).
         #[arg(default_value = "all")]
         suite: String,
         /// Kernel inputs (JSON; default: the copy shipped in the binary,
@@ -261,8 +281,23 @@ fn number_mode(float: bool) -> crate::number::NumberMode {
 /// answer (tangent, natural) is printed and the command fails with the
 /// budget error (exit status 3); for roots and resultant the error alone
 /// is reported.
-fn answer(json: bool, limits: &LimitArgs, request: Request) -> Result<(), Error> {
+fn answer(
+    json: bool,
+    limits: &LimitArgs,
+    request: Request,
+    pictures: [Option<std::path::PathBuf>; 2],
+) -> Result<(), Error> {
     let a = request.execute(&limits.budget())?;
+    let [svg, png] = pictures;
+    if svg.is_some() || png.is_some() {
+        let text = a.svg().unwrap_or_default();
+        if let Some(path) = svg {
+            write_file(&path, text.as_bytes())?;
+        }
+        if let Some(path) = png {
+            write_file(&path, &crate::svg_to_png(&text)?)?;
+        }
+    }
     emit(json, || &a, || a.to_string());
     match a.exhausted() {
         Some(e) => Err(e.clone().into()),
@@ -270,14 +305,35 @@ fn answer(json: bool, limits: &LimitArgs, request: Request) -> Result<(), Error>
     }
 }
 
+/// Writes a file, with the path in the error.
+fn write_file(path: &std::path::Path, bytes: &[u8]) -> Result<(), Error> {
+    std::fs::write(path, bytes).map_err(|e| {
+        Error::new(
+            ErrorKind::Io,
+            format!("cannot write {}: {e}", path.display()),
+        )
+    })
+}
+
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
-        Command::Examples { json } => {
+        Command::Examples { json, figures } => {
             let r = examples::run_all();
+            if let Some(dir) = figures {
+                std::fs::create_dir_all(&dir).map_err(|e| {
+                    Error::new(
+                        ErrorKind::Io,
+                        format!("cannot create {}: {e}", dir.display()),
+                    )
+                })?;
+                for (name, svg) in examples::figures(&r) {
+                    write_file(&dir.join(format!("{name}.svg")), svg.as_bytes())?;
+                }
+            }
             emit(json, || examples::to_json(&r), || examples::to_human(&r));
         }
         Command::Roots { expr, json, limits } => {
-            answer(json, &limits, Request::Roots { poly: expr })?
+            answer(json, &limits, Request::Roots { poly: expr }, [None, None])?
         }
         Command::Resultant {
             f,
@@ -285,7 +341,12 @@ fn run(cli: Cli) -> Result<(), Error> {
             var,
             json,
             limits,
-        } => answer(json, &limits, Request::Resultant { f, g, var })?,
+        } => answer(
+            json,
+            &limits,
+            Request::Resultant { f, g, var },
+            [None, None],
+        )?,
         Command::Tangent {
             ellipsoid,
             surface,
@@ -294,6 +355,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             limits,
             values: _,
             no_values,
+            svg,
+            png,
         } => answer(
             json,
             &limits,
@@ -303,6 +366,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 mode: number_mode(float),
                 values: !no_values,
             },
+            [svg, png],
         )?,
         Command::Natural {
             a,
@@ -312,6 +376,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             no_components,
             float,
             limits,
+            svg,
+            png,
         } => {
             let mode = number_mode(float);
             let parse = |t: &str, what: &str| {
@@ -326,6 +392,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                     b,
                     components: !no_components,
                 },
+                [svg, png],
             )?
         }
         Command::Bench {

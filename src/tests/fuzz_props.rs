@@ -329,7 +329,7 @@ proptest! {
         let fields = crate::request::OPS.iter().find(|(n, _)| *n == op).map_or(&[][..], |(_, f)| *f);
         for (i, f) in fields.iter().enumerate() {
             let v = match *f {
-                "values" | "components" | "float" => json!(flag),
+                "values" | "components" | "float" | "svg" => json!(flag),
                 "var" => json!(["x", "y", "w"][i % 3]),
                 _ => json!(text[i % text.len()]),
             };

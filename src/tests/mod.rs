@@ -9,7 +9,9 @@
 //!   classification of every class, property tests;
 //! * `kernel_props`, `kernel_reference`: the algebra kernel against
 //!   properties and against committed sympy reference data;
-//! * `fuzz_props`: proptest versions of the fuzz targets.
+//! * `fuzz_props`: proptest versions of the fuzz targets;
+//! * `figures`: the pictures (well-formed, inked, one per class and
+//!   verdict, the committed ones up to date).
 
 /// One step of Marsaglia's xorshift (shifts 13, 7, 17): the fixed
 /// pseudo-random sequences of the unit tests.
@@ -21,6 +23,8 @@ pub(crate) fn xorshift(state: &mut u64) -> u64 {
 }
 
 mod fast_route;
+#[cfg(all(feature = "cli", feature = "png"))]
+mod figures;
 mod fuzz_props;
 mod kernel_props;
 mod kernel_reference;

@@ -23,6 +23,36 @@ pub struct ExampleResult {
     pub paper: String,
     /// Discrepancies between the paper and the exact answer.
     pub discrepancies: Vec<String>,
+    /// The answer's picture (SVG), for the examples of the papers.
+    pub figure: Option<String>,
+}
+
+/// The figures of the examples that have one, each with a file name made
+/// of its source and title (`paper-004-example-1`, …).
+pub fn figures(r: &[ExampleResult]) -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = Vec::new();
+    for e in r {
+        let Some(svg) = &e.figure else { continue };
+        let mut name = String::new();
+        for c in format!("{} {}", e.source, e.title).chars() {
+            if c.is_ascii_alphanumeric() {
+                name.push(c.to_ascii_lowercase());
+            } else if !name.ends_with('-') {
+                name.push('-');
+            }
+        }
+        let mut name = name.trim_matches('-').chars().take(60).collect::<String>();
+        name = name.trim_end_matches('-').to_string();
+        // distinct names
+        let base = name.clone();
+        let mut k = 2;
+        while out.iter().any(|(n, _)| *n == name) {
+            name = format!("{base}-{k}");
+            k += 1;
+        }
+        out.push((name, svg.clone()));
+    }
+    out
 }
 
 fn kernel_examples() -> Vec<ExampleResult> {
@@ -46,6 +76,7 @@ fn kernel_examples() -> Vec<ExampleResult> {
                 ours_json: crate::report::roots_json(&r),
                 paper: String::new(),
                 discrepancies: vec![],
+                figure: None,
             });
         }
     }

@@ -285,6 +285,7 @@ pub fn natural_examples() -> Vec<ExampleResult> {
                         ours_json: natural_json(&r),
                         paper: ex.expected.into(),
                         discrepancies: disc,
+                        figure: Some(r.svg()),
                     }
                 }
                 Err(e) => ExampleResult {
@@ -295,6 +296,7 @@ pub fn natural_examples() -> Vec<ExampleResult> {
                     ours_json: serde_json::Value::Null,
                     paper: ex.expected.into(),
                     discrepancies: vec![format!("error: {e}")],
+                    figure: None,
                 },
             }
         })

@@ -121,6 +121,7 @@ pub fn paper_examples() -> Vec<ExampleResult> {
                     ours_json: serde_json::Value::Null,
                     paper: ex.printed.into(),
                     discrepancies: vec![],
+                    figure: None,
                 });
                 continue;
             }
@@ -164,6 +165,7 @@ pub fn paper_examples() -> Vec<ExampleResult> {
             ours_json: tangent_json(&r),
             paper: ex.printed.into(),
             discrepancies: disc,
+            figure: Some(r.svg()),
         });
     }
     out

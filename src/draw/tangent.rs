@@ -1,0 +1,390 @@
+//! The picture of a tangent-method answer: the ellipsoid E from two
+//! opposite sides, its surface shaded by the sign and size of S (red where
+//! S > 0, blue where S < 0, in doubles), the level curve S = 0 on E traced
+//! through the mesh, and the witness points of the certificate (exact
+//! points of E in Q(√d)) marked with the sign of S there.
+
+use super::{Camera, P3, Svg, add, dot, norm, scale, sub, symmetric_eigen, unit};
+use crate::poly::QMPoly;
+use crate::tangent::TangentReport;
+use crate::tangent::ellipsoid::Ellipsoid;
+
+const W: f64 = 1000.0;
+const H: f64 = 620.0;
+const PANEL: f64 = 480.0;
+
+/// S in doubles, from its terms (coefficients and powers).
+struct SurfaceF {
+    terms: Vec<(f64, [i32; 3])>,
+}
+
+impl SurfaceF {
+    fn new(s: &QMPoly) -> SurfaceF {
+        SurfaceF {
+            terms: s
+                .terms()
+                .iter()
+                .map(|(e, c)| (super::qf(c), [e[0] as i32, e[1] as i32, e[2] as i32]))
+                .collect(),
+        }
+    }
+    fn eval(&self, p: P3) -> f64 {
+        self.terms
+            .iter()
+            .map(|(c, e)| c * p[0].powi(e[0]) * p[1].powi(e[1]) * p[2].powi(e[2]))
+            .sum()
+    }
+}
+
+/// E as `centre + M·y` for unit `y` (doubles): `M = V·diag(√(−E(c)/λᵢ))`.
+struct EllipsoidF {
+    c: P3,
+    m: [[f64; 3]; 3],
+    /// The inverse-transpose, for normals: `n = M⁻ᵀ·y`.
+    mit: [[f64; 3]; 3],
+}
+
+impl EllipsoidF {
+    fn new(e: &Ellipsoid) -> EllipsoidF {
+        let a: [[f64; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|j| super::qf(&e.form.a[i][j])));
+        let (l, v) = symmetric_eigen(a);
+        let k = -super::qf(&e.center_value);
+        let s: [f64; 3] = std::array::from_fn(|i| (k / l[i]).abs().sqrt());
+        let m = std::array::from_fn(|i| std::array::from_fn(|j| v[i][j] * s[j]));
+        let mit = std::array::from_fn(|i| std::array::from_fn(|j| v[i][j] / s[j]));
+        EllipsoidF {
+            c: super::q3(&e.center),
+            m,
+            mit,
+        }
+    }
+    fn point(&self, y: P3) -> P3 {
+        add(self.c, std::array::from_fn(|i| dot(self.m[i], y)))
+    }
+    fn normal(&self, y: P3) -> P3 {
+        unit(std::array::from_fn(|i| dot(self.mit[i], y)))
+    }
+    fn radius(&self) -> f64 {
+        (0..3)
+            .map(|j| norm([self.m[0][j], self.m[1][j], self.m[2][j]]))
+            .fold(0.0, f64::max)
+    }
+}
+
+fn sphere(theta: f64, phi: f64) -> P3 {
+    [
+        theta.sin() * phi.cos(),
+        theta.sin() * phi.sin(),
+        theta.cos(),
+    ]
+}
+
+/// Where S is smallest or largest on E (`sign` −1 or +1): the best mesh
+/// vertex, improved by a pattern search in the angles (doubles; the value
+/// printed beside it is the exact one of the answer).
+fn extreme(e: &EllipsoidF, s: &SurfaceF, sign: f64) -> P3 {
+    let f = |t: f64, p: f64| sign * s.eval(e.point(sphere(t, p)));
+    let (mut bt, mut bp, mut bv) = (0.0, 0.0, f64::NEG_INFINITY);
+    for i in 0..=60 {
+        for j in 0..120 {
+            let (t, p) = (
+                std::f64::consts::PI * i as f64 / 60.0,
+                std::f64::consts::TAU * j as f64 / 120.0,
+            );
+            let v = f(t, p);
+            if v > bv {
+                (bt, bp, bv) = (t, p, v);
+            }
+        }
+    }
+    let mut h = 0.05;
+    for _ in 0..200 {
+        let mut moved = false;
+        for (dt, dp) in [(h, 0.0), (-h, 0.0), (0.0, h), (0.0, -h)] {
+            let v = f(bt + dt, bp + dp);
+            if v > bv {
+                (bt, bp, bv) = (bt + dt, bp + dp, v);
+                moved = true;
+            }
+        }
+        if !moved {
+            h *= 0.5;
+            if h < 1e-9 {
+                break;
+            }
+        }
+    }
+    e.point(sphere(bt, bp))
+}
+
+/// The colour of a value: red (S > 0) or blue (S < 0), deeper with |S|.
+fn color(v: f64, vmax: f64) -> String {
+    let t = if vmax > 0.0 {
+        (v.abs() / vmax).sqrt().min(1.0)
+    } else {
+        0.0
+    };
+    let (r, g, b) = if v > 0.0 {
+        (214.0, 96.0, 77.0)
+    } else if v < 0.0 {
+        (67.0, 147.0, 195.0)
+    } else {
+        (200.0, 200.0, 200.0)
+    };
+    let mix = |c: f64| (255.0 + (c - 255.0) * (0.25 + 0.75 * t)).round() as u8;
+    format!("#{:02x}{:02x}{:02x}", mix(r), mix(g), mix(b))
+}
+
+#[allow(clippy::too_many_arguments)]
+fn view(
+    svg: &mut Svg,
+    e: &EllipsoidF,
+    s: &SurfaceF,
+    report: &TangentReport,
+    eye: P3,
+    x0: f64,
+    y0: f64,
+    label: &str,
+) {
+    let r = e.radius();
+    let cam = Camera::new(
+        e.c,
+        eye,
+        0.42 * PANEL / r,
+        (x0 + PANEL / 2.0, y0 + PANEL / 2.0),
+    );
+    svg.rect(x0, y0, PANEL, PANEL, "#fbfbfb", "#cccccc");
+    // the shading on a coarse mesh, S = 0 through a fine one
+    let grid = |nt: usize, np: usize| -> Vec<Vec<P3>> {
+        (0..=nt)
+            .map(|i| {
+                (0..=np)
+                    .map(|j| {
+                        sphere(
+                            std::f64::consts::PI * i as f64 / nt as f64,
+                            std::f64::consts::TAU * j as f64 / np as f64,
+                        )
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let front = |ys: &[P3]| {
+        let mid = unit(ys.iter().fold([0.0; 3], |a, &y| add(a, y)));
+        dot(e.normal(mid), cam.eye) > 0.0
+    };
+    let coarse = grid(30, 60);
+    let vmax = coarse
+        .iter()
+        .flatten()
+        .map(|&y| s.eval(e.point(y)))
+        .filter(|v| v.is_finite())
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    for i in 0..coarse.len() - 1 {
+        for j in 0..coarse[i].len() - 1 {
+            let ys = [
+                coarse[i][j],
+                coarse[i][j + 1],
+                coarse[i + 1][j + 1],
+                coarse[i + 1][j],
+            ];
+            if !front(&ys) {
+                continue; // the far side
+            }
+            let pts: Vec<(f64, f64)> = ys.iter().map(|&y| cam.project(e.point(y))).collect();
+            let mid = unit(ys.iter().fold([0.0; 3], |a, &y| add(a, y)));
+            let c = color(s.eval(e.point(mid)), vmax);
+            svg.polygon(&pts, &c, &c);
+        }
+    }
+    // S changes sign on E only when they intersect (the exact verdict):
+    // touching, the zero set is where an extreme 0 is attained (marked
+    // below), not a curve
+    let crossing = report.verdict() == crate::Verdict::Intersecting;
+    let fine = if crossing { grid(120, 240) } else { vec![] };
+    let vals: Vec<Vec<f64>> = fine
+        .iter()
+        .map(|row| row.iter().map(|&y| s.eval(e.point(y))).collect())
+        .collect();
+    let mut zero_segments: Vec<[(f64, f64); 2]> = Vec::new();
+    for i in 0..fine.len().saturating_sub(1) {
+        for j in 0..fine[i].len() - 1 {
+            let vs = [
+                vals[i][j],
+                vals[i][j + 1],
+                vals[i + 1][j + 1],
+                vals[i + 1][j],
+            ];
+            if vs.iter().all(|v| *v < 0.0) || vs.iter().all(|v| *v >= 0.0) {
+                continue;
+            }
+            let ys = [
+                fine[i][j],
+                fine[i][j + 1],
+                fine[i + 1][j + 1],
+                fine[i + 1][j],
+            ];
+            if !front(&ys) {
+                continue;
+            }
+            let pts: Vec<(f64, f64)> = ys.iter().map(|&y| cam.project(e.point(y))).collect();
+            let mut cut = Vec::new();
+            for k in 0..4 {
+                let (a, b) = (vs[k], vs[(k + 1) % 4]);
+                if (a < 0.0) != (b < 0.0) && a.is_finite() && b.is_finite() {
+                    let t = a / (a - b);
+                    let (p, q) = (pts[k], pts[(k + 1) % 4]);
+                    cut.push((p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1)));
+                }
+            }
+            if cut.len() >= 2 {
+                zero_segments.push([cut[0], cut[1]]);
+            }
+            if cut.len() == 4 {
+                zero_segments.push([cut[2], cut[3]]);
+            }
+        }
+    }
+    svg.segments(&zero_segments, "#111111", 2.2);
+    // the certificate's witness points
+    let cert = report.certificate();
+    for (w, name) in [
+        (cert.negative_witness(), "S < 0"),
+        (cert.positive_witness(), "S > 0"),
+    ] {
+        let Some(w) = w else { continue };
+        let p: P3 = std::array::from_fn(|i| w.coords()[i].to_f64_bounded().0);
+        let at = cam.project(p);
+        let n = sub(p, e.c);
+        let front = dot(n, cam.eye) >= 0.0;
+        let fill = if name == "S < 0" {
+            "#08519c"
+        } else {
+            "#a50f15"
+        };
+        if front {
+            svg.circle(at, 6.0, fill, "white", 2.0);
+            svg.text(
+                (at.0 + 9.0, at.1 - 7.0),
+                12.0,
+                "#111111",
+                &format!("witness {name}"),
+            );
+        } else {
+            svg.circle(at, 5.0, "none", fill, 1.5);
+        }
+    }
+    // where the extremes are attained (located in doubles)
+    for (sign, name, v) in [(-1.0, "min", report.min()), (1.0, "max", report.max())] {
+        let p = extreme(e, s, sign);
+        let at = cam.project(p);
+        if dot(sub(p, e.c), cam.eye) < 0.0 {
+            continue;
+        }
+        let d = 7.0;
+        svg.polygon(
+            &[
+                (at.0, at.1 - d),
+                (at.0 + d, at.1),
+                (at.0, at.1 + d),
+                (at.0 - d, at.1),
+            ],
+            "#ffd23f",
+            "#111111",
+        );
+        let value = v.map(|v| v.approx(8)).unwrap_or_else(|| "?".into());
+        svg.text(
+            (at.0 + 10.0, at.1 + 14.0),
+            12.0,
+            "#111111",
+            &format!("{name} S = {value}"),
+        );
+    }
+    svg.text((x0 + 8.0, y0 + 18.0), 13.0, "#333333", label);
+}
+
+/// The SVG picture of a tangent-method answer.
+pub(crate) fn svg(report: &TangentReport) -> String {
+    let title = format!(
+        "E: {} · S: {} — {}",
+        report.ellipsoid.to_string_canonical(),
+        report.surface.to_string_canonical(),
+        report.verdict().as_str()
+    );
+    let mut svg = Svg::new(W, H, &title);
+    let Ok(e) = Ellipsoid::from_poly(&report.ellipsoid) else {
+        svg.text((20.0, 40.0), 14.0, "#111111", "E is not an ellipsoid");
+        return svg.finish();
+    };
+    let ef = EllipsoidF::new(&e);
+    let s = SurfaceF::new(&report.surface);
+    let eye = [1.0, -1.4, 0.8];
+    view(
+        &mut svg,
+        &ef,
+        &s,
+        report,
+        eye,
+        12.0,
+        12.0,
+        "E seen from (1, −1.4, 0.8)",
+    );
+    view(
+        &mut svg,
+        &ef,
+        &s,
+        report,
+        scale(eye, -1.0),
+        24.0 + PANEL,
+        12.0,
+        "E seen from the opposite side",
+    );
+    let y = PANEL + 36.0;
+    svg.text(
+        (14.0, y),
+        16.0,
+        "#111111",
+        &format!("verdict: {}", report.verdict().as_str()),
+    );
+    let val = |v: Option<&crate::roots::RealAlg>| match v {
+        Some(v) => v.approx(12),
+        None => "not computed".to_string(),
+    };
+    svg.text(
+        (14.0, y + 20.0),
+        12.0,
+        "#333333",
+        &format!(
+            "min S on E ≈ {} · max S on E ≈ {} (exact values in the answer)",
+            val(report.min()),
+            val(report.max())
+        ),
+    );
+    let clip = |t: String| -> String {
+        if t.chars().count() > 110 {
+            format!("{}…", t.chars().take(110).collect::<String>())
+        } else {
+            t
+        }
+    };
+    svg.text(
+        (14.0, y + 38.0),
+        12.0,
+        "#333333",
+        &clip(format!("E: {}", report.ellipsoid.to_string_canonical())),
+    );
+    svg.text(
+        (14.0, y + 54.0),
+        12.0,
+        "#333333",
+        &clip(format!("S: {}", report.surface.to_string_canonical())),
+    );
+    svg.text(
+        (14.0, y + 72.0),
+        12.0,
+        "#333333",
+        "red S > 0, blue S < 0 (deeper: larger |S|); black: S = 0 on E; dots: the certificate's witness points; diamonds: where min and max are attained",
+    );
+    svg.finish()
+}
