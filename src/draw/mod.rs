@@ -11,11 +11,12 @@
 //! verdict, the kinds of the components) and every label comes from the
 //! exact answer.  The strokes are doubles: conics, lines and points from
 //! their exact data (centres, semi-axes, directions, coordinates, converted
-//! to the nearest doubles); a space curve through points of the same
-//! ruling parametrization the exact topology uses (each a root of a
-//! quadratic on one ruling, in doubles); the surfaces' silhouettes and the
-//! tangent method's shading from the equations evaluated in doubles.  A
-//! picture shows; the certificate proves.
+//! to the nearest doubles); a space curve through certified points of the
+//! ruling parameterisation the exact topology uses (ball arithmetic, each
+//! point within 2^-40 relative of a point of the curve); the surfaces'
+//! silhouettes, the tangent method's shading and level curve and the
+//! places of its extremes from the equations evaluated in doubles (not
+//! certified).  A picture shows; the certificate proves.
 
 pub(crate) mod natural;
 #[cfg(feature = "png")]

@@ -308,7 +308,13 @@ fn components(report: &NaturalReport, a: &Shape, b: &Shape, c: P3, r: f64) -> Ve
             Component::Curve {
                 singular, branches, ..
             } => {
-                let paths = curve_paths(a, b, c, r);
+                // certified points along the rulings (the exact topology's
+                // parameterisation); an answer without branches (the
+                // reference route) has no curve to draw (the legend says so)
+                let paths = branches
+                    .first()
+                    .map(|first| first.start.trace(2000))
+                    .unwrap_or_default();
                 out.push(Drawn {
                     bounded: !branches.is_empty() && branches.iter().all(|b| b.bounded),
                     paths,
@@ -323,117 +329,6 @@ fn components(report: &NaturalReport, a: &Shape, b: &Shape, c: P3, r: f64) -> Ve
         }
     }
     out
-}
-
-/// Points of `P ∩ Q` along the rulings of the cylinder or cone `P` (the
-/// exact topology's parametrization, in doubles): over each ruling the
-/// other surface is a quadratic in the ruling's parameter; its real roots
-/// are the curve's points, joined ruling to ruling by their order.
-fn curve_paths(a: &Shape, b: &Shape, c: P3, r: f64) -> Vec<Vec<P3>> {
-    let (p, q) = match (a, b) {
-        (Shape::Sphere { .. }, _) => (b, a),
-        _ => (a, b),
-    };
-    let ruling = |theta: f64| -> Option<(P3, P3)> {
-        match *p {
-            Shape::Cylinder { q: q0, a, r: rr } => {
-                let u = perpendicular(a);
-                let w = cross(a, u);
-                // the axis point nearest the scene's centre
-                let base = add(q0, scale(a, dot(sub(c, q0), a)));
-                let foot = add(
-                    base,
-                    add(scale(u, rr * theta.cos()), scale(w, rr * theta.sin())),
-                );
-                Some((foot, a))
-            }
-            Shape::Cone { v, a, t2 } => {
-                let u = perpendicular(a);
-                let w = cross(a, u);
-                let s = t2.sqrt();
-                let g = unit(add(
-                    a,
-                    add(scale(u, s * theta.cos()), scale(w, s * theta.sin())),
-                ));
-                Some((v, g))
-            }
-            Shape::Sphere { .. } => None,
-        }
-    };
-    let n = 2000;
-    // per ruling: the roots (sorted) as points
-    let mut rows: Vec<Vec<P3>> = Vec::with_capacity(n + 1);
-    for i in 0..=n {
-        let theta = std::f64::consts::TAU * i as f64 / n as f64;
-        let Some((o, d)) = ruling(theta) else {
-            return vec![];
-        };
-        let f0 = q.eval(o);
-        let fp = q.eval(add(o, scale(d, r)));
-        let fm = q.eval(sub(o, scale(d, r)));
-        // f(o + s·r·d) = c2 s² + c1 s + c0
-        let (c2, c1, c0) = ((fp + fm) / 2.0 - f0, (fp - fm) / 2.0, f0);
-        let mut roots = Vec::new();
-        if c2.abs() > 1e-12 * (c1.abs() + c0.abs() + c2.abs()) {
-            let disc = c1 * c1 - 4.0 * c2 * c0;
-            if disc >= 0.0 {
-                let sq = disc.sqrt();
-                let t = -0.5 * (c1 + c1.signum() * sq);
-                let (s1, s2) = (t / c2, if t != 0.0 { c0 / t } else { 0.0 });
-                roots.push(s1.min(s2));
-                roots.push(s1.max(s2));
-            }
-        } else if c1 != 0.0 {
-            roots.push(-c0 / c1);
-        }
-        rows.push(roots.into_iter().map(|s| add(o, scale(d, s * r))).collect());
-    }
-    // sheets: the lower and the upper root, joined where they meet
-    let mut out: Vec<Vec<P3>> = Vec::new();
-    let mut lo: Vec<P3> = Vec::new();
-    let mut hi: Vec<P3> = Vec::new();
-    let flush = |lo: &mut Vec<P3>, hi: &mut Vec<P3>, out: &mut Vec<Vec<P3>>| {
-        if lo.is_empty() {
-            return;
-        }
-        // the two sheets meet at the ends of a run: one path around
-        let mut path = std::mem::take(lo);
-        let mut top = std::mem::take(hi);
-        top.reverse();
-        path.extend(top);
-        out.push(path);
-    };
-    for row in &rows {
-        match row.len() {
-            2 => {
-                lo.push(row[0]);
-                hi.push(row[1]);
-            }
-            1 => {
-                lo.push(row[0]);
-            }
-            _ => flush(&mut lo, &mut hi, &mut out),
-        }
-    }
-    flush(&mut lo, &mut hi, &mut out);
-    // a long jump inside a path is a sheet cut at infinity: split there
-    let jump = r / 8.0;
-    out.into_iter()
-        .flat_map(|path| {
-            let mut pieces = vec![Vec::new()];
-            for p in path {
-                let last = pieces.last_mut().expect("non-empty");
-                if let Some(&prev) = last.last()
-                    && norm(sub(p, prev)) > jump
-                {
-                    pieces.push(vec![p]);
-                } else {
-                    last.push(p);
-                }
-            }
-            pieces
-        })
-        .collect()
 }
 
 /// The view direction: among directions spread over a hemisphere, the one
@@ -829,9 +724,81 @@ pub(crate) fn svg(report: &NaturalReport) -> String {
         svg.text((x + 30.0, y + 74.0), 12.0, "#333333", name);
         x += 112.0;
     }
-    for (i, note) in report.notes.iter().take(4).enumerate() {
+    let untraced = report
+        .components
+        .iter()
+        .any(|c| matches!(c, Component::Curve { branches, .. } if branches.is_empty()));
+    let mut notes: Vec<String> = Vec::new();
+    if untraced {
+        notes.push("the curve is not drawn: this answer has no branch data".into());
+    }
+    notes.extend(report.notes.iter().cloned());
+    for (i, note) in notes.iter().take(4).enumerate() {
         let note: String = note.chars().take(80).collect();
         svg.text((lx, y + 96.0 + 16.0 * i as f64), 11.0, "#555555", &note);
     }
     svg.finish()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The traced points of a space curve lie on both surfaces (to the
+    /// doubles' accuracy), and every bounded branch closes.
+    #[test]
+    fn traced_curves_lie_on_both_surfaces() {
+        for (a, b) in [
+            (
+                "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+                "cone vertex=0,1,0 axis=1,1,0 tan2=3",
+            ),
+            (
+                "cone vertex=0,0,0 axis=1,0,0 tan2=1",
+                "cylinder point=0,0,0 axis=0,0,1 radius2=1",
+            ),
+            (
+                "sphere center=0,0,0 radius2=4",
+                "cylinder point=1,0,0 axis=0,0,1 radius2=1",
+            ),
+            (
+                "cylinder point=0,0,0 axis=1,0,0 radius2=1",
+                "cylinder point=0,1/2,0 axis=1,1,1 radius2=2",
+            ),
+        ] {
+            let (na, nb): (Natural, Natural) = (a.parse().unwrap(), b.parse().unwrap());
+            let r = crate::natural::classify(&na, &nb).unwrap();
+            let (sa, sb) = (shape(&na), shape(&nb));
+            let mut traced = 0;
+            for c in r.components() {
+                let Component::Curve { branches, .. } = c else {
+                    continue;
+                };
+                let paths = branches[0].start.trace(500);
+                assert!(!paths.is_empty(), "{a} / {b}");
+                for p in paths.iter().flatten() {
+                    let size = 1.0 + norm(*p);
+                    for s in [&sa, &sb] {
+                        assert!(s.eval(*p).abs() < 1e-9 * size * size, "{a} / {b}: {p:?}");
+                    }
+                    traced += 1;
+                }
+                if branches.iter().all(|b| b.bounded) {
+                    // closed: every path's ends meet another path's ends
+                    let ends = |q: &Vec<P3>| [q[0], q[q.len() - 1]];
+                    for (i, path) in paths.iter().enumerate() {
+                        let [first, last] = ends(path);
+                        let closed = norm(sub(first, last)) < 0.05;
+                        for e in [first, last] {
+                            let joined = paths.iter().enumerate().any(|(j, q)| {
+                                j != i && ends(q).iter().any(|f| norm(sub(*f, e)) < 0.05)
+                            });
+                            assert!(closed || joined, "{a} / {b}: an open end {e:?}");
+                        }
+                    }
+                }
+            }
+            assert!(traced > 100, "{a} / {b}: {traced} points");
+        }
+    }
 }

@@ -780,6 +780,13 @@ impl CurvePoint {
         self.root
     }
 
+    /// Certified points of the whole curve for drawing, along `n` rulings
+    /// ([`RulingSource::trace`]): the paths of every branch of the curve
+    /// this point is on (the parameterisation is shared by the branches).
+    pub(crate) fn trace(&self, n: usize) -> Vec<Vec<[f64; 3]>> {
+        self.src.trace(n)
+    }
+
     /// `t` when it lies in the field of the ruling (the cone's apex or the
     /// cylinder's point at infinity lies on the other quadric).
     pub fn parameter(&self) -> Option<&QSqrt> {
@@ -933,6 +940,21 @@ impl RulingSource {
     /// a coordinate is not tight (a cancellation), then the exact values
     /// decide.
     fn approx_by_balls(&self, at: &RulingPoint, root: i32) -> Option<[(f64, f64); 3]> {
+        let balls = self.point_balls(at, root)?;
+        let mut approx = [(0.0, 0.0); 3];
+        for i in 0..3 {
+            let x = balls[i];
+            if !(x.m == 0.0 && x.r == 0.0 || tight(&x)) {
+                return None;
+            }
+            approx[i] = double_of(x);
+        }
+        Some(approx)
+    }
+
+    /// The balls of the point's coordinates ([`Self::approx_by_balls`]
+    /// without the tightness test); `None` when a sign is not certain.
+    fn point_balls(&self, at: &RulingPoint, root: i32) -> Option<[XBall; 3]> {
         let r = &self.rulings;
         let g = &r.gamma;
         let xb = XBall::from_q(&at.x);
@@ -974,15 +996,101 @@ impl RulingSource {
         } else {
             qc.mul(&qb.neg().sub(&sq).recip()?)
         };
-        let mut approx = [(0.0, 0.0); 3];
-        for i in 0..3 {
-            let x = p0[i].add(&t.mul(&dir[i]));
-            if !(x.m == 0.0 && x.r == 0.0 || tight(&x)) {
-                return None;
+        Some(std::array::from_fn(|i| p0[i].add(&t.mul(&dir[i]))))
+    }
+
+    /// Points of `X` for drawing: over `n` rulings of `P` around `Γ` (the
+    /// rational `x = ⌊xm·cos θ⌉` on a 2^-40 grid, `y`'s sign that of
+    /// `sin θ`), each root of the ruling's quadratic as certified doubles
+    /// ([`Self::point_balls`]: every point is on the curve within its
+    /// proven bounds, below 2^-30 of the point's size).  Runs of
+    /// consecutive rulings with a point make the paths; where the two roots
+    /// meet (`Δ = 0` between two rulings) their last points are joined.
+    /// No point where the ball evaluation is not certain (near `Δ = 0`, a
+    /// point at infinity): a gap there.
+    fn trace(&self, n: usize) -> Vec<Vec<[f64; 3]>> {
+        let g = &self.rulings.gamma;
+        // xm = √(g0/g1), a hair inside Γ's range of x
+        let Some(ratio) = XBall::from_z(&g.g1)
+            .recip()
+            .map(|r| XBall::from_z(&g.g0).mul(&r))
+            .and_then(|b| b.to_f64())
+            .map(|(v, _)| v)
+            .filter(|v| v.is_finite() && *v > 0.0)
+        else {
+            return vec![];
+        };
+        let xm = ratio.sqrt() * (1.0 - 1e-9);
+        let scale = (1u64 << 40) as f64;
+        let points: Vec<[Option<[f64; 3]>; 2]> = (0..n)
+            .map(|k| {
+                let theta = std::f64::consts::TAU * (k as f64 + 0.5) / n as f64;
+                let xr = (xm * theta.cos() * scale).round();
+                let Some(xz) = <Z as num_traits::FromPrimitive>::from_f64(xr) else {
+                    return [None, None];
+                };
+                let at = RulingPoint {
+                    x: Q::new(xz, Z::from(1u64 << 40)),
+                    ys: if theta.sin() >= 0.0 { 1 } else { -1 },
+                    sheet: 1,
+                };
+                // a point within 2^-30 of its size (absolute, not per
+                // coordinate: a coordinate near 0 is drawn as well)
+                let one = |root: i32| -> Option<[f64; 3]> {
+                    let b = self.point_balls(&at, root)?;
+                    let d: Vec<(f64, f64)> = b.iter().map(|x| x.to_f64()).collect::<Option<_>>()?;
+                    let size = d.iter().fold(1.0f64, |m, (v, _)| m.max(v.abs()));
+                    let ok = d.iter().all(|(v, e)| v.is_finite() && *e <= size * 9.3e-10);
+                    ok.then(|| [d[0].0, d[1].0, d[2].0])
+                };
+                [one(-1), one(1)]
+            })
+            .collect();
+        // start at a ruling without a point of either root, if any (a run
+        // is then never cut by the wrap-around)
+        let start = points
+            .iter()
+            .position(|p| p[0].is_none() && p[1].is_none())
+            .unwrap_or(0);
+        let mut paths = Vec::new();
+        for root in 0..2 {
+            let mut cur: Vec<[f64; 3]> = Vec::new();
+            for k in 0..=n {
+                match points[(start + k) % n][root] {
+                    Some(p) if k < n => cur.push(p),
+                    _ => {
+                        if cur.len() > 1 {
+                            paths.push(std::mem::take(&mut cur));
+                        }
+                        cur.clear();
+                    }
+                }
             }
-            approx[i] = double_of(x);
+            // a root on every ruling: a closed loop, closed
+            if points.iter().all(|p| p[root].is_some())
+                && let (Some(first), Some(path)) = (points[start][root], paths.last_mut())
+            {
+                path.push(first);
+            }
         }
-        Some(approx)
+        // where the roots meet: both present at a ruling, both absent at the
+        // next (or the previous)
+        for k in 0..n {
+            let (here, next) = (&points[k], &points[(k + 1) % n]);
+            let both = |p: &[Option<[f64; 3]>; 2]| p[0].zip(p[1]);
+            let none = |p: &[Option<[f64; 3]>; 2]| p[0].is_none() && p[1].is_none();
+            if let Some((a, b)) = both(here)
+                && none(next)
+            {
+                paths.push(vec![a, b]);
+            }
+            if let Some((a, b)) = both(next)
+                && none(here)
+            {
+                paths.push(vec![a, b]);
+            }
+        }
+        paths
     }
 
     /// The exact data of the point over `Z[√D]/den`, unreduced, and `t`
