@@ -13,10 +13,12 @@
 //! their exact data (centres, semi-axes, directions, coordinates, converted
 //! to the nearest doubles); a space curve through certified points of the
 //! ruling parameterisation the exact topology uses (ball arithmetic, each
-//! point within 2^-40 relative of a point of the curve); the surfaces'
-//! silhouettes, the tangent method's shading and level curve and the
-//! places of its extremes from the equations evaluated in doubles (not
-//! certified).  A picture shows; the certificate proves.
+//! point within 2^-30 of its size of a point of the curve); the places
+//! where the tangent method's extremes are attained proven by a Krawczyk
+//! box when the proof succeeds (else drawn hollow); the surfaces'
+//! silhouettes and the tangent method's shading and level curve from the
+//! equations evaluated in doubles (not certified).  A picture shows; the
+//! certificate proves.
 
 pub(crate) mod natural;
 #[cfg(feature = "png")]

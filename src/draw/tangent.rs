@@ -118,6 +118,88 @@ fn extreme(e: &EllipsoidF, s: &SurfaceF, sign: f64) -> P3 {
     e.point(sphere(bt, bp))
 }
 
+/// A proof that the critical point near `p` attains `value`: a Krawczyk
+/// box (exact interval arithmetic) holding exactly one zero of `E` and of
+/// two components of `∇S × ∇E` across the normal `n₀` near `p` — with
+/// `∇E·n₀ > 0` on the box the cross product (always ⟂ `∇E`) then
+/// vanishes, so the zero is a critical point of S on E — and S's
+/// enclosure on the box holds `value` and no other critical value.
+/// `None` when a step does not prove it (the mark is then drawn hollow:
+/// located in doubles).
+fn certified_extreme(
+    report: &TangentReport,
+    e: &Ellipsoid,
+    p: P3,
+    value: &crate::roots::RealAlg,
+) -> Option<()> {
+    use crate::number::Q;
+    use crate::poly::{QMPoly, ZMPoly};
+    use crate::system::krawczyk::{Dyadic3, System, eval_box};
+    use num_traits::FromPrimitive;
+    use std::cmp::Ordering;
+    let grad_e = crate::geom::gradient(&e.poly);
+    let grad_s = crate::geom::gradient(&report.surface);
+    // n₀ = ∇E at a dyadic point near p, and two short rational vectors
+    // across it
+    let at: [Q; 6] =
+        std::array::from_fn(|i| p.get(i).and_then(|v| Q::from_f64(*v)).unwrap_or_default());
+    let n0: [Q; 3] = std::array::from_fn(|i| grad_e[i].eval(&at));
+    let n = unit(std::array::from_fn(|i| super::qf(&n0[i])));
+    let a = super::perpendicular(n);
+    let b = super::cross(n, a);
+    let short = |v: P3| -> [Q; 3] {
+        std::array::from_fn(|i| Q::from_f64((v[i] * 1024.0).round() / 1024.0).unwrap_or_default())
+    };
+    // Σ vᵢ·psᵢ = k·P with P integer (k's sign kept: the sign of ∇E·n₀ counts)
+    let combine = |ps: &[QMPoly; 3], v: &[Q; 3]| -> (ZMPoly, Q) {
+        let mut acc = QMPoly::zero();
+        for i in 0..3 {
+            acc = &acc + &ps[i].scale(&v[i]);
+        }
+        acc.to_primitive_z()
+    };
+    let m = crate::geom::vec3::cross(&grad_s, &grad_e);
+    let (fa, fb) = (combine(&m, &short(a)).0, combine(&m, &short(b)).0);
+    if fa.is_zero() || fb.is_zero() {
+        return None;
+    }
+    let sys = System::new([e.poly.to_primitive_z().0, fa, fb]);
+    let k0 = 48usize;
+    let x = Dyadic3 {
+        m: std::array::from_fn(|i| {
+            num_bigint::BigInt::from_f64((p[i] * (1u64 << k0) as f64).round()).unwrap_or_default()
+        }),
+        k: k0,
+    };
+    let zb = sys.certify(&x, 40)?;
+    let (normal, kn) = combine(&grad_e, &n0);
+    let sign_k = if num_traits::Signed::is_negative(&kn) {
+        -1
+    } else {
+        1
+    };
+    if sign_k * eval_box(&normal, &zb.enclosure, zb.k).sign() != 1 {
+        return None;
+    }
+    let (sz, ks) = report.surface.to_primitive_z();
+    let (lo, hi) = eval_box(&sz, &zb.enclosure, zb.k).to_q(zb.k);
+    let (lo, hi) = if num_traits::Signed::is_negative(&ks) {
+        (&hi * &ks, &lo * &ks)
+    } else {
+        (&lo * &ks, &hi * &ks)
+    };
+    let inside = |v: &crate::roots::RealAlg| {
+        v.cmp_rational(&lo) != Ordering::Less && v.cmp_rational(&hi) != Ordering::Greater
+    };
+    let others = report
+        .certificate()
+        .critical_values()
+        .iter()
+        .filter(|v| v.cmp_exact(value) != Ordering::Equal)
+        .any(inside);
+    (inside(value) && !others).then_some(())
+}
+
 /// The colour of a value: red (S > 0) or blue (S < 0), deeper with |S|.
 fn color(v: f64, vmax: f64) -> String {
     let t = if vmax > 0.0 {
@@ -146,6 +228,7 @@ fn view(
     x0: f64,
     y0: f64,
     label: &str,
+    extremes: &[(Option<(P3, bool)>, String); 2],
 ) {
     let r = e.radius();
     let cam = Camera::new(
@@ -275,9 +358,10 @@ fn view(
             svg.circle(at, 5.0, "none", fill, 1.5);
         }
     }
-    // where the extremes are attained (located in doubles)
-    for (sign, name, v) in [(-1.0, "min", report.min()), (1.0, "max", report.max())] {
-        let p = extreme(e, s, sign);
+    // where the extremes are attained: found in doubles, then proven
+    // (a certified box) when the exact checks succeed
+    for (mark, v) in extremes {
+        let Some((p, proven)) = *mark else { continue };
         let at = cam.project(p);
         if dot(sub(p, e.c), cam.eye) < 0.0 {
             continue;
@@ -290,16 +374,10 @@ fn view(
                 (at.0, at.1 + d),
                 (at.0 - d, at.1),
             ],
-            "#ffd23f",
+            if proven { "#ffd23f" } else { "none" },
             "#111111",
         );
-        let value = v.map(|v| v.approx(8)).unwrap_or_else(|| "?".into());
-        svg.text(
-            (at.0 + 10.0, at.1 + 14.0),
-            12.0,
-            "#111111",
-            &format!("{name} S = {value}"),
-        );
+        svg.text((at.0 + 10.0, at.1 + 14.0), 12.0, "#111111", v);
     }
     svg.text((x0 + 8.0, y0 + 18.0), 13.0, "#333333", label);
 }
@@ -319,6 +397,17 @@ pub(crate) fn svg(report: &TangentReport) -> String {
     };
     let ef = EllipsoidF::new(&e);
     let s = SurfaceF::new(&report.surface);
+    let mut proofs = 0;
+    let extremes: [(Option<(P3, bool)>, String); 2] =
+        [(-1.0, "min", report.min()), (1.0, "max", report.max())].map(|(sign, name, v)| {
+            let Some(v) = v else {
+                return (None, String::new());
+            };
+            let p = extreme(&ef, &s, sign);
+            let proven = certified_extreme(report, &e, p, v).is_some();
+            proofs += usize::from(proven);
+            (Some((p, proven)), format!("{name} S = {}", v.approx(8)))
+        });
     let eye = [1.0, -1.4, 0.8];
     view(
         &mut svg,
@@ -329,6 +418,7 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         12.0,
         12.0,
         "E seen from (1, −1.4, 0.8)",
+        &extremes,
     );
     view(
         &mut svg,
@@ -339,6 +429,7 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         24.0 + PANEL,
         12.0,
         "E seen from the opposite side",
+        &extremes,
     );
     let y = PANEL + 36.0;
     svg.text(
@@ -384,7 +475,40 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         (14.0, y + 72.0),
         12.0,
         "#333333",
-        "red S > 0, blue S < 0 (deeper: larger |S|); black: S = 0 on E; dots: the certificate's witness points; diamonds: where min and max are attained",
+        "red S > 0, blue S < 0 (deeper: larger |S|); black: S = 0 on E; dots: the certificate's witness points",
     );
+    let marks = match proofs {
+        2 => {
+            "diamonds: the critical points where min and max are attained (each proven by a Krawczyk box)"
+        }
+        1 => {
+            "diamonds: where min and max are attained (filled: proven by a Krawczyk box; hollow: located in doubles)"
+        }
+        _ => "diamonds: where min and max are attained (located in doubles, not proven)",
+    };
+    svg.text((14.0, y + 88.0), 12.0, "#333333", marks);
     svg.finish()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The proof of an extreme's place accepts the true pairing of point
+    /// and value and refuses a wrong one.
+    #[test]
+    fn extremes_are_proven_where_they_are() {
+        let r = crate::tangent::decide_str("x^2+2y^2+3z^2-6", "x^3-2x*y+z^2+y*z-1").unwrap();
+        let e = Ellipsoid::from_poly(&r.ellipsoid).unwrap();
+        let (ef, s) = (EllipsoidF::new(&e), SurfaceF::new(&r.surface));
+        let (lo, hi) = (r.min().unwrap(), r.max().unwrap());
+        let (pmin, pmax) = (extreme(&ef, &s, -1.0), extreme(&ef, &s, 1.0));
+        assert!(certified_extreme(&r, &e, pmin, lo).is_some());
+        assert!(certified_extreme(&r, &e, pmax, hi).is_some());
+        assert!(certified_extreme(&r, &e, pmin, hi).is_none());
+        assert!(certified_extreme(&r, &e, pmax, lo).is_none());
+        // a point that is no critical point: no box
+        let off = ef.point(unit([1.0, 1.0, 1.0]));
+        assert!(certified_extreme(&r, &e, off, lo).is_none());
+    }
 }

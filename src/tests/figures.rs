@@ -207,8 +207,10 @@ fn a_figure_for_every_verdict() {
         let svg = r.svg();
         well_formed(&svg).unwrap();
         assert!(svg.contains(&format!("verdict: {verdict}")), "{s}");
-        // the witnesses of the certificate are drawn
+        // the witnesses of the certificate are drawn, and the places of
+        // both extremes proven
         assert!(svg.contains("witness S"), "{s}");
+        assert!(svg.contains("each proven by a Krawczyk box"), "{s}");
         // S = 0 on E is drawn exactly when they meet
         let zero_curve = svg.contains("stroke=\"#111111\" stroke-width=\"2.2\" stroke-linecap");
         assert_eq!(zero_curve, verdict == "intersecting", "{s}");
