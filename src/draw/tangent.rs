@@ -120,10 +120,11 @@ fn extreme(e: &EllipsoidF, s: &SurfaceF, sign: f64) -> P3 {
 
 /// A proof that the critical point near `p` attains `value`: a Krawczyk
 /// box (exact interval arithmetic) holding exactly one zero of `E` and of
-/// two components of `∇S × ∇E` across the normal `n₀` near `p` — with
-/// `∇E·n₀ > 0` on the box the cross product (always ⟂ `∇E`) then
-/// vanishes, so the zero is a critical point of S on E — and S's
-/// enclosure on the box holds `value` and no other critical value.
+/// the components `m·a′`, `m·b′` of `m = ∇S × ∇E` along two rational
+/// vectors across the normal near `p` — with `(a′ × b′)·∇E ≠ 0` on the box,
+/// `a′`, `b′`, `∇E` span R³ there and `m` (always ⟂ `∇E`) vanishes, so the
+/// zero is a critical point of S on E — and S's enclosure on the box holds
+/// `value` and no other critical value.
 /// `None` when a step does not prove it (the mark is then drawn hollow:
 /// located in doubles).
 fn certified_extreme(
@@ -159,7 +160,8 @@ fn certified_extreme(
         acc.to_primitive_z()
     };
     let m = crate::geom::vec3::cross(&grad_s, &grad_e);
-    let (fa, fb) = (combine(&m, &short(a)).0, combine(&m, &short(b)).0);
+    let (sa, sb) = (short(a), short(b));
+    let (fa, fb) = (combine(&m, &sa).0, combine(&m, &sb).0);
     if fa.is_zero() || fb.is_zero() {
         return None;
     }
@@ -172,13 +174,10 @@ fn certified_extreme(
         k: k0,
     };
     let zb = sys.certify(&x, 40)?;
-    let (normal, kn) = combine(&grad_e, &n0);
-    let sign_k = if num_traits::Signed::is_negative(&kn) {
-        -1
-    } else {
-        1
-    };
-    if sign_k * eval_box(&normal, &zb.enclosure, zb.k).sign() != 1 {
+    // (a′ × b′)·∇E ≠ 0 on the box: a′, b′ and ∇E span R³ there, so the
+    // cross product m (⟂ ∇E, with m·a′ = m·b′ = 0 at the zero) is 0
+    let across = crate::geom::vec3::cross(&sa, &sb);
+    if eval_box(&combine(&grad_e, &across).0, &zb.enclosure, zb.k).sign() == 0 {
         return None;
     }
     let (sz, ks) = report.surface.to_primitive_z();
