@@ -543,23 +543,78 @@ impl Frame {
     }
 }
 
+/// The axial plane's frame: the part-1 deciders' when the answer has
+/// them, else the plane through both axes (coplanar axes; a sphere's
+/// centre stands for an axis through it); `None` for skew axes.
+fn axial_frame(report: &NaturalReport, a: &Shape, b: &Shape) -> Option<Frame> {
+    let frame = |o: P3, e1: P3, toward: P3| -> Option<Frame> {
+        let e1 = unit(e1);
+        let mut e2 = sub(toward, scale(e1, dot(toward, e1)));
+        if norm(e2) < 1e-9 * (1.0 + norm(toward)) {
+            e2 = perpendicular(e1);
+        }
+        let e2 = unit(e2);
+        (norm(e1) > 0.0).then_some(Frame { o, e1, e2 })
+    };
+    if let Some(dec) = report.deciders.as_ref() {
+        return frame(q3(&dec.frame[0]), q3(&dec.frame[1]), q3(&dec.frame[2]));
+    }
+    if matches!(report.axes(), Some(crate::natural::AxesRelation::Skew)) {
+        return None;
+    }
+    let axis = |s: &Shape| match *s {
+        Shape::Cylinder { a, .. } | Shape::Cone { a, .. } => Some(a),
+        Shape::Sphere { .. } => None,
+    };
+    match (axis(a), axis(b)) {
+        (Some(da), Some(db)) => {
+            // B's axis, or (parallel) the way from A's axis to B's
+            let toward = if norm(cross(da, db)) > 1e-12 {
+                db
+            } else {
+                sub(b.anchor(), a.anchor())
+            };
+            frame(a.anchor(), da, toward)
+        }
+        (Some(da), None) => frame(a.anchor(), da, sub(b.anchor(), a.anchor())),
+        (None, Some(db)) => frame(b.anchor(), db, sub(a.anchor(), b.anchor())),
+        (None, None) => {
+            let d = sub(b.anchor(), a.anchor());
+            let e1 = if norm(d) > 0.0 { d } else { [1.0, 0.0, 0.0] };
+            frame(a.anchor(), e1, perpendicular(unit(e1)))
+        }
+    }
+}
+
+/// A surface's section by the axial plane as lines (point, direction) in
+/// 3D: a cylinder's two rulings, a cone's two generators (a sphere's
+/// circle is drawn apart).
+fn section_lines(s: &Shape, fr: &Frame) -> Vec<(P3, P3)> {
+    let normal = cross(fr.e1, fr.e2);
+    let across = |a: P3| unit(cross(normal, a));
+    match *s {
+        Shape::Sphere { .. } => vec![],
+        Shape::Cylinder { q, a, r } => {
+            let w = across(a);
+            vec![(add(q, scale(w, r)), a), (sub(q, scale(w, r)), a)]
+        }
+        Shape::Cone { v, a, t2 } => {
+            let w = across(a);
+            let t = t2.sqrt();
+            vec![(v, add(a, scale(w, t))), (v, sub(a, scale(w, t)))]
+        }
+    }
+}
+
 fn axial_plane(svg: &mut Svg, report: &NaturalReport, a: &Shape, b: &Shape, x0: f64, y0: f64) {
-    let Some(dec) = report.deciders.as_ref() else {
+    let Some(fr) = axial_frame(report, a, b) else {
         return;
     };
-    let o = q3(&dec.frame[0]);
-    let e1 = unit(q3(&dec.frame[1]));
-    let e2 = unit(sub(
-        q3(&dec.frame[2]),
-        scale(e1, dot(q3(&dec.frame[2]), e1)),
-    ));
-    if norm(e1) == 0.0 || norm(e2) == 0.0 {
-        return;
-    }
-    let fr = Frame { o, e1, e2 };
+    let (o, e1, e2) = (fr.o, fr.e1, fr.e2);
+    let dec = report.deciders.as_ref();
     // the extent: anchors, X, conic centres, radii
     let mut pts = vec![fr.to2(a.anchor()), fr.to2(b.anchor())];
-    if let Some(x) = &dec.x_point {
+    if let Some(x) = dec.and_then(|d| d.x_point.as_ref()) {
         pts.push(fr.to2(q3(x)));
     }
     let mut size: f64 = 0.0;
@@ -617,10 +672,20 @@ fn axial_plane(svg: &mut Svg, report: &NaturalReport, a: &Shape, b: &Shape, x0: 
             }
         }
     }
-    for (i, lines) in dec.skeletal.iter().enumerate() {
+    // the skeletal lines: the deciders' exact ones, else the sections
+    // from the surfaces' data
+    let skeletal: Vec<Vec<(P3, P3)>> = match dec {
+        Some(d) => d
+            .skeletal
+            .iter()
+            .map(|ls| ls.iter().map(|(p, q)| (e3(p), e3(q))).collect())
+            .collect(),
+        None => vec![section_lines(a, &fr), section_lines(b, &fr)],
+    };
+    for (i, lines) in skeletal.iter().enumerate() {
         let color = if i == 0 { COLOR_A } else { COLOR_B };
         for (p, d) in lines {
-            line2(svg, fr.to2(e3(p)), fr.dir2(e3(d)), color, 2.0, None);
+            line2(svg, fr.to2(*p), fr.dir2(*d), color, 2.0, None);
         }
     }
     // the conics' planes, seen edge-on
@@ -644,7 +709,7 @@ fn axial_plane(svg: &mut Svg, report: &NaturalReport, a: &Shape, b: &Shape, x0: 
             line2(svg, fr.to2(p), fr.dir2(dir), CONIC, 1.5, Some("6 4"));
         }
     }
-    if let Some(x) = &dec.x_point {
+    if let Some((dec, x)) = dec.and_then(|d| d.x_point.as_ref().map(|x| (d, x))) {
         let at = to_px(fr.to2(q3(x)));
         svg.circle(at, 5.0, "#111111", "white", 1.5);
         let label = format!(
@@ -680,11 +745,12 @@ pub(crate) fn svg(report: &NaturalReport) -> String {
     );
     let mut svg = Svg::new(W, H, &title);
     view_3d(&mut svg, report, &a, &b, 12.0, 12.0);
-    if report.deciders.is_some() {
+    let axial = axial_frame(report, &a, &b).is_some();
+    if axial {
         axial_plane(&mut svg, report, &a, &b, 2.0 * 12.0 + PANEL, 12.0);
     }
     // the legend: below the panels, or beside the 3D view alone
-    let (lx, y) = if report.deciders.is_some() {
+    let (lx, y) = if axial {
         (14.0, PANEL + 36.0)
     } else {
         (2.0 * 12.0 + PANEL + 4.0, 60.0)

@@ -177,6 +177,9 @@ fn a_figure_for_every_class_shows_its_components() {
             svg.contains(&format!("class {}", class.as_str())),
             "{a} / {b}"
         );
+        // the axial plane exactly when the axes are not skew
+        let skew = r.axes().is_some_and(|x| x.as_str() == "skew");
+        assert_eq!(svg.contains("axial plane"), !skew, "{a} / {b}");
         let have = strokes(&svg);
         for c in colours {
             assert!(have.contains(*c), "{a} / {b}: no stroke {c}");
