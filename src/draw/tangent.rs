@@ -28,6 +28,16 @@ impl SurfaceF {
                 .collect(),
         }
     }
+    /// Mesh divisions `(n, 2n)` for about `evals` evaluations of S at
+    /// most: the drawing's cost stays bounded whatever S's size (the
+    /// finest mesh `(cap, 2·cap)` for small S, never below 8).
+    fn divisions(&self, cap: usize) -> usize {
+        const EVALS: usize = 20_000_000;
+        let per = self.terms.len().max(1);
+        let n = ((EVALS / per / 2) as f64).sqrt() as usize;
+        n.clamp(8, cap)
+    }
+
     fn eval(&self, p: P3) -> f64 {
         self.terms
             .iter()
@@ -86,11 +96,12 @@ fn sphere(theta: f64, phi: f64) -> P3 {
 fn extreme(e: &EllipsoidF, s: &SurfaceF, sign: f64) -> P3 {
     let f = |t: f64, p: f64| sign * s.eval(e.point(sphere(t, p)));
     let (mut bt, mut bp, mut bv) = (0.0, 0.0, f64::NEG_INFINITY);
-    for i in 0..=60 {
-        for j in 0..120 {
+    let n = s.divisions(60);
+    for i in 0..=n {
+        for j in 0..2 * n {
             let (t, p) = (
-                std::f64::consts::PI * i as f64 / 60.0,
-                std::f64::consts::TAU * j as f64 / 120.0,
+                std::f64::consts::PI * i as f64 / n as f64,
+                std::f64::consts::TAU * j as f64 / (2 * n) as f64,
             );
             let v = f(t, p);
             if v > bv {
@@ -256,7 +267,8 @@ fn view(
         let mid = unit(ys.iter().fold([0.0; 3], |a, &y| add(a, y)));
         dot(e.normal(mid), cam.eye) > 0.0
     };
-    let coarse = grid(30, 60);
+    let nc = s.divisions(30);
+    let coarse = grid(nc, 2 * nc);
     let vmax = coarse
         .iter()
         .flatten()
@@ -284,7 +296,8 @@ fn view(
     // touching, the zero set is where an extreme 0 is attained (marked
     // below), not a curve
     let crossing = report.verdict() == crate::Verdict::Intersecting;
-    let fine = if crossing { grid(120, 240) } else { vec![] };
+    let nf = s.divisions(120);
+    let fine = if crossing { grid(nf, 2 * nf) } else { vec![] };
     let vals: Vec<Vec<f64>> = fine
         .iter()
         .map(|row| row.iter().map(|&y| s.eval(e.point(y))).collect())
@@ -403,7 +416,11 @@ pub(crate) fn svg(report: &TangentReport) -> String {
                 return (None, String::new());
             };
             let p = extreme(&ef, &s, sign);
-            let proven = certified_extreme(report, &e, p, v).is_some();
+            // the proof in exact arithmetic only for an S of moderate size
+            // (it is an extra: a hollow mark otherwise)
+            let small = report.surface.terms().len() <= 120
+                && report.surface.total_degree().unwrap_or(0) <= 10;
+            let proven = small && certified_extreme(report, &e, p, v).is_some();
             proofs += usize::from(proven);
             (Some((p, proven)), format!("{name} S = {}", v.approx(8)))
         });
