@@ -18,6 +18,18 @@ fn run_json(
     budget: &engine::Budget,
     values: bool,
 ) -> Result<Answer<String>, Error> {
+    let (answer, exhausted) = run_answer(op, fields, budget, values, false)?;
+    Ok((answer.to_string(), exhausted))
+}
+
+/// [`run_json`]'s answer as a JSON value (with `"svg"` when `svg`).
+fn run_answer(
+    op: &str,
+    fields: &[(&str, &str)],
+    budget: &engine::Budget,
+    values: bool,
+    svg: bool,
+) -> Result<Answer<Value>, Error> {
     let mut obj = Map::new();
     obj.insert("op".into(), Value::from(op));
     for (name, text) in fields {
@@ -26,13 +38,16 @@ fn run_json(
     if op == "tangent" && !values {
         obj.insert("values".into(), Value::from(false));
     }
+    if svg {
+        obj.insert("svg".into(), Value::from(true));
+    }
     let answer = engine::batch::run_op_within(&obj, budget)?;
     let reason = &answer["reason"];
     let exhausted = (reason["kind"] == "budget").then(|| {
         let message = reason["message"].as_str().unwrap_or("budget exhausted");
         Error::new(ErrorKind::Budget, message)
     });
-    Ok((answer.to_string(), exhausted))
+    Ok((answer, exhausted))
 }
 
 /// The body shared by the JSON entry points: reads the string arguments,
@@ -177,20 +192,9 @@ unsafe fn svg_entry(
         answer_into(out_svg, "out_svg", ptr::null_mut(), err, || {
             let a = read_str(args[0].1, args[0].0)?;
             let b = read_str(args[1].1, args[1].0)?;
-            let mut obj = Map::new();
-            obj.insert("op".into(), Value::from(op));
-            obj.insert(args[0].0.into(), Value::from(a));
-            obj.insert(args[1].0.into(), Value::from(b));
-            obj.insert("svg".into(), Value::from(true));
-            if op == "tangent" && !values_of(opts) {
-                obj.insert("values".into(), Value::from(false));
-            }
-            let answer = engine::batch::run_op_within(&obj, &budget_of(opts))?;
-            let reason = &answer["reason"];
-            let exhausted = (reason["kind"] == "budget").then(|| {
-                let message = reason["message"].as_str().unwrap_or("budget exhausted");
-                Error::new(ErrorKind::Budget, message)
-            });
+            let fields = [(args[0].0, a), (args[1].0, b)];
+            let (answer, exhausted) =
+                run_answer(op, &fields, &budget_of(opts), values_of(opts), true)?;
             let svg = answer["svg"]
                 .as_str()
                 .ok_or_else(|| Error::internal("the answer has no picture"))?;

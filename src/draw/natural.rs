@@ -187,7 +187,35 @@ fn chord(svg: &mut Svg, cam: &Camera, p: P3, d: P3, ball: (P3, f64), color: &str
 }
 
 /// Samples of each component (doubles from the exact data).
-fn components(report: &NaturalReport, a: &Shape, b: &Shape, c: P3, r: f64) -> Vec<Drawn> {
+/// The certified points of each space curve of the answer, in order (they
+/// do not depend on the scene: traced once per figure).
+fn curve_traces(report: &NaturalReport) -> Vec<Vec<Vec<P3>>> {
+    report
+        .components
+        .iter()
+        .filter_map(|c| match c {
+            // an answer without branches (the reference route) has no curve
+            // to draw (the legend says so)
+            Component::Curve { branches, .. } => Some(
+                branches
+                    .first()
+                    .map(|first| first.start.trace(2000))
+                    .unwrap_or_default(),
+            ),
+            _ => None,
+        })
+        .collect()
+}
+
+fn components(
+    report: &NaturalReport,
+    a: &Shape,
+    b: &Shape,
+    c: P3,
+    r: f64,
+    traces: &[Vec<Vec<P3>>],
+) -> Vec<Drawn> {
+    let mut traces = traces.iter();
     let mut out = Vec::new();
     for comp in &report.components {
         match comp {
@@ -309,12 +337,8 @@ fn components(report: &NaturalReport, a: &Shape, b: &Shape, c: P3, r: f64) -> Ve
                 singular, branches, ..
             } => {
                 // certified points along the rulings (the exact topology's
-                // parameterisation); an answer without branches (the
-                // reference route) has no curve to draw (the legend says so)
-                let paths = branches
-                    .first()
-                    .map(|first| first.start.trace(2000))
-                    .unwrap_or_default();
+                // parameterisation)
+                let paths = traces.next().cloned().unwrap_or_default();
                 out.push(Drawn {
                     bounded: !branches.is_empty() && branches.iter().all(|b| b.bounded),
                     paths,
@@ -482,7 +506,8 @@ fn view_3d(svg: &mut Svg, report: &NaturalReport, a: &Shape, b: &Shape, x0: f64,
     // the scene from the components' points, then widened to hold the
     // bounded components whole
     let (c0, r0) = scene(report, a, b, &[]);
-    let first = components(report, a, b, c0, 4.0 * r0);
+    let traces = curve_traces(report);
+    let first = components(report, a, b, c0, 4.0 * r0, &traces);
     let whole: Vec<P3> = first
         .iter()
         .filter(|d| d.bounded)
@@ -494,7 +519,7 @@ fn view_3d(svg: &mut Svg, report: &NaturalReport, a: &Shape, b: &Shape, x0: f64,
     } else {
         scene(report, a, b, &whole)
     };
-    let drawn = components(report, a, b, c, r);
+    let drawn = components(report, a, b, c, r, &traces);
     let cam = Camera::new(
         c,
         choose_eye(&drawn),
