@@ -15,10 +15,11 @@
 //! ruling parameterisation the exact topology uses (ball arithmetic, each
 //! point within 2^-30 of its size of a point of the curve); the places
 //! where the tangent method's extremes are attained proven by a Krawczyk
-//! box when the proof succeeds (else drawn hollow); the surfaces'
-//! silhouettes and the tangent method's shading and level curve from the
-//! equations evaluated in doubles (not certified).  A picture shows; the
-//! certificate proves.
+//! box when the proof succeeds (else drawn hollow); the level curve S = 0
+//! on E through points proven by Krawczyk boxes (ball arithmetic; a point
+//! the test declines leaves a gap); the surfaces' silhouettes and the
+//! tangent method's shading from the equations evaluated in doubles (not
+//! certified).  A picture shows; the certificate proves.
 
 pub(crate) mod natural;
 #[cfg(feature = "png")]
@@ -243,9 +244,16 @@ impl Svg {
     }
 
     pub fn text(&mut self, at: (f64, f64), size: f64, fill: &str, s: &str) {
+        self.text_anchored(at, size, fill, s, false);
+    }
+
+    /// Text starting at `at`, or ending there when `end` (a label left of
+    /// its mark, near a panel's right edge).
+    pub fn text_anchored(&mut self, at: (f64, f64), size: f64, fill: &str, s: &str, end: bool) {
+        let anchor = if end { " text-anchor=\"end\"" } else { "" };
         let _ = writeln!(
             self.out,
-            "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"{size}\" fill=\"{fill}\">{}</text>",
+            "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"{size}\" fill=\"{fill}\"{anchor}>{}</text>",
             at.0,
             at.1,
             escape(s)

@@ -1,8 +1,10 @@
 //! The picture of a tangent-method answer: the ellipsoid E from two
 //! opposite sides, its surface shaded by the sign and size of S (red where
-//! S > 0, blue where S < 0, in doubles), the level curve S = 0 on E traced
-//! through the mesh, and the witness points of the certificate (exact
-//! points of E in Q(√d)) marked with the sign of S there.
+//! S > 0, blue where S < 0, in doubles), the level curve S = 0 on E through
+//! points each proven by a Krawczyk box ([`zero_curve`]), the witness
+//! points of the certificate (exact points of E in Q(√d)) marked with the
+//! sign of S there, and the places of the extremes (proven when
+//! [`certified_extreme`] succeeds).
 
 use super::{Camera, P3, Svg, add, dot, norm, scale, sub, symmetric_eigen, unit};
 use crate::poly::QMPoly;
@@ -10,23 +12,25 @@ use crate::tangent::TangentReport;
 use crate::tangent::ellipsoid::Ellipsoid;
 
 const W: f64 = 1000.0;
-const H: f64 = 620.0;
+const H: f64 = 640.0;
 const PANEL: f64 = 480.0;
 
 /// S in doubles, from its terms (coefficients and powers).
 struct SurfaceF {
     terms: Vec<(f64, [i32; 3])>,
+    /// The largest exponent of a variable.
+    degree: usize,
 }
 
 impl SurfaceF {
     fn new(s: &QMPoly) -> SurfaceF {
-        SurfaceF {
-            terms: s
-                .terms()
-                .iter()
-                .map(|(e, c)| (super::qf(c), [e[0] as i32, e[1] as i32, e[2] as i32]))
-                .collect(),
-        }
+        let terms: Vec<(f64, [i32; 3])> = s
+            .terms()
+            .iter()
+            .map(|(e, c)| (super::qf(c), [e[0] as i32, e[1] as i32, e[2] as i32]))
+            .collect();
+        let degree = terms.iter().flat_map(|(_, e)| *e).max().unwrap_or(0) as usize;
+        SurfaceF { terms, degree }
     }
     /// Mesh divisions `(n, 2n)` for about `evals` evaluations of S at
     /// most: the drawing's cost stays bounded whatever S's size (the
@@ -39,10 +43,40 @@ impl SurfaceF {
     }
 
     fn eval(&self, p: P3) -> f64 {
+        const N: usize = 32;
+        if self.degree >= N {
+            return self
+                .terms
+                .iter()
+                .map(|(c, e)| c * p[0].powi(e[0]) * p[1].powi(e[1]) * p[2].powi(e[2]))
+                .sum();
+        }
+        // the powers of each coordinate once, then three products a term
+        let mut pw = [[1.0f64; N]; 3];
+        for (row, x) in pw.iter_mut().zip(p) {
+            for k in 1..=self.degree {
+                row[k] = row[k - 1] * x;
+            }
+        }
         self.terms
             .iter()
-            .map(|(c, e)| c * p[0].powi(e[0]) * p[1].powi(e[1]) * p[2].powi(e[2]))
+            .map(|(c, e)| c * pw[0][e[0] as usize] * pw[1][e[1] as usize] * pw[2][e[2] as usize])
             .sum()
+    }
+
+    /// ∇S at `p` (doubles: it only chooses the planes that cut S = 0).
+    fn grad(&self, p: P3) -> P3 {
+        std::array::from_fn(|v| {
+            self.terms
+                .iter()
+                .filter(|(_, e)| e[v] > 0)
+                .map(|(c, e)| {
+                    let mut d = *e;
+                    d[v] -= 1;
+                    c * e[v] as f64 * p[0].powi(d[0]) * p[1].powi(d[1]) * p[2].powi(d[2])
+                })
+                .sum()
+        })
     }
 }
 
@@ -210,6 +244,203 @@ fn certified_extreme(
     (inside(value) && !others).then_some(())
 }
 
+/// The level curve S = 0 on E as drawn: chords between certified points.
+struct ZeroCurve {
+    /// Chords (two certified points) with the mesh cell's centre on the
+    /// unit sphere (which side of E it is on).
+    chords: Vec<([P3; 2], P3)>,
+    /// Crossings of the mesh's edges proven near a point of the curve.
+    certified: usize,
+    /// Crossings the proof declined (their chords are not drawn).
+    declined: usize,
+}
+
+/// The curve S = 0 on E, when the verdict says they intersect (touching,
+/// S = 0 on E is where an extreme 0 is attained, marked apart): a mesh of
+/// E in the angles locates where S changes sign along an edge (doubles);
+/// at each such crossing `p`, the plane through `p` across the curve
+/// (normal `∇E × ∇S`, exact doubles) cuts it, and the ball-arithmetic
+/// Krawczyk test proves a box of relative width `2^-40` (at most `2^-24`)
+/// holding exactly one zero of `{E, S, plane}` — a point of E ∩ {S = 0} —
+/// within `reach` of `p`.  The box's centre is drawn; chords join the
+/// proven crossings of a cell (their straightness is the drawing's, not
+/// the proof's); a declined crossing (near a singular point of the curve,
+/// or beyond doubles) leaves a gap rather than a guess.
+fn zero_curve(report: &TangentReport, e: &Ellipsoid, ef: &EllipsoidF, s: &SurfaceF) -> ZeroCurve {
+    use crate::poly::ZMPoly;
+    use crate::poly::mpoly::X;
+    use crate::system::krawczyk::System;
+    use crate::system::krawczyk_filter::BallSystem;
+    let mut out = ZeroCurve {
+        chords: Vec::new(),
+        certified: 0,
+        declined: 0,
+    };
+    if report.verdict() != crate::Verdict::Intersecting {
+        return out;
+    }
+    let sys = System::new([
+        e.poly.to_primitive_z().0,
+        report.surface.to_primitive_z().0,
+        ZMPoly::var(X),
+    ]);
+    let mut balls = BallSystem::new(&sys);
+    // the mesh: as fine as 90 × 180 cells, coarser when its crossings
+    // would need more than 200 000 / (terms of the system and its
+    // Jacobian) proofs (a proof is ≈ 8 evaluations of them: ≈ 10 ms in
+    // all whatever S's size)
+    let terms: usize = sys_terms(&sys);
+    let values = |n: usize| -> (Vec<Vec<P3>>, Vec<Vec<f64>>) {
+        let ys = grid(n, 2 * n);
+        let vals = ys
+            .iter()
+            .map(|row| row.iter().map(|&y| s.eval(ef.point(y))).collect())
+            .collect();
+        (ys, vals)
+    };
+    // the crossings of a 24 × 48 mesh, times n / 24, estimate those of
+    // the n × 2n one
+    let cap = (200_000 / terms.max(1)).max(24);
+    let n = s.divisions(90);
+    let rough = crossings(&values(24).1) * n / 24;
+    let n = if rough > cap {
+        (n * cap / rough).max(8)
+    } else {
+        n
+    };
+    let (ys, vals) = values(n);
+    let (nt, np) = (n, 2 * n);
+    let reach = 3.0 * ef.radius() * std::f64::consts::PI / nt as f64;
+    let mut proven = |y: P3| prove_on_curve(balls.as_mut()?, ef, s, y, reach);
+    // the crossing on the edge from (i, j) down or right, once
+    let mut edges: std::collections::HashMap<(usize, usize, bool), Option<P3>> =
+        std::collections::HashMap::new();
+    let mut crossing = |i: usize, j: usize, down: bool| -> Option<P3> {
+        *edges.entry((i, j, down)).or_insert_with(|| {
+            let (i2, j2) = if down { (i + 1, j) } else { (i, j + 1) };
+            let (a, b) = (vals[i][j], vals[i2][j2]);
+            let t = a / (a - b);
+            let y = unit(add(scale(ys[i][j], 1.0 - t), scale(ys[i2][j2], t)));
+            proven(y)
+        })
+    };
+    for i in 0..nt {
+        for j in 0..np {
+            let vs = [
+                vals[i][j],
+                vals[i][j + 1],
+                vals[i + 1][j + 1],
+                vals[i + 1][j],
+            ];
+            if vs.iter().any(|v| !v.is_finite())
+                || vs.iter().all(|v| *v < 0.0)
+                || vs.iter().all(|v| *v >= 0.0)
+            {
+                continue;
+            }
+            // the cell's edges in order, as (start corner, direction)
+            let sides = [
+                (i, j, false),
+                (i, j + 1, true),
+                (i + 1, j, false),
+                (i, j, true),
+            ];
+            let mut cut = Vec::with_capacity(4);
+            for (k, &(a, b, down)) in sides.iter().enumerate() {
+                if (vs[k] < 0.0) != (vs[(k + 1) % 4] < 0.0) {
+                    let q = crossing(a, b, down);
+                    cut.push(q);
+                }
+            }
+            let mid = unit(add(
+                add(ys[i][j], ys[i][j + 1]),
+                add(ys[i + 1][j + 1], ys[i + 1][j]),
+            ));
+            for pair in cut.chunks_exact(2) {
+                if let [Some(p), Some(q)] = pair {
+                    out.chords.push(([*p, *q], mid));
+                }
+            }
+        }
+    }
+    for q in edges.values() {
+        if q.is_some() {
+            out.certified += 1;
+        } else {
+            out.declined += 1;
+        }
+    }
+    out
+}
+
+/// A point of E ∩ {S = 0} near `ef.point(y)`: the plane through that
+/// point across the curve (normal `∇E × ∇S` in doubles, exact as a
+/// plane) replaces the third equation of `balls` (E, S, ·), and the
+/// Krawczyk test proves a box holding exactly one zero; its centre is
+/// returned when it lies within `reach` of the start (`None` otherwise, or
+/// when the test declines).
+fn prove_on_curve(
+    balls: &mut crate::system::krawczyk_filter::BallSystem,
+    ef: &EllipsoidF,
+    s: &SurfaceF,
+    y: P3,
+    reach: f64,
+) -> Option<P3> {
+    let p = ef.point(y);
+    let t = unit(super::cross(ef.normal(y), s.grad(p)));
+    if !t.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    balls.set_plane(t, dot(t, p));
+    let (k, _) = balls.certify_near(p)?;
+    let q: P3 = k.map(|b| b.m);
+    (norm(sub(q, p)) <= reach).then_some(q)
+}
+
+/// The unit sphere at `nt + 1` polar by `np + 1` azimuthal angles (the
+/// last column repeats the first).
+fn grid(nt: usize, np: usize) -> Vec<Vec<P3>> {
+    (0..=nt)
+        .map(|i| {
+            (0..=np)
+                .map(|j| {
+                    sphere(
+                        std::f64::consts::PI * i as f64 / nt as f64,
+                        std::f64::consts::TAU * j as f64 / np as f64,
+                    )
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// How many mesh edges S changes sign along.
+fn crossings(vals: &[Vec<f64>]) -> usize {
+    let mut count = 0;
+    for (i, row) in vals.iter().enumerate() {
+        for (j, &a) in row.iter().enumerate() {
+            let right = row.get(j + 1);
+            let down = vals.get(i + 1).map(|r| &r[j]);
+            count += [right, down]
+                .into_iter()
+                .flatten()
+                .filter(|&&b| (a < 0.0) != (b < 0.0))
+                .count();
+        }
+    }
+    count
+}
+
+/// The terms of a square system and its Jacobian (the cost of one
+/// evaluation).
+fn sys_terms(sys: &crate::system::krawczyk::System) -> usize {
+    let (f, jac) = sys.parts();
+    f.iter()
+        .chain(jac.iter().flatten())
+        .map(|p| p.terms().len())
+        .sum()
+}
+
 /// The colour of a value: red (S > 0) or blue (S < 0), deeper with |S|.
 fn color(v: f64, vmax: f64) -> String {
     let t = if vmax > 0.0 {
@@ -239,6 +470,7 @@ fn view(
     y0: f64,
     label: &str,
     extremes: &[(Option<(P3, bool)>, String); 2],
+    curve: &ZeroCurve,
 ) {
     let r = e.radius();
     let cam = Camera::new(
@@ -249,30 +481,19 @@ fn view(
     );
     svg.rect(x0, y0, PANEL, PANEL, "#fbfbfb", "#cccccc");
     // the shading on a coarse mesh, S = 0 through a fine one
-    let grid = |nt: usize, np: usize| -> Vec<Vec<P3>> {
-        (0..=nt)
-            .map(|i| {
-                (0..=np)
-                    .map(|j| {
-                        sphere(
-                            std::f64::consts::PI * i as f64 / nt as f64,
-                            std::f64::consts::TAU * j as f64 / np as f64,
-                        )
-                    })
-                    .collect()
-            })
-            .collect()
-    };
     let front = |ys: &[P3]| {
         let mid = unit(ys.iter().fold([0.0; 3], |a, &y| add(a, y)));
         dot(e.normal(mid), cam.eye) > 0.0
     };
     let nc = s.divisions(30);
     let coarse = grid(nc, 2 * nc);
-    let vmax = coarse
+    let cvals: Vec<Vec<f64>> = coarse
+        .iter()
+        .map(|row| row.iter().map(|&y| s.eval(e.point(y))).collect())
+        .collect();
+    let vmax = cvals
         .iter()
         .flatten()
-        .map(|&y| s.eval(e.point(y)))
         .filter(|v| v.is_finite())
         .fold(0.0f64, |m, v| m.max(v.abs()));
     for i in 0..coarse.len() - 1 {
@@ -287,60 +508,46 @@ fn view(
                 continue; // the far side
             }
             let pts: Vec<(f64, f64)> = ys.iter().map(|&y| cam.project(e.point(y))).collect();
-            let mid = unit(ys.iter().fold([0.0; 3], |a, &y| add(a, y)));
-            let c = color(s.eval(e.point(mid)), vmax);
-            svg.polygon(&pts, &c, &c);
-        }
-    }
-    // S changes sign on E only when they intersect (the exact verdict):
-    // touching, the zero set is where an extreme 0 is attained (marked
-    // below), not a curve
-    let crossing = report.verdict() == crate::Verdict::Intersecting;
-    let nf = s.divisions(120);
-    let fine = if crossing { grid(nf, 2 * nf) } else { vec![] };
-    let vals: Vec<Vec<f64>> = fine
-        .iter()
-        .map(|row| row.iter().map(|&y| s.eval(e.point(y))).collect())
-        .collect();
-    let mut zero_segments: Vec<[(f64, f64); 2]> = Vec::new();
-    for i in 0..fine.len().saturating_sub(1) {
-        for j in 0..fine[i].len() - 1 {
             let vs = [
-                vals[i][j],
-                vals[i][j + 1],
-                vals[i + 1][j + 1],
-                vals[i + 1][j],
+                cvals[i][j],
+                cvals[i][j + 1],
+                cvals[i + 1][j + 1],
+                cvals[i + 1][j],
             ];
-            if vs.iter().all(|v| *v < 0.0) || vs.iter().all(|v| *v >= 0.0) {
+            let mid = unit(ys.iter().fold([0.0; 3], |a, &y| add(a, y)));
+            let vm = s.eval(e.point(mid));
+            if !vs.iter().all(|v| v.is_finite()) || vs.iter().all(|v| (*v < 0.0) == (vs[0] < 0.0)) {
+                let c = color(vm, vmax);
+                svg.polygon(&pts, &c, &c);
                 continue;
             }
-            let ys = [
-                fine[i][j],
-                fine[i][j + 1],
-                fine[i + 1][j + 1],
-                fine[i + 1][j],
-            ];
-            if !front(&ys) {
-                continue;
-            }
-            let pts: Vec<(f64, f64)> = ys.iter().map(|&y| cam.project(e.point(y))).collect();
-            let mut cut = Vec::new();
-            for k in 0..4 {
-                let (a, b) = (vs[k], vs[(k + 1) % 4]);
-                if (a < 0.0) != (b < 0.0) && a.is_finite() && b.is_finite() {
-                    let t = a / (a - b);
-                    let (p, q) = (pts[k], pts[(k + 1) % 4]);
-                    cut.push((p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1)));
+            // a cell S = 0 crosses: each side in its colour (split along the
+            // chords of the edges' crossings; the shading is the doubles')
+            for negative in [true, false] {
+                let mut part = Vec::with_capacity(6);
+                for k in 0..4 {
+                    let (a, b) = (vs[k], vs[(k + 1) % 4]);
+                    if (a < 0.0) == negative {
+                        part.push(pts[k]);
+                    }
+                    if (a < 0.0) != (b < 0.0) {
+                        let t = a / (a - b);
+                        let (p, q) = (pts[k], pts[(k + 1) % 4]);
+                        part.push((p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1)));
+                    }
                 }
-            }
-            if cut.len() >= 2 {
-                zero_segments.push([cut[0], cut[1]]);
-            }
-            if cut.len() == 4 {
-                zero_segments.push([cut[2], cut[3]]);
+                let v = if negative { -vm.abs() } else { vm.abs() };
+                let c = color(v, vmax);
+                svg.polygon(&part, &c, &c);
             }
         }
     }
+    let zero_segments: Vec<[(f64, f64); 2]> = curve
+        .chords
+        .iter()
+        .filter(|(_, mid)| dot(e.normal(*mid), cam.eye) > 0.0)
+        .map(|(c, _)| [cam.project(c[0]), cam.project(c[1])])
+        .collect();
     svg.segments(&zero_segments, "#111111", 2.2);
     // the certificate's witness points
     let cert = report.certificate();
@@ -360,11 +567,13 @@ fn view(
         };
         if front {
             svg.circle(at, 6.0, fill, "white", 2.0);
-            svg.text(
-                (at.0 + 9.0, at.1 - 7.0),
+            let end = at.0 > x0 + 0.6 * PANEL;
+            svg.text_anchored(
+                (at.0 + if end { -9.0 } else { 9.0 }, at.1 - 7.0),
                 12.0,
                 "#111111",
                 &format!("witness {name}"),
+                end,
             );
         } else {
             svg.circle(at, 5.0, "none", fill, 1.5);
@@ -389,7 +598,9 @@ fn view(
             if proven { "#ffd23f" } else { "none" },
             "#111111",
         );
-        svg.text((at.0 + 10.0, at.1 + 14.0), 12.0, "#111111", v);
+        let end = at.0 > x0 + 0.6 * PANEL;
+        let dx = if end { -10.0 } else { 10.0 };
+        svg.text_anchored((at.0 + dx, at.1 + 14.0), 12.0, "#111111", v, end);
     }
     svg.text((x0 + 8.0, y0 + 18.0), 13.0, "#333333", label);
 }
@@ -424,6 +635,7 @@ pub(crate) fn svg(report: &TangentReport) -> String {
             proofs += usize::from(proven);
             (Some((p, proven)), format!("{name} S = {}", v.approx(8)))
         });
+    let curve = zero_curve(report, &e, &ef, &s);
     let eye = [1.0, -1.4, 0.8];
     view(
         &mut svg,
@@ -435,6 +647,7 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         12.0,
         "E seen from (1, −1.4, 0.8)",
         &extremes,
+        &curve,
     );
     view(
         &mut svg,
@@ -446,6 +659,7 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         12.0,
         "E seen from the opposite side",
         &extremes,
+        &curve,
     );
     let y = PANEL + 36.0;
     svg.text(
@@ -491,8 +705,21 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         (14.0, y + 72.0),
         12.0,
         "#333333",
-        "red S > 0, blue S < 0 (deeper: larger |S|); black: S = 0 on E; dots: the certificate's witness points",
+        "red S > 0, blue S < 0 (deeper: larger |S|, doubles); dots: the certificate's witness points",
     );
+    let traced = if curve.certified + curve.declined == 0 {
+        String::new()
+    } else if curve.declined == 0 {
+        format!(
+            "black: S = 0 on E, chords through {} points each proven (a Krawczyk box, ≤ 2^-24 relative) to lie on it",
+            curve.certified
+        )
+    } else {
+        format!(
+            "black: S = 0 on E, chords through {} points proven by Krawczyk boxes; {} not proven (gaps)",
+            curve.certified, curve.declined
+        )
+    };
     let marks = match proofs {
         2 => {
             "diamonds: the critical points where min and max are attained (each proven by a Krawczyk box)"
@@ -503,6 +730,9 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         _ => "diamonds: where min and max are attained (located in doubles, not proven)",
     };
     svg.text((14.0, y + 88.0), 12.0, "#333333", marks);
+    if !traced.is_empty() {
+        svg.text((14.0, y + 104.0), 12.0, "#333333", &clip(traced));
+    }
     svg.finish()
 }
 
@@ -526,5 +756,41 @@ mod tests {
         // a point that is no critical point: no box
         let off = ef.point(unit([1.0, 1.0, 1.0]));
         assert!(certified_extreme(&r, &e, off, lo).is_none());
+    }
+
+    /// The level curve is drawn through proven points only: on a sphere cut
+    /// by the plane z = 1/2 every drawn point is on the circle, the chords
+    /// close up, and a start away from the curve is refused.
+    #[test]
+    fn the_level_curve_is_drawn_through_proven_points() {
+        let r = crate::tangent::decide_str("x^2+y^2+z^2-1", "2z-1").unwrap();
+        let e = Ellipsoid::from_poly(&r.ellipsoid).unwrap();
+        let (ef, s) = (EllipsoidF::new(&e), SurfaceF::new(&r.surface));
+        let curve = zero_curve(&r, &e, &ef, &s);
+        assert!(curve.certified >= 100 && curve.declined == 0);
+        assert!(curve.chords.len() >= curve.certified / 2);
+        for ([p, q], _) in &curve.chords {
+            for v in [p, q] {
+                assert!((v[2] - 0.5).abs() < 1e-12, "{v:?}");
+                assert!((v[0] * v[0] + v[1] * v[1] - 0.75).abs() < 1e-12, "{v:?}");
+            }
+        }
+        let mut balls = crate::system::krawczyk_filter::BallSystem::new(
+            &crate::system::krawczyk::System::new([
+                e.poly.to_primitive_z().0,
+                r.surface.to_primitive_z().0,
+                crate::poly::ZMPoly::var(crate::poly::mpoly::X),
+            ]),
+        )
+        .unwrap();
+        let near = unit([1.0, 0.0, 0.55]);
+        assert!(prove_on_curve(&mut balls, &ef, &s, near, 0.1).is_some());
+        // the pole: the curve is 0.5 away, beyond reach
+        assert!(prove_on_curve(&mut balls, &ef, &s, [0.0, 0.0, 1.0], 0.1).is_none());
+        // touching: no curve (the zero set is a point, marked apart)
+        let t = crate::tangent::decide_str("x^2+y^2+z^2-1", "z-1").unwrap();
+        let et = Ellipsoid::from_poly(&t.ellipsoid).unwrap();
+        let (eft, st) = (EllipsoidF::new(&et), SurfaceF::new(&t.surface));
+        assert_eq!(zero_curve(&t, &et, &eft, &st).certified, 0);
     }
 }

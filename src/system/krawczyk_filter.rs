@@ -82,6 +82,31 @@ impl BallSystem {
         Some(BallSystem { monos, polys, deg })
     }
 
+    /// The third equation replaced by the plane `t·x = d` (exact doubles),
+    /// the first two kept: one filter reused for many cuts of the curve
+    /// `f₁ = f₂ = 0` by planes, without rebuilding it per plane.
+    pub(crate) fn set_plane(&mut self, t: [f64; 3], d: f64) {
+        let mut at = |m: [u32; 3]| match self.monos.iter().position(|x| *x == m) {
+            Some(i) => i,
+            None => {
+                self.monos.push(m);
+                self.monos.len() - 1
+            }
+        };
+        let (one, vars) = (at([0, 0, 0]), [at([1, 0, 0]), at([0, 1, 0]), at([0, 0, 1])]);
+        let exact = |v: f64| BallR::input(v, 0);
+        self.polys[2] = vec![
+            (vars[0], exact(t[0])),
+            (vars[1], exact(t[1])),
+            (vars[2], exact(t[2])),
+            (one, exact(-d)),
+        ];
+        for (j, tj) in t.iter().enumerate() {
+            self.polys[9 + j] = vec![(one, exact(*tj))];
+        }
+        self.deg = self.deg.max(1);
+    }
+
     /// Enclosures of `f` and of the Jacobian (row by row) on the box `x`.
     fn eval(&self, x: &[BallR; 3]) -> Vec<BallR> {
         self.eval_in(x)
@@ -125,6 +150,15 @@ impl BallSystem {
         for (ci, m) in c.iter_mut().zip(&start.m) {
             *ci = nearest_double(&Q::new(m.clone(), den.clone()))?;
         }
+        let (k, r) = self.certify_near(c)?;
+        to_zero_box(&k, r)
+    }
+
+    /// [`BallSystem::certify`] from a start in doubles, returning the
+    /// enclosure as balls (each coordinate of the zero within `k[i].m ±
+    /// k[i].r`) and the half-width of the box it was proven on.
+    pub(crate) fn certify_near(&self, start: [f64; 3]) -> Option<([BallR; 3], f64)> {
+        let mut c = start;
         // Newton until a step is below 2^-30 relative, then one more
         let mut close = None;
         for round in 0..12 {
@@ -153,7 +187,7 @@ impl BallSystem {
         for e in [40, 32, 24] {
             let r = size * pow2_neg(e)?;
             if let Some(k) = self.krawczyk(&c, r, &y, &fc[..3]) {
-                return to_zero_box(&k, r);
+                return Some((k, r));
             }
         }
         None
