@@ -57,7 +57,7 @@
 //!
 //! | layer | what it holds |
 //! |---|---|
-//! | `number` | exact scalars: rationals, Q(√d) ([`QSqrt`]), [`Sign`], word prime fields, the CRT, rational reconstruction, Lehmer's gcd |
+//! | `number` | exact scalars: rationals, Q(√d) ([`QSqrt`]), [`Sign`], one word prime field (31-bit primes) with one CRT, rational reconstruction, Lehmer's gcd |
 //! | `poly` | [`Polynomial`] (sparse, over Q), [`IntPoly`] (dense, over Z), the parser, square-free parts, polynomials over `F_p` |
 //! | `elim` | resultants: Sylvester, subresultants, multi-modular, the values of a rational function at the roots of a polynomial |
 //! | `roots` | real roots of univariate integer polynomials: Sturm sequences, Descartes/VCA isolation, [`RealAlg`], enclosures |

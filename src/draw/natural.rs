@@ -758,6 +758,27 @@ fn axial_plane(svg: &mut Svg, report: &NaturalReport, a: &Shape, b: &Shape, x0: 
     );
 }
 
+impl NaturalReport {
+    /// The picture of the answer as SVG text (`quadsect natural --svg`):
+    /// a 3D view of both surfaces with the components drawn thick and
+    /// coloured by kind (conics, lines, points, curve branches; singular
+    /// points marked), and, when the axes are coplanar, the axial plane of
+    /// the paper's figures (the surfaces' sections, the axes, X and its
+    /// heights, the conics' planes as lines); a legend with the class, the
+    /// counts and the route.  Decisions and labels come from the exact
+    /// answer; the strokes are doubles computed from its exact data.
+    ///
+    /// ```
+    /// let a: quadsect::Natural = "sphere center=0,0,0 radius2=4".parse().unwrap();
+    /// let b: quadsect::Natural = "cylinder point=1,0,0 axis=0,0,1 radius2=1".parse().unwrap();
+    /// let svg = quadsect::classify(&a, &b).unwrap().svg();
+    /// assert!(svg.starts_with("<svg") && svg.contains("class curve"));
+    /// ```
+    pub fn svg(&self) -> String {
+        svg(self)
+    }
+}
+
 /// The SVG picture of a natural-quadric answer.
 pub(crate) fn svg(report: &NaturalReport) -> String {
     let a = shape(&report.a);

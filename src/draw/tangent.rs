@@ -605,6 +605,24 @@ fn view(
     svg.text((x0 + 8.0, y0 + 18.0), 13.0, "#333333", label);
 }
 
+impl TangentReport {
+    /// The picture of the answer as SVG text (`quadsect tangent --svg`): E
+    /// from two opposite sides, shaded by the sign of S (red S > 0, blue
+    /// S < 0, in doubles), the curve S = 0 on E through points each proven
+    /// by a Krawczyk box to lie on it, the certificate's witness points
+    /// (exact points of E) and the places of the extremes marked, and a
+    /// legend with the verdict and the extreme values.
+    ///
+    /// ```
+    /// let r = quadsect::tangent::decide_str("x^2+y^2+z^2-25", "(x-6)^2/9+y^2/4+z^2/16-1").unwrap();
+    /// let svg = r.svg();
+    /// assert!(svg.starts_with("<svg") && svg.contains("verdict: intersecting"));
+    /// ```
+    pub fn svg(&self) -> String {
+        svg(self)
+    }
+}
+
 /// The SVG picture of a tangent-method answer.
 pub(crate) fn svg(report: &TangentReport) -> String {
     let title = format!(

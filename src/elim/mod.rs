@@ -12,7 +12,7 @@
 mod value_resultant;
 pub(crate) use value_resultant::value_resultant;
 
-use crate::number::prime62::{Crt, Digits, Modulus, log2_norm2_ceil, nth_prime};
+use crate::number::prime31::{CrtVec, Fp, prime31};
 use crate::poly::mpoly::{MPoly, NVARS, QMPoly, ZMPoly};
 use crate::poly::zpoly::rem_mod_in_place;
 use crate::poly::{Ring, UPoly, ZPoly};
@@ -150,8 +150,20 @@ pub fn resultant_subresultant<R: Ring>(f: &UPoly<R>, g: &UPoly<R>) -> R {
     }
 }
 
+/// log2 of the Euclidean norm of a vector of integers, rounded up (a safe
+/// upper bound), from exact squares.
+fn log2_norm2_ceil<'a>(xs: impl IntoIterator<Item = &'a BigInt>) -> u64 {
+    let mut s = num_bigint::BigUint::zero();
+    for x in xs {
+        let m = x.magnitude();
+        s += m * m;
+    }
+    // ceil(log2 sqrt(s)) <= ceil(bits(s)/2)
+    s.bits().div_ceil(2)
+}
+
 /// `Res(f, g)` over Z by the multi-modular method: Hadamard's bound
-/// `|Res| <= ‖f‖₂^n ‖g‖₂^m` fixes the number of 62-bit primes in advance;
+/// `|Res| <= ‖f‖₂^n ‖g‖₂^m` fixes the number of 31-bit primes in advance;
 /// each modular resultant is computed by Euclid's algorithm and the result
 /// is reconstructed by the CRT.  Deterministic and exact.
 pub fn resultant_modular(f: &ZPoly, g: &ZPoly) -> BigInt {
@@ -166,29 +178,27 @@ pub fn resultant_modular(f: &ZPoly, g: &ZPoly) -> BigInt {
     }
     let bound = (n as u64) * log2_norm2_ceil(f.coeffs()) + (m as u64) * log2_norm2_ceil(g.coeffs());
     crate::budget::check_size("a resultant", 1, bound);
-    let fd: Vec<Digits> = f.coeffs().iter().map(Digits::new).collect();
-    let gd: Vec<Digits> = g.coeffs().iter().map(Digits::new).collect();
-    let mut crt = Crt::new();
+    let mut crt = CrtVec::new(1);
     let mut i = 0;
     while crt.modulus_bits() <= bound + 1 {
         crate::budget::check();
-        let md = Modulus::new(nth_prime(i));
+        let md = Fp::new(prime31(i));
         i += 1;
-        let a: Vec<u64> = fd.iter().map(|d| d.reduce(&md)).collect();
-        let b: Vec<u64> = gd.iter().map(|d| d.reduce(&md)).collect();
+        let a: Vec<u64> = f.coeffs().iter().map(|c| md.reduce_big(c)).collect();
+        let b: Vec<u64> = g.coeffs().iter().map(|c| md.reduce_big(c)).collect();
         if a[m] == 0 || b[n] == 0 {
             continue; // the degree would drop modulo this prime
         }
-        crt.push(&md, resultant_mod_p(a, b, &md));
+        crt.push(&md, &[resultant_mod_p(a, b, &md)]);
     }
-    crt.symmetric()
+    crt.symmetric_values().swap_remove(0)
 }
 
 /// Resultant modulo a prime of two polynomials with non-zero leading
-/// coefficients (Montgomery form, ascending), by Euclid:
+/// coefficients (residues, ascending), by Euclid:
 /// `Res(a, b) = (-1)^(deg a·deg b) lc(b)^(deg a - deg r) Res(b, r)`.
-pub fn resultant_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, m: &Modulus) -> u64 {
-    let mut res = m.one;
+pub fn resultant_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, m: &Fp) -> u64 {
+    let mut res = 1;
     loop {
         let da = a.len() - 1;
         let db = b.len() - 1;
@@ -306,30 +316,30 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
     let bound = (n as u64) * l1(f) + (m as u64) * l1(g);
     crate::budget::check_size("a resultant", dw + 1, bound);
     // coefficient grids: fc[i][j] = coefficient of v^i w^j
-    let grid = |p: &ZMPoly, dv: usize| -> Vec<Vec<(usize, Digits)>> {
-        let mut rows: Vec<Vec<(usize, Digits)>> = vec![Vec::new(); dv + 1];
+    let grid = |p: &ZMPoly, dv: usize| -> Vec<Vec<(usize, BigInt)>> {
+        let mut rows: Vec<Vec<(usize, BigInt)>> = vec![Vec::new(); dv + 1];
         for (e, c) in p.terms() {
-            rows[e[v] as usize].push((e[w] as usize, Digits::new(c)));
+            rows[e[v] as usize].push((e[w] as usize, c.clone()));
         }
         rows
     };
     let fg = grid(f, m);
     let gg = grid(g, n);
-    let mut crts: Vec<Crt> = vec![Crt::new(); dw + 1];
+    let mut crt = CrtVec::new(dw + 1);
     let mut pi = 0;
     loop {
-        if crts[0].modulus_bits() > bound + 1 {
+        if crt.modulus_bits() > bound + 1 {
             break;
         }
         crate::budget::check_now();
-        let md = Modulus::new(nth_prime(pi));
+        let md = Fp::new(prime31(pi));
         pi += 1;
-        let red = |rows: &Vec<Vec<(usize, Digits)>>| -> Vec<Vec<u64>> {
+        let red = |rows: &Vec<Vec<(usize, BigInt)>>| -> Vec<Vec<u64>> {
             rows.iter()
                 .map(|r| {
                     let mut c = vec![0u64; r.iter().map(|(j, _)| j + 1).max().unwrap_or(0)];
                     for (j, d) in r {
-                        c[*j] = d.reduce(&md);
+                        c[*j] = md.reduce_big(d);
                     }
                     c
                 })
@@ -353,7 +363,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
         let mut k = 0u64;
         while xs.len() <= dw {
             crate::budget::check();
-            let x = md.to_mont(k);
+            let x = md.reduce(k);
             let kk = k;
             k += 1;
             let a: Vec<u64> = fr.iter().map(|c| eval(c, x)).collect();
@@ -372,37 +382,40 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
             ks.push(kk);
             ys.push(r);
         }
-        let coeffs = interpolate_mod(&xs, &ks, &ys, &md);
-        for (i, c) in coeffs.iter().enumerate() {
-            crate::budget::check();
-            crts[i].push(&md, *c);
-        }
+        let mut coeffs = interpolate_mod(&xs, &ks, &ys, &md);
+        coeffs.resize(dw + 1, 0);
+        crt.push(&md, &coeffs);
     }
-    MPoly::from_terms(crts.iter().enumerate().map(|(i, c)| {
-        let mut e = [0u32; NVARS];
-        e[w] = i as u32;
-        (e, c.symmetric())
-    }))
+    MPoly::from_terms(
+        crt.symmetric_values()
+            .into_iter()
+            .enumerate()
+            .map(|(i, c)| {
+                let mut e = [0u32; NVARS];
+                e[w] = i as u32;
+                (e, c)
+            }),
+    )
 }
 
 /// Newton interpolation modulo a prime at the small integer points `ks`
-/// (Montgomery images `xs`): the coefficients (ascending, Montgomery form)
+/// (their residues `xs`): the coefficients (ascending, residues)
 /// of the polynomial of degree `< xs.len()` through the points.  The
 /// inverses of the point differences come from one table of `1/k`.
-fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Modulus) -> Vec<u64> {
+fn interpolate_mod(xs: &[u64], ks: &[u64], ys: &[u64], m: &Fp) -> Vec<u64> {
     let n = xs.len();
     let kmax = ks.iter().copied().max().unwrap_or(0) as usize;
     // inverses of 1..=kmax by the batch trick: one modular inversion
-    let mut pref = vec![m.one; kmax + 1];
+    let mut pref = vec![1u64; kmax + 1];
     for d in 1..=kmax {
-        pref[d] = m.mul(pref[d - 1], m.to_mont(d as u64));
+        pref[d] = m.mul(pref[d - 1], m.reduce(d as u64));
     }
     let mut inv_tab = vec![0u64; kmax + 1];
     if kmax > 0 {
         let mut acc = m.inv(pref[kmax]).expect("small integers are invertible");
         for d in (1..=kmax).rev() {
             inv_tab[d] = m.mul(acc, pref[d - 1]);
-            acc = m.mul(acc, m.to_mont(d as u64));
+            acc = m.mul(acc, m.reduce(d as u64));
         }
     }
     // divided differences

@@ -16,7 +16,6 @@ pub(crate) mod lehmer;
 pub(crate) mod modkernel;
 mod parse;
 pub(crate) mod prime31;
-pub mod prime62;
 pub mod qsqrt;
 pub(crate) mod reconstruct;
 mod sign;

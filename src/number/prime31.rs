@@ -1,22 +1,21 @@
-//! Arithmetic modulo 31-bit primes: the prime field of the modular
-//! Gröbner/RUR routes ([`Fp`], Barrett reduction, products delayed in
-//! `u64`), the primes below 2^31 ([`prime31`]), residues of many integers
-//! at once ([`BlockResidues`]) and Chinese remaindering of whole vectors
-//! ([`CrtVec`]).
+//! Arithmetic modulo 31-bit primes, the one prime field of every
+//! multi-modular algorithm (resultants, gcds and square-free tests over Z,
+//! the modular Gröbner/RUR routes): [`Fp`] (Barrett reduction, products
+//! delayed in `u64`), the primes below 2^31 ([`prime31`]), residues of many
+//! integers at once ([`BlockResidues`]) and Chinese remaindering of whole
+//! vectors ([`CrtVec`]).
 //!
 //! Key idea: an object over Q is computed modulo many word-size primes and
 //! lifted by the CRT.  Primes below 2^31 keep a product of two residues
 //! below 2^62, so the vector kernels ([`super::modkernel`]) accumulate
-//! several products in a `u64` before one reduction.  (The 62-bit
-//! Montgomery field of [`super::prime62`] serves the resultants, where
-//! fewer, larger primes halve the lifting.)
+//! several products in a `u64` before one reduction.
 
 use super::reconstruct::symmetric_mod;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{One, Zero};
 use std::sync::Mutex;
 
-/// `a + b mod p` for residues `a, b < p < 2^63` (both prime fields).
+/// `a + b mod p` for residues `a, b < p < 2^63`.
 #[inline(always)]
 pub(crate) fn add_mod(a: u64, b: u64, p: u64) -> u64 {
     let s = a + b;

@@ -29,7 +29,7 @@
 
 use super::mpoly::{MPoly, NVARS, ZMPoly};
 use crate::number::Q;
-use crate::number::prime62::{Digits, Modulus, nth_prime};
+use crate::number::prime31::{Fp, prime31};
 use crate::number::reconstruct::symmetric_mod;
 use crate::poly::QMPoly;
 use crate::poly::zpoly::gcd_degree_mod;
@@ -73,20 +73,20 @@ impl Points {
         self.0
     }
 
-    /// A point with every coordinate a residue in Montgomery form.
-    fn point(&mut self, m: &Modulus) -> [u64; NVARS] {
-        std::array::from_fn(|_| m.to_mont(self.next()))
+    /// A point with every coordinate a residue.
+    fn point(&mut self, m: &Fp) -> [u64; NVARS] {
+        std::array::from_fn(|_| m.reduce(self.next()))
     }
 }
 
 /// The image of `p` in `F_p[t]`: the variable `v` kept as t, the others set
-/// to `point` (Montgomery residues); coefficients ascending, Montgomery.
-fn image(p: &ZMPoly, v: usize, point: &[u64; NVARS], m: &Modulus) -> Vec<u64> {
+/// to `point` (residues); coefficients ascending.
+fn image(p: &ZMPoly, v: usize, point: &[u64; NVARS], m: &Fp) -> Vec<u64> {
     let d = p.degree_in(v).unwrap_or(0) as usize;
     let mut out = vec![0u64; d + 1];
     for (e, c) in p.terms() {
         crate::budget::check();
-        let mut t = Digits::new(c).reduce(m);
+        let mut t = m.reduce_big(c);
         for (w, &k) in e.iter().enumerate() {
             if w != v && k > 0 {
                 t = m.mul(t, m.pow(point[w], u64::from(k)));
@@ -98,10 +98,10 @@ fn image(p: &ZMPoly, v: usize, point: &[u64; NVARS], m: &Modulus) -> Vec<u64> {
     out
 }
 
-/// The derivative of an image (Montgomery form).
-fn derivative_mod(s: &[u64], m: &Modulus) -> Vec<u64> {
+/// The derivative of an image.
+fn derivative_mod(s: &[u64], m: &Fp) -> Vec<u64> {
     (1..s.len())
-        .map(|k| m.mul(s[k], m.to_mont(k as u64)))
+        .map(|k| m.mul(s[k], m.reduce(k as u64)))
         .collect()
 }
 
@@ -113,7 +113,7 @@ pub fn is_squarefree(p: &ZMPoly) -> bool {
     p.vars().into_iter().all(|v| {
         let d = p.degree_in(v).unwrap_or(0) as usize;
         (0..TRIES).any(|i| {
-            let m = Modulus::new(nth_prime(i));
+            let m = Fp::new(prime31(i));
             let s = image(p, v, &pts.point(&m), &m);
             s[d] != 0 && gcd_degree_mod(&s, &derivative_mod(&s, &m), &m) == Some(0)
         })
@@ -135,7 +135,7 @@ pub fn coprime(a: &ZMPoly, b: &ZMPoly) -> bool {
             b.degree_in(v).unwrap_or(0) as usize,
         );
         (0..TRIES).any(|i| {
-            let m = Modulus::new(nth_prime(i));
+            let m = Fp::new(prime31(i));
             let pt = pts.point(&m);
             let (sa, sb) = (image(a, v, &pt, &m), image(b, v, &pt, &m));
             sa[da] != 0 && sb[db] != 0 && gcd_degree_mod(&sa, &sb, &m) == Some(0)

@@ -10,7 +10,7 @@
 use super::ring::Ring;
 use super::upoly::UPoly;
 use crate::number::fixed::{AtWidth, Fixed, MAX_LIMBS, at_width, push_limbs};
-use crate::number::prime62::{Digits, Modulus, primes};
+use crate::number::prime31::{CrtVec, Fp, prime31};
 use crate::number::{Q, sign_z};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -532,17 +532,14 @@ where
 /// loops that repeat their (cheap) passes, not in each pass.
 pub(crate) const SHORT: usize = 32;
 
-/// Reduction of an integer polynomial modulo a prime (Montgomery form).
-pub fn reduce_mod(p: &ZPoly, m: &Modulus) -> Vec<u64> {
-    p.coeffs()
-        .iter()
-        .map(|c| Digits::new(c).reduce(m))
-        .collect()
+/// Reduction of an integer polynomial modulo a prime.
+pub fn reduce_mod(p: &ZPoly, m: &Fp) -> Vec<u64> {
+    p.coeffs().iter().map(|c| m.reduce_big(c)).collect()
 }
 
-/// Degree of gcd(a, b) modulo the prime `m.n`, with `a`, `b` as Montgomery
-/// residues (ascending, possibly with leading zeros).
-pub fn gcd_degree_mod(a: &[u64], b: &[u64], m: &Modulus) -> Option<usize> {
+/// Degree of gcd(a, b) modulo the prime `m.p`, with `a`, `b` as residues
+/// (ascending, possibly with leading zeros).
+pub fn gcd_degree_mod(a: &[u64], b: &[u64], m: &Fp) -> Option<usize> {
     let mut a: Vec<u64> = a.to_vec();
     let mut b: Vec<u64> = b.to_vec();
     trim(&mut a);
@@ -563,8 +560,8 @@ fn trim(a: &mut Vec<u64>) {
     }
 }
 
-/// `a := a mod b` over Z/p (Montgomery form), `b` non-zero and trimmed.
-pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Modulus) {
+/// `a := a mod b` over Z/p, `b` non-zero and trimmed.
+pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Fp) {
     let db = b.len() - 1;
     let inv = m.inv(b[db]).expect("leading coefficient is non-zero");
     let long = db > SHORT;
@@ -589,8 +586,8 @@ pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Modulus) {
 /// "unknown"; a modular gcd can only be too large, never too small, when the
 /// degrees are preserved.)
 fn coprime_mod_p(a: &ZPoly, b: &ZPoly) -> bool {
-    for p in primes(2) {
-        let m = Modulus::new(p);
+    for i in 0..2 {
+        let m = Fp::new(prime31(i));
         let ra = reduce_mod(a, &m);
         let rb = reduce_mod(b, &m);
         if ra.last() == Some(&0) || rb.last() == Some(&0) {
@@ -601,8 +598,8 @@ fn coprime_mod_p(a: &ZPoly, b: &ZPoly) -> bool {
     false
 }
 
-/// Monic gcd modulo a prime (Montgomery form, ascending).
-fn gcd_mod(a: &[u64], b: &[u64], m: &Modulus) -> Vec<u64> {
+/// Monic gcd modulo a prime (ascending).
+fn gcd_mod(a: &[u64], b: &[u64], m: &Fp) -> Vec<u64> {
     let mut a: Vec<u64> = a.to_vec();
     let mut b: Vec<u64> = b.to_vec();
     trim(&mut a);
@@ -624,17 +621,17 @@ fn gcd_mod(a: &[u64], b: &[u64], m: &Modulus) -> Vec<u64> {
 /// by `gcd(lc a, lc b)`, combined by the CRT over the primes of minimal
 /// degree, and accepted only when the primitive candidate divides both
 /// inputs exactly (so the answer is proven, whatever primes were used).
+/// A candidate is tried when the newest prime left every value as it was
+/// (and not twice the same one).
 fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
-    use crate::number::prime62::{Crt, nth_prime};
     let g = a.lc().gcd(&b.lc());
-    let gd = Digits::new(&g);
     let mut best: Option<usize> = None;
-    let mut crts: Vec<Crt> = Vec::new();
+    let mut crt = CrtVec::new(0);
     let mut last: Option<ZPoly> = None;
     let mut i = 0;
     loop {
         crate::budget::check();
-        let m = Modulus::new(nth_prime(i));
+        let m = Fp::new(prime31(i));
         i += 1;
         let ra = reduce_mod(a, &m);
         let rb = reduce_mod(b, &m);
@@ -651,16 +648,20 @@ fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
             Some(bd) if d == bd => {}
             _ => {
                 best = Some(d);
-                crts = vec![Crt::new(); d + 1];
+                crt = CrtVec::new(d + 1);
                 last = None;
             }
         }
-        let gm = gd.reduce(&m);
-        for (k, c) in h.iter().enumerate() {
-            crts[k].push(&m, m.mul(*c, gm));
+        let gm = m.reduce_big(&g);
+        let scaled: Vec<u64> = h.iter().map(|c| m.mul(*c, gm)).collect();
+        crt.push(&m, &scaled);
+        // a candidate only once the newest prime changed no value (the
+        // division below is the proof)
+        if !crt.newest_digits_stable() {
+            continue;
         }
-        let cand = ZPoly::new(crts.iter().map(|c| c.symmetric()).collect()).primitive_part();
-        if last.as_ref() == Some(&cand)
+        let cand = ZPoly::new(crt.symmetric_values()).primitive_part();
+        if last.as_ref() != Some(&cand)
             && a.div_exact(&cand).is_some()
             && b.div_exact(&cand).is_some()
         {

@@ -359,21 +359,6 @@ pub struct TangentReport {
 }
 
 impl TangentReport {
-    /// The picture of the answer as SVG text (`quadsect tangent --svg`): E
-    /// from two opposite sides, shaded by the sign of S (red S > 0, blue
-    /// S < 0, in doubles), the curve S = 0 on E traced through the mesh,
-    /// the certificate's witness points (exact points of E) marked, and a
-    /// legend with the verdict and the extreme values.
-    ///
-    /// ```
-    /// let r = quadsect::tangent::decide_str("x^2+y^2+z^2-25", "(x-6)^2/9+y^2/4+z^2/16-1").unwrap();
-    /// let svg = r.svg();
-    /// assert!(svg.starts_with("<svg") && svg.contains("verdict: intersecting"));
-    /// ```
-    pub fn svg(&self) -> String {
-        crate::draw::tangent::svg(self)
-    }
-
     /// The verdict.
     pub fn verdict(&self) -> Verdict {
         self.verdict

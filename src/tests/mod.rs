@@ -11,7 +11,9 @@
 //!   properties and against committed sympy reference data;
 //! * `fuzz_props`: proptest versions of the fuzz targets;
 //! * `figures`: the pictures (well-formed, inked, one per class and
-//!   verdict, the committed ones up to date).
+//!   verdict, the committed ones up to date);
+//! * `layout`: the folders' imports (no circle, the ground floors import
+//!   nothing above them) and the files' names.
 
 /// One step of Marsaglia's xorshift (shifts 13, 7, 17): the fixed
 /// pseudo-random sequences of the unit tests.
@@ -28,6 +30,7 @@ mod figures;
 mod fuzz_props;
 mod kernel_props;
 mod kernel_reference;
+mod layout;
 mod natural;
 mod natural_whole;
 mod nonreduced;
