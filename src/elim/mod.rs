@@ -13,8 +13,8 @@ mod value_resultant;
 pub(crate) use value_resultant::value_resultant;
 
 use crate::number::prime31::{CrtVec, Fp, prime31};
+use crate::poly::modp::resultant_mod;
 use crate::poly::mpoly::{MPoly, NVARS, QMPoly, ZMPoly};
-use crate::poly::zpoly::rem_mod_in_place;
 use crate::poly::{Ring, UPoly, ZPoly};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -189,34 +189,9 @@ pub fn resultant_modular(f: &ZPoly, g: &ZPoly) -> BigInt {
         if a[m] == 0 || b[n] == 0 {
             continue; // the degree would drop modulo this prime
         }
-        crt.push(&md, &[resultant_mod_p(a, b, &md)]);
+        crt.push(&md, &[resultant_mod(&md, &a, &b)]);
     }
     crt.symmetric_values().swap_remove(0)
-}
-
-/// Resultant modulo a prime of two polynomials with non-zero leading
-/// coefficients (residues, ascending), by Euclid:
-/// `Res(a, b) = (-1)^(deg a·deg b) lc(b)^(deg a - deg r) Res(b, r)`.
-pub fn resultant_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, m: &Fp) -> u64 {
-    let mut res = 1;
-    loop {
-        let da = a.len() - 1;
-        let db = b.len() - 1;
-        if db == 0 {
-            return m.mul(res, m.pow(b[0], da as u64));
-        }
-        let lb = b[db];
-        rem_mod_in_place(&mut a, &b, m);
-        if a.is_empty() {
-            return 0;
-        }
-        let dr = a.len() - 1;
-        res = m.mul(res, m.pow(lb, (da - dr) as u64));
-        if da % 2 == 1 && db % 2 == 1 {
-            res = m.neg(res);
-        }
-        std::mem::swap(&mut a, &mut b);
-    }
 }
 
 /// The resultant of two univariate integer polynomials, by the fastest
@@ -376,7 +351,7 @@ pub fn resultant_bivariate_modular(f: &ZMPoly, g: &ZMPoly, v: usize, w: usize) -
             } else if n == 0 {
                 md.pow(b[0], m as u64)
             } else {
-                resultant_mod_p(a, b, &md)
+                resultant_mod(&md, &a, &b)
             };
             xs.push(x);
             ks.push(kk);

@@ -299,7 +299,11 @@ pub(crate) fn resultant_mod(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
         if n == 0 {
             return fp.mul(acc, fp.pow(b[0], m as u64));
         }
-        let r = rem_mod(fp, &a, &b);
+        let r = if b.len() <= SHORT_DIVISOR {
+            rem_short(fp, a, &b)
+        } else {
+            rem_mod(fp, &a, &b)
+        };
         if r.is_empty() {
             return 0;
         }
@@ -313,7 +317,40 @@ pub(crate) fn resultant_mod(fp: &Fp, a: &[u64], b: &[u64]) -> u64 {
 
 /// The gcd modulo p (not normalised; ascending, trimmed).
 pub(crate) fn poly_gcd_mod(fp: &Fp, a: &[u64], b: &[u64]) -> Vec<u64> {
-    euclid(fp, a.to_vec(), b.to_vec(), None).0
+    if a.len().max(b.len()) > SHORT_DIVISOR {
+        return euclid(fp, a.to_vec(), b.to_vec(), None).0;
+    }
+    let (mut a, mut b) = (trimmed(a), trimmed(b));
+    while !b.is_empty() {
+        a = rem_short(fp, a, &b);
+        std::mem::swap(&mut a, &mut b);
+    }
+    a
+}
+
+/// Divisors up to this length are divided by [`rem_short`] (in place, one
+/// reduction per product): the lazy kernel's set-up costs more than it
+/// saves on them.
+const SHORT_DIVISOR: usize = 24;
+
+/// `a rem b` modulo p for residues (`b` trimmed, non-zero), in place.
+fn rem_short(fp: &Fp, mut a: Vec<u64>, b: &[u64]) -> Vec<u64> {
+    let db = b.len() - 1;
+    let inv = fp.inv(b[db]).expect("non-zero leading coefficient");
+    while a.len() > db {
+        let k = a.len() - 1 - db;
+        let t = fp.mul(a[a.len() - 1], inv);
+        if t != 0 {
+            for j in 0..db {
+                a[k + j] = fp.sub(a[k + j], fp.mul(t, b[j]));
+            }
+        }
+        a.pop();
+        while a.last() == Some(&0) {
+            a.pop();
+        }
+    }
+    a
 }
 
 /// Euclid's algorithm modulo p on `(a, b)`: the gcd (reduced, trimmed, not

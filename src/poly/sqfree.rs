@@ -32,7 +32,7 @@ use crate::number::Q;
 use crate::number::prime31::{Fp, prime31};
 use crate::number::reconstruct::symmetric_mod;
 use crate::poly::QMPoly;
-use crate::poly::zpoly::gcd_degree_mod;
+use crate::poly::modp::poly_gcd_mod;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -115,7 +115,7 @@ pub fn is_squarefree(p: &ZMPoly) -> bool {
         (0..TRIES).any(|i| {
             let m = Fp::new(prime31(i));
             let s = image(p, v, &pts.point(&m), &m);
-            s[d] != 0 && gcd_degree_mod(&s, &derivative_mod(&s, &m), &m) == Some(0)
+            s[d] != 0 && poly_gcd_mod(&m, &s, &derivative_mod(&s, &m)).len() == 1
         })
     })
 }
@@ -138,7 +138,7 @@ pub fn coprime(a: &ZMPoly, b: &ZMPoly) -> bool {
             let m = Fp::new(prime31(i));
             let pt = pts.point(&m);
             let (sa, sb) = (image(a, v, &pt, &m), image(b, v, &pt, &m));
-            sa[da] != 0 && sb[db] != 0 && gcd_degree_mod(&sa, &sb, &m) == Some(0)
+            sa[da] != 0 && sb[db] != 0 && poly_gcd_mod(&m, &sa, &sb).len() == 1
         })
     })
 }

@@ -7,6 +7,7 @@
 //! primitive polynomials; a polynomial over Q is a rational constant times a
 //! primitive integer polynomial, and rationals appear only at the edges.
 
+use super::modp::{poly_gcd_mod, zpoly_mod};
 use super::ring::Ring;
 use super::upoly::UPoly;
 use crate::number::fixed::{AtWidth, Fixed, MAX_LIMBS, at_width, push_limbs};
@@ -532,55 +533,6 @@ where
 /// loops that repeat their (cheap) passes, not in each pass.
 pub(crate) const SHORT: usize = 32;
 
-/// Reduction of an integer polynomial modulo a prime.
-pub fn reduce_mod(p: &ZPoly, m: &Fp) -> Vec<u64> {
-    p.coeffs().iter().map(|c| m.reduce_big(c)).collect()
-}
-
-/// Degree of gcd(a, b) modulo the prime `m.p`, with `a`, `b` as residues
-/// (ascending, possibly with leading zeros).
-pub fn gcd_degree_mod(a: &[u64], b: &[u64], m: &Fp) -> Option<usize> {
-    let mut a: Vec<u64> = a.to_vec();
-    let mut b: Vec<u64> = b.to_vec();
-    trim(&mut a);
-    trim(&mut b);
-    if a.is_empty() && b.is_empty() {
-        return None;
-    }
-    while !b.is_empty() {
-        rem_mod_in_place(&mut a, &b, m);
-        std::mem::swap(&mut a, &mut b);
-    }
-    Some(a.len() - 1)
-}
-
-fn trim(a: &mut Vec<u64>) {
-    while a.last() == Some(&0) {
-        a.pop();
-    }
-}
-
-/// `a := a mod b` over Z/p, `b` non-zero and trimmed.
-pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Fp) {
-    let db = b.len() - 1;
-    let inv = m.inv(b[db]).expect("leading coefficient is non-zero");
-    let long = db > SHORT;
-    while a.len() > db {
-        if long {
-            crate::budget::check();
-        }
-        let k = a.len() - 1 - db;
-        let t = m.mul(a[a.len() - 1], inv);
-        if t != 0 {
-            for j in 0..db {
-                a[k + j] = m.sub(a[k + j], m.mul(t, b[j]));
-            }
-        }
-        a.pop();
-        trim(a);
-    }
-}
-
 /// True when `a` and `b` are certainly coprime over Q: their gcd modulo a
 /// prime not dividing both leading coefficients is constant.  (`false` means
 /// "unknown"; a modular gcd can only be too large, never too small, when the
@@ -588,33 +540,14 @@ pub fn rem_mod_in_place(a: &mut Vec<u64>, b: &[u64], m: &Fp) {
 fn coprime_mod_p(a: &ZPoly, b: &ZPoly) -> bool {
     for i in 0..2 {
         let m = Fp::new(prime31(i));
-        let ra = reduce_mod(a, &m);
-        let rb = reduce_mod(b, &m);
+        let ra = zpoly_mod(&m, a);
+        let rb = zpoly_mod(&m, b);
         if ra.last() == Some(&0) || rb.last() == Some(&0) {
             continue;
         }
-        return gcd_degree_mod(&ra, &rb, &m) == Some(0);
+        return poly_gcd_mod(&m, &ra, &rb).len() == 1;
     }
     false
-}
-
-/// Monic gcd modulo a prime (ascending).
-fn gcd_mod(a: &[u64], b: &[u64], m: &Fp) -> Vec<u64> {
-    let mut a: Vec<u64> = a.to_vec();
-    let mut b: Vec<u64> = b.to_vec();
-    trim(&mut a);
-    trim(&mut b);
-    while !b.is_empty() {
-        rem_mod_in_place(&mut a, &b, m);
-        std::mem::swap(&mut a, &mut b);
-    }
-    if let Some(&l) = a.last() {
-        let inv = m.inv(l).expect("non-zero leading coefficient");
-        for x in a.iter_mut() {
-            *x = m.mul(*x, inv);
-        }
-    }
-    a
 }
 
 /// Brown's small-primes gcd of primitive polynomials: modular gcds scaled
@@ -633,12 +566,12 @@ fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
         crate::budget::check();
         let m = Fp::new(prime31(i));
         i += 1;
-        let ra = reduce_mod(a, &m);
-        let rb = reduce_mod(b, &m);
+        let ra = zpoly_mod(&m, a);
+        let rb = zpoly_mod(&m, b);
         if ra.last() == Some(&0) || rb.last() == Some(&0) {
             continue;
         }
-        let h = gcd_mod(&ra, &rb, &m);
+        let h = poly_gcd_mod(&m, &ra, &rb);
         let d = h.len() - 1;
         if d == 0 {
             return ZPoly::constant(BigInt::one());
@@ -652,7 +585,9 @@ fn modular_gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
                 last = None;
             }
         }
-        let gm = m.reduce_big(&g);
+        // the monic gcd times g
+        let lc = m.inv(h[d]).expect("non-zero leading coefficient");
+        let gm = m.mul(m.reduce_big(&g), lc);
         let scaled: Vec<u64> = h.iter().map(|c| m.mul(*c, gm)).collect();
         crt.push(&m, &scaled);
         // a candidate only once the newest prime changed no value (the
