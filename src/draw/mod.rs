@@ -15,7 +15,7 @@
 //! ruling parameterisation the exact topology uses (ball arithmetic, each
 //! point within 2^-30 of its size of a point of the curve); the places
 //! where the tangent method's extremes are attained proven by a Krawczyk
-//! box when the proof succeeds (else drawn hollow); the level curve S = 0
+//! box (not drawn when the proof fails); the level curve S = 0
 //! on E through points proven by Krawczyk boxes (ball arithmetic; a point
 //! the test declines leaves a gap); the surfaces' silhouettes and the
 //! tangent method's shading from the equations evaluated in doubles (not

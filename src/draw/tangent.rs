@@ -170,8 +170,7 @@ fn extreme(e: &EllipsoidF, s: &SurfaceF, sign: f64) -> P3 {
 /// `a′`, `b′`, `∇E` span R³ there and `m` (always ⟂ `∇E`) vanishes, so the
 /// zero is a critical point of S on E — and S's enclosure on the box holds
 /// `value` and no other critical value.
-/// `None` when a step does not prove it (the mark is then drawn hollow:
-/// located in doubles).
+/// `None` when a step does not prove it (the mark is then not drawn).
 fn certified_extreme(
     report: &TangentReport,
     e: &Ellipsoid,
@@ -469,7 +468,7 @@ fn view(
     x0: f64,
     y0: f64,
     label: &str,
-    extremes: &[(Option<(P3, bool)>, String); 2],
+    extremes: &[(Option<P3>, String); 2],
     curve: &ZeroCurve,
 ) {
     let r = e.radius();
@@ -579,10 +578,10 @@ fn view(
             svg.circle(at, 5.0, "none", fill, 1.5);
         }
     }
-    // where the extremes are attained: found in doubles, then proven
-    // (a certified box) when the exact checks succeed
+    // where the extremes are attained: found in doubles, drawn only when
+    // proven (a certified box)
     for (mark, v) in extremes {
-        let Some((p, proven)) = *mark else { continue };
+        let Some(p) = *mark else { continue };
         let at = cam.project(p);
         if dot(sub(p, e.c), cam.eye) < 0.0 {
             continue;
@@ -595,7 +594,7 @@ fn view(
                 (at.0, at.1 + d),
                 (at.0 - d, at.1),
             ],
-            if proven { "#ffd23f" } else { "none" },
+            "#ffd23f",
             "#111111",
         );
         let end = at.0 > x0 + 0.6 * PANEL;
@@ -638,20 +637,21 @@ pub(crate) fn svg(report: &TangentReport) -> String {
     };
     let ef = EllipsoidF::new(&e);
     let s = SurfaceF::new(&report.surface);
-    let mut proofs = 0;
-    let extremes: [(Option<(P3, bool)>, String); 2] =
+    let (mut values, mut proofs) = (0, 0);
+    let extremes: [(Option<P3>, String); 2] =
         [(-1.0, "min", report.min()), (1.0, "max", report.max())].map(|(sign, name, v)| {
             let Some(v) = v else {
                 return (None, String::new());
             };
             let p = extreme(&ef, &s, sign);
-            // the proof in exact arithmetic only for an S of moderate size
-            // (it is an extra: a hollow mark otherwise)
+            // the proof in exact arithmetic only for an S of moderate size;
+            // a place not proven is not drawn (the legend says so)
             let small = report.surface.terms().len() <= 120
                 && report.surface.total_degree().unwrap_or(0) <= 10;
             let proven = small && certified_extreme(report, &e, p, v).is_some();
+            values += 1;
             proofs += usize::from(proven);
-            (Some((p, proven)), format!("{name} S = {}", v.approx(8)))
+            (proven.then_some(p), format!("{name} S = {}", v.approx(8)))
         });
     let curve = zero_curve(report, &e, &ef, &s);
     let eye = [1.0, -1.4, 0.8];
@@ -738,16 +738,18 @@ pub(crate) fn svg(report: &TangentReport) -> String {
             curve.certified, curve.declined
         )
     };
-    let marks = match proofs {
-        2 => {
-            "diamonds: the critical points where min and max are attained (each proven by a Krawczyk box)"
-        }
-        1 => {
-            "diamonds: where min and max are attained (filled: proven by a Krawczyk box; hollow: located in doubles)"
-        }
-        _ => "diamonds: where min and max are attained (located in doubles, not proven)",
+    let marks = if values == 0 {
+        "no diamonds: the exact min and max were not computed".to_string()
+    } else if proofs == values {
+        "diamonds: the critical points where min and max are attained (each proven by a Krawczyk box)"
+            .to_string()
+    } else {
+        format!(
+            "diamonds: where min and max are attained, each proven by a Krawczyk box ({} not proven: not drawn)",
+            values - proofs
+        )
     };
-    svg.text((14.0, y + 88.0), 12.0, "#333333", marks);
+    svg.text((14.0, y + 88.0), 12.0, "#333333", &marks);
     if !traced.is_empty() {
         svg.text((14.0, y + 104.0), 12.0, "#333333", &clip(traced));
     }
@@ -774,6 +776,22 @@ mod tests {
         // a point that is no critical point: no box
         let off = ef.point(unit([1.0, 1.0, 1.0]));
         assert!(certified_extreme(&r, &e, off, lo).is_none());
+    }
+
+    /// A place of an extreme that is not proven is not drawn (here the
+    /// proof is not attempted: S of degree 11), and the legend says so.
+    #[test]
+    fn unproven_extremes_are_not_drawn() {
+        let r = crate::tangent::decide_str("x^2+y^2+z^2-1", "x^11+y-1/2").unwrap();
+        let svg = r.svg();
+        assert!(!svg.contains("#ffd23f"), "a diamond was drawn");
+        assert!(svg.contains("2 not proven: not drawn"));
+        let small = crate::tangent::decide_str("x^2+y^2+z^2-1", "x^3+y-1/2").unwrap();
+        assert_eq!(
+            small.svg().matches("#ffd23f").count(),
+            2,
+            "both places, each in the view facing it"
+        );
     }
 
     /// The level curve is drawn through proven points only: on a sphere cut
