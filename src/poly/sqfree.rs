@@ -18,7 +18,9 @@
 //!   respect to x) is decomposed with respect to y, then z.  The gcds are
 //!   the heuristic gcd of Char, Geddes and Gonnet ([`gcd`]): evaluate the
 //!   last variable at a large integer ξ, take the gcd of the images
-//!   (recursively, down to integers), read a candidate back from its ξ-adic
+//!   (recursively, down to one variable: there Brown's modular gcd of
+//!   [`ZPoly`](crate::poly::ZPoly), whose cost does not grow as deg ·
+//!   bits(ξ)), read a candidate back from its ξ-adic
 //!   digits, and accept it only when it divides both inputs exactly — for
 //!   `ξ ≥ 2·min(‖a‖∞, ‖b‖∞) + 2` an accepted candidate is the gcd.
 //! * **The result is checked exactly**: `S = c·∏ Tᵢ^kᵢ` by expansion, every
@@ -242,7 +244,15 @@ fn gcd_primitive(a: &ZMPoly, b: &ZMPoly) -> Option<ZMPoly> {
     }
     let mut vars = a.vars();
     vars.extend(b.vars());
+    vars.sort_unstable();
+    vars.dedup();
     let v = *vars.iter().max()?;
+    if vars.len() == 1 {
+        // one variable: Brown's modular gcd (no evaluation at a big ξ,
+        // whose integers grow as deg · bits(ξ))
+        let g = a.to_univariate(v)?.gcd(&b.to_univariate(v)?);
+        return Some(primitive(&MPoly::from_univariate(&g, v)));
+    }
     let d = a.degree_in(v).max(b.degree_in(v)).unwrap_or(0) as u64;
     let mut xi: BigInt = max_norm(a).min(max_norm(b)) * 2 + 29;
     for _ in 0..6 {

@@ -184,6 +184,35 @@ fn the_issue_example_is_fast_and_touching() {
 }
 
 #[test]
+fn high_powers_of_a_plane_are_decided_by_its_factor() {
+    // (x − y)^k, k up to 130: the square-free decomposition's univariate
+    // gcds by Brown's modular algorithm (the heuristic gcd's integers grew
+    // as deg · bits(ξ) and gave up above k ≈ 120: `undecided` at 5 s).
+    // Even k: S ≥ 0, zero on the plane x = y, which meets E: touching with
+    // min 0; odd k: S changes sign there.
+    let e = poly("x^2+2y^2+3z^2-6");
+    for k in [121u32, 130] {
+        let s = poly(&format!("(x - y)^{k}"));
+        let started = std::time::Instant::now();
+        let r = decide(&e, &s);
+        assert!(
+            started.elapsed() < std::time::Duration::from_secs(3),
+            "k = {k}"
+        );
+        let want = if k % 2 == 0 {
+            Verdict::Touching
+        } else {
+            Verdict::Intersecting
+        };
+        assert_eq!(r.verdict, want, "k = {k}");
+        assert_eq!(
+            r.certificate.notes[0].split(':').next(),
+            Some(format!("S = (x - y)^{k}").as_str())
+        );
+    }
+}
+
+#[test]
 fn hand_derived_values() {
     // the unit sphere, S = (z − 2)²(z + 2)³ = f(z): S > 0 on it; f′ = 0 at
     // z = 2/5 (a circle of critical points) and the poles are critical:
