@@ -638,16 +638,16 @@ pub(crate) fn svg(report: &TangentReport) -> String {
     let ef = EllipsoidF::new(&e);
     let s = SurfaceF::new(&report.surface);
     let (mut values, mut proofs) = (0, 0);
+    // the proof in exact arithmetic only for an S of moderate size
+    let small =
+        report.surface.terms().len() <= 120 && report.surface.total_degree().unwrap_or(0) <= 10;
     let extremes: [(Option<P3>, String); 2] =
         [(-1.0, "min", report.min()), (1.0, "max", report.max())].map(|(sign, name, v)| {
             let Some(v) = v else {
                 return (None, String::new());
             };
             let p = extreme(&ef, &s, sign);
-            // the proof in exact arithmetic only for an S of moderate size;
             // a place not proven is not drawn (the legend says so)
-            let small = report.surface.terms().len() <= 120
-                && report.surface.total_degree().unwrap_or(0) <= 10;
             let proven = small && certified_extreme(report, &e, p, v).is_some();
             values += 1;
             proofs += usize::from(proven);
@@ -743,6 +743,8 @@ pub(crate) fn svg(report: &TangentReport) -> String {
     } else if proofs == values {
         "diamonds: the critical points where min and max are attained (each proven by a Krawczyk box)"
             .to_string()
+    } else if !small {
+        "no diamonds: their places are proven only for S of degree ≤ 10 and ≤ 120 terms".to_string()
     } else {
         format!(
             "diamonds: where min and max are attained, each proven by a Krawczyk box ({} not proven: not drawn)",
@@ -779,13 +781,13 @@ mod tests {
     }
 
     /// A place of an extreme that is not proven is not drawn (here the
-    /// proof is not attempted: S of degree 11), and the legend says so.
+    /// proof is not attempted: S of degree 11), and the legend says why.
     #[test]
     fn unproven_extremes_are_not_drawn() {
         let r = crate::tangent::decide_str("x^2+y^2+z^2-1", "x^11+y-1/2").unwrap();
         let svg = r.svg();
         assert!(!svg.contains("#ffd23f"), "a diamond was drawn");
-        assert!(svg.contains("2 not proven: not drawn"));
+        assert!(svg.contains("no diamonds: their places are proven only for S of degree ≤ 10"));
         let small = crate::tangent::decide_str("x^2+y^2+z^2-1", "x^3+y-1/2").unwrap();
         assert_eq!(
             small.svg().matches("#ffd23f").count(),
