@@ -124,25 +124,53 @@ fn sphere(theta: f64, phi: f64) -> P3 {
     ]
 }
 
-/// Where S is smallest or largest on E (`sign` −1 or +1): the best mesh
-/// vertex, improved by a pattern search in the angles (doubles; the value
-/// printed beside it is the exact one of the answer).
-fn extreme(e: &EllipsoidF, s: &SurfaceF, sign: f64) -> P3 {
-    let f = |t: f64, p: f64| sign * s.eval(e.point(sphere(t, p)));
-    let (mut bt, mut bp, mut bv) = (0.0, 0.0, f64::NEG_INFINITY);
+/// S on a mesh of E: the unit-sphere points of [`grid`] (`n × 2n`
+/// cells) and S at their images on E (doubles).
+struct Mesh {
+    ys: Vec<Vec<P3>>,
+    vals: Vec<Vec<f64>>,
+}
+
+impl Mesh {
+    fn new(e: &EllipsoidF, s: &SurfaceF, n: usize) -> Mesh {
+        let ys = grid(n, 2 * n);
+        let vals = ys
+            .iter()
+            .map(|row| row.iter().map(|&y| s.eval(e.point(y))).collect())
+            .collect();
+        Mesh { ys, vals }
+    }
+}
+
+/// Where S is smallest and largest on E: the best vertices of one mesh,
+/// each improved by a pattern search in the angles (doubles; the values
+/// printed beside them are the exact ones of the answer).
+fn extremes(e: &EllipsoidF, s: &SurfaceF) -> [P3; 2] {
     let n = s.divisions(60);
-    for i in 0..=n {
-        for j in 0..2 * n {
-            let (t, p) = (
-                std::f64::consts::PI * i as f64 / n as f64,
-                std::f64::consts::TAU * j as f64 / (2 * n) as f64,
-            );
-            let v = f(t, p);
-            if v > bv {
-                (bt, bp, bv) = (t, p, v);
+    let mesh = Mesh::new(e, s, n);
+    [-1.0, 1.0].map(|sign| {
+        let (mut bi, mut bj, mut bv) = (0, 0, f64::NEG_INFINITY);
+        for (i, row) in mesh.vals.iter().enumerate() {
+            // the last column repeats the first
+            for (j, v) in row[..2 * n].iter().enumerate() {
+                if sign * v > bv {
+                    (bi, bj, bv) = (i, j, sign * v);
+                }
             }
         }
-    }
+        let (t, p) = (
+            std::f64::consts::PI * bi as f64 / n as f64,
+            std::f64::consts::TAU * bj as f64 / (2 * n) as f64,
+        );
+        polish(e, s, sign, (t, p), bv)
+    })
+}
+
+/// The pattern search of [`extremes`] from the angles `at` where
+/// `sign·S = v`.
+fn polish(e: &EllipsoidF, s: &SurfaceF, sign: f64, at: (f64, f64), v: f64) -> P3 {
+    let f = |t: f64, p: f64| sign * s.eval(e.point(sphere(t, p)));
+    let ((mut bt, mut bp), mut bv) = (at, v);
     let mut h = 0.05;
     for _ in 0..200 {
         let mut moved = false;
@@ -289,25 +317,17 @@ fn zero_curve(report: &TangentReport, e: &Ellipsoid, ef: &EllipsoidF, s: &Surfac
     // Jacobian) proofs (a proof is ≈ 8 evaluations of them: ≈ 10 ms in
     // all whatever S's size)
     let terms: usize = sys_terms(&sys);
-    let values = |n: usize| -> (Vec<Vec<P3>>, Vec<Vec<f64>>) {
-        let ys = grid(n, 2 * n);
-        let vals = ys
-            .iter()
-            .map(|row| row.iter().map(|&y| s.eval(ef.point(y))).collect())
-            .collect();
-        (ys, vals)
-    };
     // the crossings of a 24 × 48 mesh, times n / 24, estimate those of
     // the n × 2n one
     let cap = (200_000 / terms.max(1)).max(24);
     let n = s.divisions(90);
-    let rough = crossings(&values(24).1) * n / 24;
+    let rough = crossings(&Mesh::new(ef, s, 24).vals) * n / 24;
     let n = if rough > cap {
         (n * cap / rough).max(8)
     } else {
         n
     };
-    let (ys, vals) = values(n);
+    let Mesh { ys, vals } = Mesh::new(ef, s, n);
     let (nt, np) = (n, 2 * n);
     let reach = 3.0 * ef.radius() * std::f64::consts::PI / nt as f64;
     let mut proven = |y: P3| prove_on_curve(balls.as_mut()?, ef, s, y, reach);
@@ -470,6 +490,7 @@ fn view(
     label: &str,
     extremes: &[(Option<P3>, String); 2],
     curve: &ZeroCurve,
+    (shade, shade_max): (&Mesh, f64),
 ) {
     let r = e.radius();
     let cam = Camera::new(
@@ -484,17 +505,8 @@ fn view(
         let mid = unit(ys.iter().fold([0.0; 3], |a, &y| add(a, y)));
         dot(e.normal(mid), cam.eye) > 0.0
     };
-    let nc = s.divisions(30);
-    let coarse = grid(nc, 2 * nc);
-    let cvals: Vec<Vec<f64>> = coarse
-        .iter()
-        .map(|row| row.iter().map(|&y| s.eval(e.point(y))).collect())
-        .collect();
-    let vmax = cvals
-        .iter()
-        .flatten()
-        .filter(|v| v.is_finite())
-        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let (coarse, cvals) = (&shade.ys, &shade.vals);
+    let vmax = shade_max;
     for i in 0..coarse.len() - 1 {
         for j in 0..coarse[i].len() - 1 {
             let ys = [
@@ -641,12 +653,13 @@ pub(crate) fn svg(report: &TangentReport) -> String {
     // the proof in exact arithmetic only for an S of moderate size
     let small =
         report.surface.terms().len() <= 120 && report.surface.total_degree().unwrap_or(0) <= 10;
-    let extremes: [(Option<P3>, String); 2] =
-        [(-1.0, "min", report.min()), (1.0, "max", report.max())].map(|(sign, name, v)| {
-            let Some(v) = v else {
+    let places = (report.min().is_some() || report.max().is_some()).then(|| extremes(&ef, &s));
+    let extremes: [(Option<P3>, String); 2] = [(0, "min", report.min()), (1, "max", report.max())]
+        .map(|(k, name, v)| {
+            let (Some(v), Some(places)) = (v, places) else {
                 return (None, String::new());
             };
-            let p = extreme(&ef, &s, sign);
+            let p = places[k];
             // a place not proven is not drawn (the legend says so)
             let proven = small && certified_extreme(report, &e, p, v).is_some();
             values += 1;
@@ -654,6 +667,14 @@ pub(crate) fn svg(report: &TangentReport) -> String {
             (proven.then_some(p), format!("{name} S = {}", v.approx(8)))
         });
     let curve = zero_curve(report, &e, &ef, &s);
+    // the shading's mesh, shared by both views
+    let shade = Mesh::new(&ef, &s, s.divisions(30));
+    let shade_max = shade
+        .vals
+        .iter()
+        .flatten()
+        .filter(|v| v.is_finite())
+        .fold(0.0f64, |m, v| m.max(v.abs()));
     let eye = [1.0, -1.4, 0.8];
     view(
         &mut svg,
@@ -666,6 +687,7 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         "E seen from (1, −1.4, 0.8)",
         &extremes,
         &curve,
+        (&shade, shade_max),
     );
     view(
         &mut svg,
@@ -678,6 +700,7 @@ pub(crate) fn svg(report: &TangentReport) -> String {
         "E seen from the opposite side",
         &extremes,
         &curve,
+        (&shade, shade_max),
     );
     let y = PANEL + 36.0;
     svg.text(
@@ -770,7 +793,7 @@ mod tests {
         let e = Ellipsoid::from_poly(&r.ellipsoid).unwrap();
         let (ef, s) = (EllipsoidF::new(&e), SurfaceF::new(&r.surface));
         let (lo, hi) = (r.min().unwrap(), r.max().unwrap());
-        let (pmin, pmax) = (extreme(&ef, &s, -1.0), extreme(&ef, &s, 1.0));
+        let [pmin, pmax] = extremes(&ef, &s);
         assert!(certified_extreme(&r, &e, pmin, lo).is_some());
         assert!(certified_extreme(&r, &e, pmax, hi).is_some());
         assert!(certified_extreme(&r, &e, pmin, hi).is_none());
