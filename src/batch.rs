@@ -966,7 +966,7 @@ mod tests {
                    "values": false, "float": true, "svg": true, "time_limit": 5, "memory_limit": 256}),
             json!({"id": 2, "op": "natural", "a": "sphere center=0,0,0 radius2=1",
                    "b": {"kind": "sphere", "center": ["3", "0", "0"], "radius2": "1"},
-                   "components": false, "float": false, "svg": false, "time_limit": 5, "memory_limit": 256}),
+                   "components": false, "referee": true, "float": false, "svg": false, "time_limit": 5, "memory_limit": 256}),
             json!({"id": 3, "op": "roots", "poly": "x^2-2", "time_limit": 5, "memory_limit": 256}),
             json!({"id": 4, "op": "resultant", "f": "x^2+y^2-1", "g": "x-y", "var": "x",
                    "time_limit": 5, "memory_limit": 256}),

@@ -190,6 +190,7 @@ pub use kernel::{
 };
 pub use natural::classify::classify;
 pub use natural::predicates::{ClassifyOptions, classify_with};
+pub use natural::referee::{NearbyPair, Referee};
 pub use natural::result::{Class, NaturalReport};
 pub use natural::types::{Cone, Cylinder, Natural, Sphere};
 pub use number::{NumberMode, QSqrt, Sign};

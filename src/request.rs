@@ -24,11 +24,12 @@ pub(crate) enum Request {
         values: bool,
     },
     /// Two natural quadrics; `components: false` asks for the class and
-    /// counts only (the fast route).
+    /// counts only (the fast route); `referee` adds the stability interval.
     Natural {
         a: Natural,
         b: Natural,
         components: bool,
+        referee: bool,
     },
     /// Two solid ellipsoids: separated, touching or overlapping.
     EllipsoidContact {
@@ -58,7 +59,10 @@ pub(crate) const OPS: [(&str, &[&str]); 5] = [
         "tangent",
         &["ellipsoid", "surface", "values", "float", "svg"],
     ),
-    ("natural", &["a", "b", "components", "float", "svg"]),
+    (
+        "natural",
+        &["a", "b", "components", "referee", "float", "svg"],
+    ),
     ("ellipsoid-contact", &["a", "b"]),
     ("roots", &["poly"]),
     ("resultant", &["f", "g", "var"]),
@@ -111,9 +115,15 @@ impl Request {
                     &options,
                 )?)
             }
-            Request::Natural { a, b, components } => {
+            Request::Natural {
+                a,
+                b,
+                components,
+                referee,
+            } => {
                 let mut options = ClassifyOptions::with_budget(budget.clone());
                 options.components = *components;
+                options.referee = *referee;
                 Answer::Natural(crate::natural::classify_with(a, b, &options)?)
             }
             Request::EllipsoidContact { a, b } => {
@@ -476,6 +486,7 @@ mod json {
                     a: natural(obj, "a", mode(obj)?)?,
                     b: natural(obj, "b", mode(obj)?)?,
                     components: flag(obj, "components", true)?,
+                    referee: flag(obj, "referee", false)?,
                 },
                 "ellipsoid-contact" => Request::EllipsoidContact {
                     a: contact_ellipsoid(obj, "a")?,

@@ -1010,6 +1010,19 @@ int qs_options_set_size_limits(struct qs_options *opts,
 int qs_options_set_values(struct qs_options *opts, int values, struct qs_error **err);
 
 /**
+ * Whether `qs_natural_json_opts` also referees its answer (`referee`
+ * non-zero; default 0): the JSON then has a `"referee"` object — `lo`,
+ * the relative perturbation size within which every input provably has
+ * the same class and counts, `hi` and `nearby`, an exact input that far
+ * whose answer differs (README, "Refereeing a floating-point kernel").
+ *
+ * # Safety
+ * `opts` is NULL or a live `qs_options` that no call is using; `err` is
+ * NULL or writable.
+ */
+int qs_options_set_referee(struct qs_options *opts, int referee, struct qs_error **err);
+
+/**
  * Cancels every call running (or started later) with these options: they
  * stop at their next budget check, as if a limit had run out.  Safe to
  * call from any thread while calls run.  `qs_options_reset_cancel` clears

@@ -3,11 +3,34 @@
 //! the answers are exactly those of `quadsect batch`.
 
 use crate::boundary::{Answer, answer_into, host_string, input_error, qs_error, read_str};
-use crate::options::{budget_of, qs_options, values_of};
+use crate::options::{budget_of, qs_options, referee_of, values_of};
 use engine::{Error, ErrorKind};
 use serde_json::{Map, Value};
 use std::ffi::{CStr, c_char, c_int};
 use std::ptr;
+
+/// The options' flags that become fields of the request.
+#[derive(Clone, Copy)]
+struct Flags {
+    /// Tangent: the exact critical values.
+    values: bool,
+    /// Natural: the referee.
+    referee: bool,
+}
+
+/// The flags of `opts` (NULL: the defaults).
+///
+/// # Safety
+/// `opts` is NULL or a live `qs_options`.
+unsafe fn flags_of(opts: *const qs_options) -> Flags {
+    // SAFETY: the caller's contract
+    unsafe {
+        Flags {
+            values: values_of(opts),
+            referee: referee_of(opts),
+        }
+    }
+}
 
 /// Runs the operation `op` with string fields: its JSON, and the budget
 /// error when the answer is `undecided` because a budget ran out (the
@@ -16,9 +39,9 @@ fn run_json(
     op: &str,
     fields: &[(&str, &str)],
     budget: &engine::Budget,
-    values: bool,
+    flags: Flags,
 ) -> Result<Answer<String>, Error> {
-    let (answer, exhausted) = run_answer(op, fields, budget, values, false)?;
+    let (answer, exhausted) = run_answer(op, fields, budget, flags, false)?;
     Ok((answer.to_string(), exhausted))
 }
 
@@ -27,7 +50,7 @@ fn run_answer(
     op: &str,
     fields: &[(&str, &str)],
     budget: &engine::Budget,
-    values: bool,
+    flags: Flags,
     svg: bool,
 ) -> Result<Answer<Value>, Error> {
     let mut obj = Map::new();
@@ -35,8 +58,11 @@ fn run_answer(
     for (name, text) in fields {
         obj.insert((*name).into(), Value::from(*text));
     }
-    if op == "tangent" && !values {
+    if op == "tangent" && !flags.values {
         obj.insert("values".into(), Value::from(false));
+    }
+    if op == "natural" && flags.referee {
+        obj.insert("referee".into(), Value::from(true));
     }
     if svg {
         obj.insert("svg".into(), Value::from(true));
@@ -74,7 +100,7 @@ unsafe fn json_entry(
                 op,
                 &[(args[0].0, a), (args[1].0, b)],
                 &budget_of(opts),
-                values_of(opts),
+                flags_of(opts),
             )?;
             Ok((host_string(&json), exhausted))
         })
@@ -194,7 +220,7 @@ unsafe fn svg_entry(
             let b = read_str(args[1].1, args[1].0)?;
             let fields = [(args[0].0, a), (args[1].0, b)];
             let (answer, exhausted) =
-                run_answer(op, &fields, &budget_of(opts), values_of(opts), true)?;
+                run_answer(op, &fields, &budget_of(opts), flags_of(opts), true)?;
             let svg = answer["svg"]
                 .as_str()
                 .ok_or_else(|| Error::internal("the answer has no picture"))?;
@@ -483,6 +509,30 @@ mod tests {
                 .unwrap()
                 .is_empty()
         );
+        unsafe { crate::options::qs_options_free(opts) };
+    }
+
+    #[test]
+    fn the_referee_option_adds_the_stability_interval() {
+        let opts = crate::options::qs_options_new();
+        let (a, b) = (
+            CString::new("sphere center=0,0,0 radius2=1").unwrap(),
+            CString::new("sphere center=3/2,0,0 radius2=1").unwrap(),
+        );
+        let run = |o: *const qs_options| -> Value {
+            let mut out = ptr::null_mut();
+            let code = unsafe {
+                qs_natural_json_opts(a.as_ptr(), b.as_ptr(), o, &mut out, ptr::null_mut())
+            };
+            assert_eq!(code, 0);
+            serde_json::from_str(&owned(out)).unwrap()
+        };
+        assert!(run(opts).get("referee").is_none());
+        unsafe { crate::options::qs_options_set_referee(opts, 1, ptr::null_mut()) };
+        let r = run(opts);
+        assert_eq!(r["class"], "conics");
+        assert!(r["referee"]["lo_exact"].is_string());
+        assert_eq!(r["referee"]["nearby"]["answer"]["class"], "empty");
         unsafe { crate::options::qs_options_free(opts) };
     }
 

@@ -22,6 +22,7 @@ pub struct qs_options {
     budget: Budget,
     cancel: Arc<AtomicBool>,
     values: bool,
+    referee: bool,
 }
 
 impl qs_options {
@@ -31,6 +32,7 @@ impl qs_options {
             budget: Budget::default().with_cancel_flag(cancel.clone()),
             cancel,
             values: true,
+            referee: false,
         }
     }
 }
@@ -43,6 +45,16 @@ impl qs_options {
 pub(crate) unsafe fn values_of(opts: *const qs_options) -> bool {
     // SAFETY: the caller's contract
     unsafe { opts.as_ref() }.is_none_or(|o| o.values)
+}
+
+/// Whether the natural-quadric calls referee their answer (NULL: the
+/// default, no).
+///
+/// # Safety
+/// `opts` is NULL or a live `qs_options`.
+pub(crate) unsafe fn referee_of(opts: *const qs_options) -> bool {
+    // SAFETY: the caller's contract
+    unsafe { opts.as_ref() }.is_some_and(|o| o.referee)
 }
 
 /// The budget of `opts` (NULL: the defaults).
@@ -158,6 +170,30 @@ pub unsafe extern "C" fn qs_options_set_values(
     unsafe {
         guard(err, || {
             opts_mut(opts)?.values = values != 0;
+            Ok(())
+        })
+    }
+}
+
+/// Whether `qs_natural_json_opts` also referees its answer (`referee`
+/// non-zero; default 0): the JSON then has a `"referee"` object — `lo`,
+/// the relative perturbation size within which every input provably has
+/// the same class and counts, `hi` and `nearby`, an exact input that far
+/// whose answer differs (README, "Refereeing a floating-point kernel").
+///
+/// # Safety
+/// `opts` is NULL or a live `qs_options` that no call is using; `err` is
+/// NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn qs_options_set_referee(
+    opts: *mut qs_options,
+    referee: c_int,
+    err: *mut *mut qs_error,
+) -> c_int {
+    // SAFETY: `err` by the caller's contract
+    unsafe {
+        guard(err, || {
+            opts_mut(opts)?.referee = referee != 0;
             Ok(())
         })
     }

@@ -125,6 +125,7 @@ __all__ = [
     # results
     "TangentResult",
     "NaturalResult",
+    "Referee",
     "RootsResult",
     "ResultantResult",
     # errors
@@ -477,6 +478,28 @@ def _rebuild_tangent(*args: Any) -> TangentResult:
     return TangentResult(*args)
 
 
+@_dataclass(frozen=True)
+class Referee:
+    """The stability of a natural answer (:attr:`NaturalResult.referee`),
+    in relative perturbation sizes: each quadric's point ``p``, axis ``a``
+    and parameter ``s`` (``radius2`` or ``tan2``) moving by at most
+    ``size·max|pᵢ|``, ``size·max|aᵢ|`` and ``size·|s|``.
+
+    ``lo`` is proved: every input within it has the same class and counts
+    (``0`` when nothing is proved, with :attr:`lo_reason`).  ``hi`` is
+    witnessed: :attr:`nearby` (two quadrics in the JSON object form, exact,
+    accepted by :func:`natural`) is exactly that far and its exact answer
+    is :attr:`nearby_answer` (``class``, ``conics``, ``lines``, ``points``),
+    which differs; ``None`` when no witness was found (:attr:`reason`)."""
+
+    lo: Fraction
+    hi: Optional[Fraction]
+    nearby: Optional[Tuple[Dict[str, Any], Dict[str, Any]]]
+    nearby_answer: Optional[Dict[str, Any]]
+    lo_reason: Optional[str]
+    reason: Optional[str]
+
+
 class NaturalResult:
     """The answer of :func:`natural`: the class of the intersection, the
     counts of real affine conics, lines and isolated points, and each
@@ -608,6 +631,32 @@ class NaturalResult:
     def method(self) -> str:
         """How the class was decided, in words."""
         return self._head[6]
+
+    @property
+    def referee(self) -> Optional["Referee"]:
+        """How far the input is from a different answer (asked for with
+        ``natural(a, b, referee=True)``; else ``None``): a :class:`Referee`.
+
+        >>> r = quadsect.natural("sphere center=0,0,0 radius2=1",
+        ...                      "sphere center=3/2,0,0 radius2=1", referee=True)
+        >>> f = r.referee
+        >>> 0 < f.lo < f.hi, f.nearby_answer["class"] != r.classification
+        (True, True)
+        >>> quadsect.natural(*f.nearby).classification == f.nearby_answer["class"]
+        True
+        """
+        j = self.to_json().get("referee")
+        if j is None:
+            return None
+        near = j["nearby"]
+        return Referee(
+            lo=_Fraction(j["lo_exact"]),
+            hi=None if j["hi_exact"] is None else _Fraction(j["hi_exact"]),
+            nearby=None if near is None else (near["a"], near["b"]),
+            nearby_answer=None if near is None else near["answer"],
+            lo_reason=j["lo_reason"],
+            reason=j["reason"],
+        )
 
     @property
     def notes(self) -> List[str]:
@@ -794,6 +843,7 @@ def natural(
     *,
     time_limit: Optional[float] = None,
     components: bool = True,
+    referee: bool = False,
 ) -> NaturalResult:
     """How two natural quadrics meet, exactly.
 
@@ -805,7 +855,9 @@ def natural(
     counts only (the fast route: same class and counts, much quicker).
     ``time_limit`` is in seconds as for :func:`tangent`; running out is an
     answer: ``classification == "undecided"`` with the
-    :attr:`~NaturalResult.reason`.
+    :attr:`~NaturalResult.reason`.  ``referee=True`` adds
+    :attr:`~NaturalResult.referee`: how far the input is from a different
+    answer (a :class:`Referee`).
 
     >>> r = quadsect.natural(Cylinder((0, 0, 0), (1, 0, 0), 1),
     ...                      "cylinder point=0,0,0 axis=0,1,0 radius2=1")
@@ -821,7 +873,7 @@ def natural(
     (2.0, True)
     """
     report, head = _quadsect.natural(
-        _natural_arg(a, "a"), _natural_arg(b, "b"), time_limit, components
+        _natural_arg(a, "a"), _natural_arg(b, "b"), time_limit, components, referee
     )
     return NaturalResult(report, head)
 

@@ -157,6 +157,7 @@ def natural(
     b: Union[NativeNatural, str],
     time_limit: Optional[float] = None,
     components: bool = True,
+    referee: bool = False,
 ) -> Tuple[NativeReport, _Head]: ...
 def roots(
     poly: str, time_limit: Optional[float] = None

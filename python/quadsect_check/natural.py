@@ -9,6 +9,8 @@ syntax) with their contract equations, negative inside:
 """
 
 
+from fractions import Fraction
+
 from . import poly as P
 from .exact import QS, CheckError, NotChecked, cross, dot, json_number, parse_point, parse_value, sqrt_rational
 
@@ -27,11 +29,9 @@ def _vec(v, float_mode, what):
     return [json_number(c.strip() if isinstance(c, str) else c, float_mode) for c in v]
 
 
-def quadric(spec, float_mode=False):
-    """The equation (a polynomial) of a natural quadric given as in the
-    request (a JSON object or the short syntax ``cone vertex=0,0,0
-    axis=1,0,0 tan2=1/3``), and its data ``(kind, point, axis, r2 or t2)``
-    (``None`` for a sphere)."""
+def _fields(spec):
+    """The kind and the fields of a quadric given as in the request (a JSON
+    object or the short syntax ``cone vertex=0,0,0 axis=1,0,0 tan2=1/3``)."""
     if isinstance(spec, str) and spec.strip().startswith("{"):
         import json
 
@@ -59,6 +59,14 @@ def quadric(spec, float_mode=False):
     extra = set(fields) - set(FIELDS[kind])
     if extra:
         raise CheckError(f"unknown field(s) {sorted(extra)} for a {kind}")
+    return kind, fields
+
+
+def quadric(spec, float_mode=False):
+    """The equation (a polynomial) of a natural quadric given as in the
+    request, and its data ``(kind, point, axis, r2 or t2)`` (``None`` for a
+    sphere)."""
+    kind, fields = _fields(spec)
     x = [P.var(i) for i in range(3)]
 
     def num(name):
@@ -308,6 +316,43 @@ def check_branch(b, eqs, what):
             raise CheckError(f"{what}: no real root along the ruling")
 
 
+def _numbers(spec, float_mode):
+    """A quadric's point, axis (zero for a sphere) and parameter (r2 or
+    tan²α), as the referee's metric moves them."""
+    _, data = quadric(spec, float_mode)
+    if data is not None:
+        return data
+    _, fields = _fields(spec)
+    return "sphere", _vec(fields["center"], float_mode, "center"), [0, 0, 0], json_number(fields["radius2"], float_mode)
+
+
+def _referee(req, ref, float_mode):
+    """The referee's witness is exactly ``hi`` away (each quadric's point,
+    axis and parameter moved by at most hi·max|pᵢ|, hi·max|aᵢ|, hi·|s|,
+    kinds kept) and ``lo < hi``; ``lo`` and the witness's answer are the
+    engine's (trusted)."""
+    trusted = ["referee: lo (the ball evaluation of the predicates)"]
+    near = ref.get("nearby")
+    if near is None:
+        return [], trusted
+    lo, hi = Fraction(ref["lo_exact"]), Fraction(ref["hi_exact"])
+    worst = Fraction(0)
+    for name in ("a", "b"):
+        k0, p0, a0, s0 = _numbers(req.get(name), float_mode)
+        k1, p1, a1, s1 = _numbers(near[name], False)
+        if k0 != k1:
+            raise CheckError(f"referee: the nearby {name} is a {k1}, not a {k0}")
+        for old, new, scale in ((p0, p1, max(map(abs, p0))), (a0, a1, max(map(abs, a0))), ([s0], [s1], abs(s0))):
+            for u, v in zip(old, new):
+                if u != v:
+                    if scale == 0:
+                        raise CheckError(f"referee: the nearby {name} moves a number that may not move")
+                    worst = max(worst, abs(Fraction(v) - Fraction(u)) / scale)
+    if worst != hi or not lo < hi:
+        raise CheckError(f"referee: the witness is {worst} away, not hi = {hi} (lo {lo})")
+    return ["referee: the nearby input is exactly hi away, lo < hi"], trusted + ["referee: the nearby input's answer"]
+
+
 def check_natural(req, res):
     float_mode = req.get("float", False) is True
     A, data_a = quadric(req.get("a"), float_mode)
@@ -315,6 +360,8 @@ def check_natural(req, res):
     eqs = [("a", A), ("b", B)]
     cls = res.get("class")
     checked, trusted = [], []
+    if isinstance(res.get("referee"), dict):
+        checked, trusted = _referee(req, res["referee"], float_mode)
     same = proportional(A, B)
     if cls == "undecided":
         return [], ["undecided: no claim"]

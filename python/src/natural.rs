@@ -161,13 +161,16 @@ impl<'a> Input<'a> {
     }
 }
 
-fn options(py: Python<'_>, time_limit: Option<f64>, components: bool) -> PyResult<ClassifyOptions> {
-    let options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
-    Ok(if components {
-        options
-    } else {
-        options.without_components()
-    })
+fn options(
+    py: Python<'_>,
+    time_limit: Option<f64>,
+    components: bool,
+    referee: bool,
+) -> PyResult<ClassifyOptions> {
+    let mut options = ClassifyOptions::with_budget(guard::budget(py, time_limit)?);
+    options.components = components;
+    options.referee = referee;
+    Ok(options)
 }
 
 /// What the result class reads at once: class, conics, lines, points
@@ -184,21 +187,23 @@ type Head = (
     Option<(&'static str, String)>,
 );
 
-/// natural(a, b, time_limit, components) -> (NativeReport, head)
+/// natural(a, b, time_limit, components, referee) -> (NativeReport, head)
 ///
 /// `a`, `b`: a `NativeNatural`, or text in the short syntax or the JSON
 /// object form; `components = false` asks for the class and counts only
-/// (the fast route).  `head` is [`NativeReport::head`].
+/// (the fast route); `referee = true` adds the stability interval (in the
+/// JSON).  `head` is [`NativeReport::head`].
 #[pyfunction]
-#[pyo3(signature = (a, b, time_limit = None, components = true))]
+#[pyo3(signature = (a, b, time_limit = None, components = true, referee = false))]
 pub(crate) fn natural(
     py: Python<'_>,
     a: NaturalArg<'_>,
     b: NaturalArg<'_>,
     time_limit: Option<f64>,
     components: bool,
+    referee: bool,
 ) -> PyResult<(NativeReport, Head)> {
-    let options = options(py, time_limit, components)?;
+    let options = options(py, time_limit, components, referee)?;
     let (ia, ib) = (Input::of(&a), Input::of(&b));
     let r = guard::run(py, || {
         let qa = ia.natural("in the first quadric")?;
@@ -226,7 +231,7 @@ pub(crate) fn _engine_time(
     components: bool,
     number: u32,
 ) -> PyResult<f64> {
-    let options = options(py, None, components)?;
+    let options = options(py, None, components, false)?;
     let (ia, ib) = (Input::of(&a), Input::of(&b));
     guard::run(py, || {
         let qa = ia.natural("in the first quadric")?;

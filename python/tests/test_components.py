@@ -308,3 +308,17 @@ def test_the_package_namespace_is_its_public_api():
     ns: dict = {}
     exec("from quadsect import *", ns)
     assert set(ns) - {"__builtins__"} == set(quadsect.__all__)
+
+
+def test_the_referee_witness_is_exact_and_differs():
+    r = quadsect.natural("sphere center=0,0,0 radius2=1", "sphere center=3/2,0,0 radius2=1",
+                         components=False, referee=True)
+    f = r.referee
+    assert isinstance(f, quadsect.Referee)
+    assert 0 < f.lo < f.hi and isinstance(f.lo, Fraction)
+    near = quadsect.natural(*f.nearby)
+    assert near.classification == f.nearby_answer["class"] != r.classification
+    # without the option there is none; a degenerate pair has lo = 0
+    assert quadsect.natural("sphere center=0,0,0 radius2=1", "sphere center=2,0,0 radius2=1").referee is None
+    t = quadsect.natural("sphere center=0,0,0 radius2=1", "sphere center=2,0,0 radius2=1", referee=True).referee
+    assert t.lo == 0 and t.lo_reason and t.hi < Fraction(1, 2**40)

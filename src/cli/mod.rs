@@ -119,6 +119,12 @@ enum Command {
         /// Class and counts only, by the fast route (no components).
         #[arg(long, overrides_with = "components")]
         no_components: bool,
+        /// Also referee the answer: the relative perturbation size `lo`
+        /// within which every input provably has the same class and counts,
+        /// and an exact nearby input at relative size `hi` whose answer
+        /// differs (README, "Refereeing a floating-point kernel").
+        #[arg(long)]
+        referee: bool,
         /// Read every decimal literal as the nearest double (round to nearest,
         /// ties to even).
         #[arg(long)]
@@ -374,6 +380,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             json,
             components: _,
             no_components,
+            referee,
             float,
             limits,
             svg,
@@ -391,6 +398,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                     a,
                     b,
                     components: !no_components,
+                    referee,
                 },
                 [svg, png],
             )?

@@ -95,6 +95,7 @@ pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalRepor
             route: None,
             exhausted: None,
             member_planes: Vec::new(),
+            referee: None,
         });
     }
     let (components, method): (Vec<Component>, &'static str) = match (a, b) {
@@ -190,6 +191,7 @@ pub(crate) fn classify_complete(a: &Natural, b: &Natural) -> Result<NaturalRepor
         route: None,
         exhausted: None,
         member_planes: Vec::new(),
+        referee: None,
     })
 }
 

@@ -22,6 +22,7 @@ pub(crate) mod numbers;
 pub(crate) mod planar;
 pub(crate) mod predicates;
 pub(crate) mod prepared;
+pub(crate) mod referee;
 pub(crate) mod result;
 pub(crate) mod tangency;
 pub(crate) mod topology;
@@ -36,6 +37,7 @@ pub use numbers::{EPoint, Exact, normalize_axis_direction, normalize_direction, 
 pub(crate) use predicates::{ClassifyOptions, classify_with};
 pub use predicates::{classify_counts, classify_prepared};
 pub use prepared::Prepared;
+pub use referee::{NearbyPair, Referee};
 pub(crate) use result::NaturalReport;
 pub use result::{
     Component, ConicKind, CurveBranch, PlanarDeciders, Plane, PointKind, SingularKind,

@@ -34,7 +34,7 @@ use super::result::{Class, Counts, NaturalReport, Route};
 use super::types::Natural;
 use crate::budget::Budget;
 use crate::error::Error;
-use crate::number::filter::{Ball, BallR, Ck, SignRing, all_zero, cross, dot, tiered};
+use crate::number::filter::{Ball, BallR, Ck, SignRing, all_of, all_zero, cross, dot, tiered};
 use num_bigint::BigInt;
 
 impl Counts {
@@ -277,7 +277,7 @@ pub(crate) fn det4<R: SignRing>(m: &M4<R>) -> R {
 /// principal minors (definite iff `D₁, D₂, …` are all positive, or
 /// alternate starting negative; a zero minor rules definiteness out).
 /// Also returns the sign of the last minor.
-fn definite4<R: SignRing>(m: &M4<R>) -> Option<(bool, i32)> {
+pub(crate) fn definite4<R: SignRing>(m: &M4<R>) -> Option<(bool, i32)> {
     let d4 = det4(m).sign()?;
     let s1 = m[0][0].sign()?;
     if s1 == 0 || d4 <= 0 {
@@ -1399,14 +1399,15 @@ fn same_surface<R: SignRing>(x: &QIn<R>, y: &QIn<R>) -> Option<bool> {
         return Some(false);
     }
     let d = point_difference(x, y);
-    let same_param = x.pn.mul(&y.pd).sub(&y.pn.mul(&x.pd)).sign()? == 0;
-    Some(match x.kind {
-        Kind::Sphere => same_param && all_zero(&d)?,
-        Kind::Cylinder => {
-            same_param && all_zero(&cross(&x.a, &y.a))? && all_zero(&cross(&d, &x.a))?
-        }
-        Kind::Cone => same_param && all_zero(&d)? && all_zero(&cross(&x.a, &y.a))?,
-    })
+    let same_param = || Some(x.pn.mul(&y.pd).sub(&y.pn.mul(&x.pd)).sign()? == 0);
+    let same_point = || all_zero(&d);
+    let parallel = || all_zero(&cross(&x.a, &y.a));
+    let on_axis = || all_zero(&cross(&d, &x.a));
+    match x.kind {
+        Kind::Sphere => all_of(&[&same_param, &same_point]),
+        Kind::Cylinder => all_of(&[&same_param, &parallel, &on_axis]),
+        Kind::Cone => all_of(&[&same_param, &same_point, &parallel]),
+    }
 }
 
 /// The whole fast program in one tier.
@@ -1512,6 +1513,11 @@ pub struct ClassifyOptions {
     /// route (milliseconds); `quadsect examples` uses it (the command line and
     /// batch do not offer it yet: their `deciders` and `section7` are null).
     pub deciders: bool,
+    /// Also referee the answer ([`NaturalReport::referee`]): the proved
+    /// relative size within which every input has the same class and
+    /// counts, and an exact nearby input with a different answer.  Off by
+    /// default (module `natural::referee`; tens of µs to a few ms).
+    pub referee: bool,
 }
 
 impl Default for ClassifyOptions {
@@ -1520,6 +1526,7 @@ impl Default for ClassifyOptions {
             components: true,
             budget: Budget::default(),
             deciders: false,
+            referee: false,
         }
     }
 }
@@ -1536,6 +1543,12 @@ impl ClassifyOptions {
     /// The same options, class and counts only (the fast route).
     pub fn without_components(mut self) -> ClassifyOptions {
         self.components = false;
+        self
+    }
+
+    /// The same options with the referee ([`ClassifyOptions::referee`]).
+    pub fn with_referee(mut self) -> ClassifyOptions {
+        self.referee = true;
         self
     }
 
@@ -1580,6 +1593,7 @@ pub fn classify_counts(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Erro
         route: Some(Route::Fast),
         exhausted: None,
         member_planes: Vec::new(),
+        referee: None,
     })
 }
 
@@ -1638,6 +1652,7 @@ pub fn classify_prepared(a: &Prepared, b: &Prepared) -> Result<NaturalReport, Er
         route: None,
         exhausted: None,
         member_planes,
+        referee: None,
     })
 }
 
@@ -1661,6 +1676,9 @@ pub fn classify_with(
         };
         if options.deciders {
             super::classify::add_reference_deciders(&mut r)?;
+        }
+        if options.referee && r.class != Class::Undecided {
+            r.referee = Some(super::referee::referee(a, b, &r.counts));
         }
         Ok(r)
     })

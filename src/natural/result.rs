@@ -284,6 +284,8 @@ pub struct NaturalReport {
     /// the intersection is the union of the plane sections, which a checker
     /// re-derives (contract §7).  Empty when the route has none.
     pub(crate) member_planes: Vec<Plane>,
+    /// The referee, when asked for ([`super::ClassifyOptions::referee`]).
+    pub(crate) referee: Option<super::referee::Referee>,
 }
 
 /// Which route answered a request for the class and counts only.
@@ -354,6 +356,13 @@ impl NaturalReport {
     /// The second quadric.
     pub fn b(&self) -> &Natural {
         &self.b
+    }
+
+    /// How far the input is from a different answer: asked for with
+    /// [`super::ClassifyOptions::with_referee`] (`None` otherwise, and for
+    /// an undecided answer).
+    pub fn referee(&self) -> Option<&super::referee::Referee> {
+        self.referee.as_ref()
     }
 
     /// The class.
@@ -447,6 +456,7 @@ impl NaturalReport {
             route: None,
             exhausted: Some(e),
             member_planes: Vec::new(),
+            referee: None,
         }
     }
 

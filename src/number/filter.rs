@@ -312,14 +312,35 @@ pub(crate) fn cross<R: SignRing>(x: &[R; 3], y: &[R; 3]) -> [R; 3] {
     ]
 }
 
-/// True when every component is zero (`None`: undecided).
+/// True when every component is zero (`None`: undecided).  One component
+/// certainly non-zero answers `false` even when another is undecided (the
+/// referee's balls need that: a conjunction is as decided as its
+/// decided-false part).
 pub(crate) fn all_zero<R: SignRing>(x: &[R]) -> Option<bool> {
+    let mut unknown = false;
     for c in x {
-        if c.sign()? != 0 {
-            return Some(false);
+        match c.sign() {
+            Some(0) => {}
+            Some(_) => return Some(false),
+            None => unknown = true,
         }
     }
-    Some(true)
+    (!unknown).then_some(true)
+}
+
+/// The conjunction of lazily evaluated, possibly undecided terms: `false`
+/// as soon as one term is certainly false, `true` when all are certainly
+/// true, else undecided.
+pub(crate) fn all_of(terms: &[&dyn Fn() -> Option<bool>]) -> Option<bool> {
+    let mut unknown = false;
+    for t in terms {
+        match t() {
+            Some(true) => {}
+            Some(false) => return Some(false),
+            None => unknown = true,
+        }
+    }
+    (!unknown).then_some(true)
 }
 
 /// Runs an integer-valued program in the three tiers in turn: the filter,

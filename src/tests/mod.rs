@@ -35,5 +35,6 @@ mod natural;
 mod natural_whole;
 mod nonreduced;
 mod printing;
+mod referee;
 mod square_subsystem;
 mod tangent;

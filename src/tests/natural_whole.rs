@@ -207,7 +207,7 @@ fn bounds_hold(components: &[Component]) -> Result<usize, String> {
 /// One surface from a small code: kinds and parameters drawn from small
 /// ranges so that coincidences (common vertices, tangencies, parallel or
 /// intersecting axes, equal radii) are frequent.
-fn surface(kind: u8, p: (i64, i64, i64), a: (i64, i64, i64), k: i64) -> String {
+pub(crate) fn surface(kind: u8, p: (i64, i64, i64), a: (i64, i64, i64), k: i64) -> String {
     let a = if a == (0, 0, 0) { (0, 0, 1) } else { a };
     match kind {
         0 => format!("sphere center={},{},{} radius2={}", p.0, p.1, p.2, k),

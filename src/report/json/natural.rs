@@ -3,6 +3,7 @@
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
 use crate::natural::numbers::{EPoint, Exact, normalize_axis_direction, normalize_plane};
+use crate::natural::referee::{Referee, decimal_bound};
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Plane, Route};
 use crate::natural::tangency::Section7;
 use crate::number::fmt_q;
@@ -244,6 +245,9 @@ pub(crate) fn write_natural(r: &NaturalReport, out: &mut Vec<u8>) {
         .field("thm8", r.thm8);
     if r.route == Some(Route::Fast) {
         obj.field("method", r.method).field("route", "fast");
+        if let Some(f) = &r.referee {
+            obj.field("referee", referee_w(f));
+        }
         return obj.end();
     }
     obj.field(
@@ -267,7 +271,39 @@ pub(crate) fn write_natural(r: &NaturalReport, out: &mut Vec<u8>) {
     if let Some(Route::Complete(why)) = r.route {
         obj.field("route", "complete").field("fallback", why);
     }
+    if let Some(f) = &r.referee {
+        obj.field("referee", referee_w(f));
+    }
     obj.end()
+}
+
+/// The referee (contract §4b): `lo`/`hi` as decimals rounded inward
+/// (three digits, `lo` down, `hi` up) and exactly, the nearby input and
+/// its answer, and the reasons when `lo` is 0 or `hi` is absent.
+fn referee_w(f: &Referee) -> impl Json + '_ {
+    W(move |out: &mut Vec<u8>| {
+        let nearby = f.nearby.as_ref().map(|n| {
+            obj_w! {
+                "a" => natural_input_w(&n.a),
+                "b" => natural_input_w(&n.b),
+                "answer" => obj_w! {
+                    "class" => n.counts.class.as_str(),
+                    "conics" => n.counts.conics,
+                    "lines" => n.counts.lines,
+                    "points" => n.counts.points
+                }
+            }
+        });
+        wobj!(out;
+            "lo" => decimal_bound(&f.lo, false),
+            "hi" => f.hi.as_ref().map(|h| decimal_bound(h, true)),
+            "lo_exact" => fmt_q(&f.lo),
+            "hi_exact" => f.hi.as_ref().map(fmt_q),
+            "nearby" => nearby,
+            "lo_reason" => f.lo_reason,
+            "reason" => f.hi_reason,
+        )
+    })
 }
 
 /// A plane `{"normal", "offset"}` (normal·P = offset), exact, normalized

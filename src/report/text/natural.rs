@@ -185,6 +185,40 @@ pub fn natural_human(r: &NaturalReport) -> String {
         Some(Route::Complete(why)) => s.push_str(&format!("route     complete ({why})\n")),
         None => {}
     }
+    if let Some(f) = &r.referee {
+        s.push_str(&referee_human(f));
+    }
+    s
+}
+
+/// The referee's lines of the human summary.
+fn referee_human(f: &crate::natural::Referee) -> String {
+    use crate::natural::referee::decimal_bound;
+    let mut s = format!(
+        "referee   lo {} (proved: every input within this relative size has the same answer)\n",
+        decimal_bound(&f.lo, false)
+    );
+    if let Some(why) = f.lo_reason {
+        s.push_str(&format!("          lo is 0: {why}\n"));
+    }
+    match (&f.hi, &f.nearby) {
+        (Some(h), Some(n)) => {
+            s.push_str(&format!(
+                "          hi {} (witnessed: this input, that far, is {} — {} conic(s), {} line(s), {} point(s))\n",
+                decimal_bound(h, true),
+                n.counts.class.as_str(),
+                n.counts.conics,
+                n.counts.lines,
+                n.counts.points
+            ));
+            s.push_str(&format!("          nearby A  {}\n", n.a));
+            s.push_str(&format!("          nearby B  {}\n", n.b));
+        }
+        _ => s.push_str(&format!(
+            "          hi none: {}\n",
+            f.hi_reason.unwrap_or("no witness")
+        )),
+    }
     s
 }
 
