@@ -7,7 +7,11 @@ thread, and how tight it is (hi/lo) by input group.
         [--pairs benches/data/natural_pairs.json] [--repeat 5]
 
 Prints markdown (docs/BENCHMARKS.md, "The referee").  Needs only the
-quadsect binary.
+quadsect binary; with `--occ` (run with a Python that has quadsect and its
+`occ` extra, e.g. `.venv-pytest/bin/python`) also Open CASCADE's
+IntPatch_ImpImpIntersection on every pair (quadsect.occ's worker, 10 s per
+call) and, on the pairs where its answer is wrong, the stability interval
+and whether its answer is the witness's.
 """
 import argparse
 import collections
@@ -30,6 +34,7 @@ def main():
     ap.add_argument("--quadsect", default="./target/release/quadsect")
     ap.add_argument("--pairs", default="benches/data/natural_pairs.json")
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--occ", action="store_true")
     args = ap.parse_args()
     pairs = json.load(open(args.pairs))["pairs"]
     tmp = tempfile.mkdtemp()
@@ -79,6 +84,63 @@ def main():
     allr.sort()
     med = f"{allr[len(allr) // 2]:.3g}" if allr else "–"
     print(f"| all | {tot['pairs']} | {tot['lo = 0']} | {tot['witness']} | {len(allr)} | {sum(x <= 10 for x in allr)} | {med} |")
+    if args.occ:
+        occ_table(pairs, out)
+
+
+def gp_params(s):
+    """quadsect.occ's picklable parameters of a pair's surface, as
+    scripts/bench_occ.py builds it (doubles nearest to the exact data)."""
+    import math
+
+    def vec(v):
+        return tuple(float(Fraction(x)) for x in v)
+
+    def fsqrt(q):
+        import decimal
+        with decimal.localcontext() as ctx:
+            ctx.prec = 40
+            return float((decimal.Decimal(q.numerator) / decimal.Decimal(q.denominator)).sqrt())
+
+    if s["kind"] == "sphere":
+        return ("sphere", vec(s["center"]), (0.0, 0.0, 1.0), fsqrt(Fraction(s["radius2"])))
+    if s["kind"] == "cylinder":
+        return ("cylinder", vec(s["point"]), vec(s["axis"]), fsqrt(Fraction(s["radius2"])))
+    return ("cone", vec(s["vertex"]), vec(s["axis"]), math.atan(fsqrt(Fraction(s["tan2"]))), 0.0)
+
+
+def occ_table(pairs, out):
+    from quadsect import occ
+
+    answers = {json.loads(line)["id"]: json.loads(line)["result"] for line in out.splitlines()[: len(pairs)]}
+    worker = occ._IntPatchWorker(10.0)
+    wrong = []
+    try:
+        for p in pairs:
+            try:
+                theirs = worker(gp_params(p["a"]), gp_params(p["b"]))
+            except Exception as err:  # a null direction: gp_ refuses it
+                theirs = {"no_answer": str(err)}
+            mine = answers[p["name"]]
+            exact = {k: mine[k] for k in ("class", "conics", "lines", "points")}
+            if not occ._same(exact, theirs):
+                wrong.append((p["name"], exact, theirs, mine["referee"]))
+    finally:
+        worker.close()
+    small = [w for w in wrong if w[3]["hi_exact"] is not None and Fraction(w[3]["hi_exact"]) <= Fraction(1, 10**6)]
+    explained = [w for w in small if "no_answer" not in w[2] and occ._same(w[3]["nearby"]["answer"], w[2])]
+    print(f"\nIntPatch_ImpImpIntersection wrong (or no answer) on {len(wrong)} of {len(pairs)} pairs; "
+          f"hi ≤ 1e-6 on {len(small)} of them ({100 * len(small) / max(1, len(wrong)):.0f}%), "
+          f"and IntPatch's answer is the witness's on {len(explained)}.\n")
+    print("| pair | exact | IntPatch | lo | hi | witness's answer |")
+    print("|---|---|---|---|---|---|")
+
+    def ans(a):
+        return a.get("no_answer", "no answer") if "no_answer" in a else f"{a['class']} {a['conics']}/{a['lines']}/{a['points']}"
+
+    for name, exact, theirs, f in wrong:
+        near = ans(f["nearby"]["answer"]) if f["nearby"] else "–"
+        print(f"| {name} | {ans(exact)} | {ans(theirs)} | {f['lo']} | {f['hi'] or '–'} | {near} |")
 
 
 if __name__ == "__main__":

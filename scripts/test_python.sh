@@ -37,11 +37,13 @@ wheel=$(ls "$root"/target/wheels/quadsect-*-cp39-abi3-*.whl)
 echo "   built $(basename "$wheel")"
 lap
 
-echo "== pip install './python[dask,test]'"
+echo "== pip install './python[dask,test,occ]'"
 # --force-reinstall --no-deps first: a rebuilt wheel of the same version
 # must replace the installed one; then the extras' dependencies
 "$venv/bin/python" -m pip install --quiet --force-reinstall --no-deps ./python
-"$venv/bin/python" -m pip install --quiet './python[dask,test]'
+"$venv/bin/python" -m pip install --quiet './python[dask,test,occ]'
+# the quadsect.occ tests must run, not skip, here
+export QUADSECT_REQUIRE_OCC=1
 lap
 
 echo "== pytest python/tests"

@@ -483,7 +483,9 @@ class Referee:
     """The stability of a natural answer (:attr:`NaturalResult.referee`),
     in relative perturbation sizes: each quadric's point ``p``, axis ``a``
     and parameter ``s`` (``radius2`` or ``tan2``) moving by at most
-    ``size·max|pᵢ|``, ``size·max|aᵢ|`` and ``size·|s|``.
+    ``size·L``, ``size·max|aᵢ|`` and ``size·|s|`` per coordinate, ``L`` the
+    scene's length (the points' ``max|pᵢ|``, the spheres' and cylinders'
+    radii rounded up to powers of two).
 
     ``lo`` is proved: every input within it has the same class and counts
     (``0`` when nothing is proved, with :attr:`lo_reason`).  ``hi`` is

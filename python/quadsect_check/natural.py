@@ -326,23 +326,37 @@ def _numbers(spec, float_mode):
     return "sphere", _vec(fields["center"], float_mode, "center"), [0, 0, 0], json_number(fields["radius2"], float_mode)
 
 
+def _radius_bound(r2):
+    """The least power of two at or above √r2."""
+    k = (r2.numerator.bit_length() - r2.denominator.bit_length()) // 2 - 1
+    while Fraction(2) ** (2 * k) < r2:
+        k += 1
+    return Fraction(2) ** k
+
+
 def _referee(req, ref, float_mode):
     """The referee's witness is exactly ``hi`` away (each quadric's point,
-    axis and parameter moved by at most hi·max|pᵢ|, hi·max|aᵢ|, hi·|s|,
-    kinds kept) and ``lo < hi``; ``lo`` and the witness's answer are the
-    engine's (trusted)."""
+    axis and parameter moved by at most hi·L, hi·max|aᵢ|, hi·|s|, kinds
+    kept; L the larger of the points' max|pᵢ| and the spheres' and
+    cylinders' radii rounded up to powers of two) and ``lo < hi``; ``lo``
+    and the witness's answer are the engine's (trusted)."""
     trusted = ["referee: lo (the ball evaluation of the predicates)"]
     near = ref.get("nearby")
     if near is None:
         return [], trusted
     lo, hi = Fraction(ref["lo_exact"]), Fraction(ref["hi_exact"])
+    given = {name: _numbers(req.get(name), float_mode) for name in ("a", "b")}
+    length = max(max(map(abs, q[1])) for q in given.values())
+    for k, _, _, s in given.values():
+        if k != "cone":
+            length = max(length, _radius_bound(s))
     worst = Fraction(0)
     for name in ("a", "b"):
-        k0, p0, a0, s0 = _numbers(req.get(name), float_mode)
+        k0, p0, a0, s0 = given[name]
         k1, p1, a1, s1 = _numbers(near[name], False)
         if k0 != k1:
             raise CheckError(f"referee: the nearby {name} is a {k1}, not a {k0}")
-        for old, new, scale in ((p0, p1, max(map(abs, p0))), (a0, a1, max(map(abs, a0))), ([s0], [s1], abs(s0))):
+        for old, new, scale in ((p0, p1, length), (a0, a1, max(map(abs, a0))), ([s0], [s1], abs(s0))):
             for u, v in zip(old, new):
                 if u != v:
                     if scale == 0:

@@ -25,21 +25,30 @@
 //!   in the direction that shrinks `|P|`).  Inputs a little beyond
 //!   (`1.25t`, `2t`, `4t`, sorted by size) are classified exactly; the first
 //!   whose answer differs is the witness.  Failing those, a few fixed
-//!   pseudo-random directions at sizes growing by 4 from `1.25·lo`.  No
-//!   witness up to relative size 1/2: `hi` is absent, with the reason.
+//!   pseudo-random directions at sizes growing by 16 from `1.25·lo` (first,
+//!   by size, when nothing is proved).  The exact degenerate configurations
+//!   next to the input (axes made parallel, coaxial or meeting, a common
+//!   vertex, equal parameters: [`Scene::snaps`]) compete, and a witness on
+//!   a ray is bisected toward the input.  No witness up to relative size
+//!   1/2: `hi` is absent, with the reason.
 //!
 //! **The metric.**  For each quadric, its point (centre, axis point or
 //! vertex) `p`, its axis `a` and its parameter `s` (`r2` or `tan²α`, as
 //! stored): an input is within relative distance `ε` when
-//! `‖p' − p‖∞ ≤ ε‖p‖∞`, `‖a' − a‖∞ ≤ ε‖a‖∞` and `|s' − s| ≤ ε|s|`, kinds
-//! unchanged.  A point at the origin stays there; the components of a
-//! vector move relative to the vector's size, so a rounding of each
-//! coordinate of a point or a direction to a double is within `2^-53`.
+//! `‖p' − p‖∞ ≤ ε·L`, `‖a' − a‖∞ ≤ ε‖a‖∞` and `|s' − s| ≤ ε|s|`, kinds
+//! unchanged, where `L` is the scene's length: the larger of the two
+//! points' `‖p‖∞` and, for each sphere or cylinder, the least power of two
+//! at or above its radius.  The components of a vector move relative to a
+//! size, so a rounding of each coordinate of a point or a direction to a
+//! double is within `2^-53`; a point near the origin is not held there
+//! (a feature 10⁻⁹ off the origin in a scene of size 1 is 10⁻⁹ away from
+//! the origin, not 100 %).
 
 use super::predicates::{Outcome, classify_counts, definite4, matrix, member, program};
 use super::prepared::{Kind, Prepared, QIn};
 use super::result::{Class, Counts};
 use super::types::{Cone, Cylinder, Natural, Sphere};
+use crate::geom::vec3::{V3, add, cross, dot, is_zero, norm2, scale, sub};
 use crate::number::Q;
 use crate::number::filter::{BallR, SignRing};
 use num_bigint::BigInt;
@@ -55,11 +64,13 @@ const GRID_LAST: u32 = 400;
 /// The largest perturbation a witness is looked for at.
 const HI_MAX: f64 = 0.5;
 /// Exact classifications tried along the derivatives' directions.
-const GRADIENT_TRIALS: usize = 12;
+const GRADIENT_TRIALS: usize = 8;
 /// Exact classifications tried along fixed pseudo-random directions.
-const RANDOM_TRIALS: usize = 24;
-/// The witness size tried first for an exactly degenerate input.
-const DEGENERATE_STEP: f64 = 1.0 / 18_446_744_073_709_551_616.0; // 2^-64
+const RANDOM_TRIALS: usize = 12;
+/// The witness size tried first for an exactly degenerate input: any
+/// size works there; a smaller one only makes the nearby numbers longer
+/// and their exact classification slower.
+const DEGENERATE_STEP: f64 = 1.0 / 1_099_511_627_776.0; // 2^-40
 
 /// The stability of a natural pair's answer ([`super::NaturalReport::referee`]).
 ///
@@ -169,6 +180,23 @@ struct Scene {
     wup: [f64; N],
 }
 
+/// The least power of two at or above `√r2` (`r2 > 0`), exactly.
+fn radius_bound(r2: &Q) -> Q {
+    let mut k = lg(r2).div_euclid(2) - 1;
+    let pow = |k: i64| -> Q {
+        let one = BigInt::one();
+        if k >= 0 {
+            Q::from_integer(one << k as usize)
+        } else {
+            Q::new(one.clone(), one << (-k) as usize)
+        }
+    };
+    while &(pow(k) * pow(k)) < r2 {
+        k += 1;
+    }
+    pow(k)
+}
+
 /// `⌊log₂|x|⌋` within one (`x ≠ 0`).
 fn lg(x: &Q) -> i64 {
     x.numer().bits() as i64 - x.denom().bits() as i64
@@ -242,12 +270,20 @@ impl Scene {
         let mut x: [Q; N] = std::array::from_fn(|_| Q::zero());
         let mut w: [Q; N] = std::array::from_fn(|_| Q::zero());
         let norm = |v: &[Q; 3]| v.iter().map(|c| c.abs()).max().unwrap_or_else(Q::zero);
+        // the scene's length: the points' size and each radius (as the
+        // power of two at or above it: exact)
+        let mut size = norm(&pa.1).max(norm(&pb.1));
+        for (k, _, _, s) in [&pa, &pb] {
+            if *k != Kind::Cone {
+                size = size.max(radius_bound(s));
+            }
+        }
         for (q, (_, p, ax, s)) in [pa, pb].into_iter().enumerate() {
             let base = q * PER;
-            let (np, na) = (norm(&p), norm(&ax));
+            let na = norm(&ax);
             for k in 0..3 {
                 x[base + k] = p[k].clone();
-                w[base + k] = np.clone();
+                w[base + k] = size.clone();
                 x[base + 3 + k] = ax[k].clone();
                 w[base + 3 + k] = na.clone();
             }
@@ -286,16 +322,18 @@ impl Scene {
             (m[base + 6], r0[base + 6]) = ball_of(&x[base + 6], ks);
         }
         let mut wup = [0.0; N];
+        let (sm, sr) = ball_of(&w[0], kp);
         for q in 0..2 {
             let base = q * PER;
-            for off in [0, 3] {
-                let up = (0..3)
-                    .map(|k| m[base + off + k].abs() + r0[base + off + k])
-                    .fold(0.0, f64::max);
-                for k in 0..3 {
-                    if !w[base + off + k].is_zero() {
-                        wup[base + off + k] = up * INFL;
-                    }
+            for k in 0..3 {
+                wup[base + k] = (sm.abs() + sr) * INFL;
+            }
+            let up = (0..3)
+                .map(|k| m[base + 3 + k].abs() + r0[base + 3 + k])
+                .fold(0.0, f64::max);
+            for k in 0..3 {
+                if !w[base + 3 + k].is_zero() {
+                    wup[base + 3 + k] = up * INFL;
                 }
             }
             wup[base + 6] = (m[base + 6].abs() + r0[base + 6]) * INFL;
@@ -421,6 +459,113 @@ impl Scene {
             0 => self.x[i].clone(),
             d => &self.x[i] + size * &self.w[i] * Q::from_integer(BigInt::from(d)),
         });
+        self.pair_of(&y)
+    }
+
+    /// The exact relative distance of the numbers `y` from the input
+    /// (`None`: a number that may not move moved).
+    fn distance_to(&self, y: &[Q; N]) -> Option<Q> {
+        let mut worst = Q::zero();
+        for i in 0..N {
+            let dx = (&y[i] - &self.x[i]).abs();
+            if self.w[i].is_zero() {
+                if !dx.is_zero() {
+                    return None;
+                }
+            } else {
+                worst = worst.max(dx / &self.w[i]);
+            }
+        }
+        Some(worst)
+    }
+
+    /// [`Scene::distance_to`] in doubles (for ordering candidates only).
+    fn distance_estimate(&self, y: &[Q; N]) -> Option<f64> {
+        let mut worst = 0.0f64;
+        for i in 0..N {
+            if y[i] == self.x[i] {
+                continue;
+            }
+            let w = self.w[i].to_f64().filter(|w| *w > 0.0)?;
+            let dx = (&y[i] - &self.x[i]).to_f64()?.abs();
+            worst = worst.max(dx / w);
+        }
+        Some(worst)
+    }
+
+    /// Exact degenerate configurations next to the input, built by moving
+    /// one quadric: its axis parallel to the other's (the same length),
+    /// then its point onto the other's axis (coaxial); its axis moved
+    /// along the common normal until the axes meet; a cone's vertex onto
+    /// the other cone's; its parameter equal to the other's (same kind),
+    /// alone and with the axes made coaxial; a sphere's centre onto the
+    /// other's axis, or that axis through the centre.  A modeller's
+    /// design intent is usually one of these, one rounding away.
+    fn snaps(&self) -> Vec<[Q; N]> {
+        let v = |x: &[Q; N], b: usize| -> V3 { [x[b].clone(), x[b + 1].clone(), x[b + 2].clone()] };
+        let inf = |u: &V3| u.iter().map(|c| c.abs()).max().unwrap_or_else(Q::zero);
+        // the foot of x on the line (p, a)
+        let foot = |x: &V3, p: &V3, a: &V3| add(p, &scale(a, &(dot(&sub(x, p), a) / norm2(a))));
+        let mut out = Vec::new();
+        for q in 0..2 {
+            let (bq, bo) = (q * PER, (1 - q) * PER);
+            let (kq, ko) = (self.kinds[q], self.kinds[1 - q]);
+            let (pq, aq, po, ao) = (
+                v(&self.x, bq),
+                v(&self.x, bq + 3),
+                v(&self.x, bo),
+                v(&self.x, bo + 3),
+            );
+            let with = |changes: &[(usize, &V3)], param: bool| -> [Q; N] {
+                let mut y = self.x.clone();
+                for (off, u) in changes {
+                    for k in 0..3 {
+                        y[bq + off + k] = u[k].clone();
+                    }
+                }
+                if param {
+                    y[bq + 6] = self.x[bo + 6].clone();
+                }
+                y
+            };
+            match (kq, ko) {
+                (Kind::Sphere, Kind::Sphere) => {}
+                (Kind::Sphere, _) => out.push(with(&[(0, &foot(&pq, &po, &ao))], false)),
+                (_, Kind::Sphere) => {
+                    let shift = sub(&po, &foot(&po, &pq, &aq));
+                    out.push(with(&[(0, &add(&pq, &shift))], false));
+                }
+                _ => {
+                    let mut k = inf(&aq) / inf(&ao);
+                    if dot(&aq, &ao).is_negative() {
+                        k = -k;
+                    }
+                    let par = scale(&ao, &k);
+                    let on_axis = foot(&pq, &po, &ao);
+                    out.push(with(&[(3, &par)], false));
+                    out.push(with(&[(3, &par), (0, &on_axis)], false));
+                    let n = cross(&aq, &ao);
+                    if !is_zero(&n) {
+                        let off = scale(&n, &(dot(&sub(&pq, &po), &n) / norm2(&n)));
+                        out.push(with(&[(0, &sub(&pq, &off))], false));
+                    }
+                    if kq == Kind::Cone && ko == Kind::Cone {
+                        out.push(with(&[(0, &po)], false));
+                        out.push(with(&[(0, &po), (3, &par)], false));
+                    }
+                    if kq == ko {
+                        out.push(with(&[], true));
+                        out.push(with(&[(3, &par), (0, &on_axis)], true));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The pair of the numbers `y`, or `None` when they are not a valid
+    /// pair.
+    fn pair_of(&self, y: &[Q; N]) -> Option<(Natural, Natural)> {
         let one = |q: usize| -> Option<Natural> {
             let b = q * PER;
             let p = [y[b].clone(), y[b + 1].clone(), y[b + 2].clone()];
@@ -706,7 +851,7 @@ pub(crate) fn referee(a: &Natural, b: &Natural, target: &Counts) -> Referee {
     // hi: candidates from the path's signs at lo, then fixed directions
     let movable: [bool; N] = std::array::from_fn(|i| !scene.w[i].is_zero());
     let mut trials: Vec<(f64, [i8; N])> = Vec::new();
-    for (m, g, _) in trace(&scene, lo_f) {
+    for (m, g, sign) in trace(&scene, lo_f) {
         let slope: f64 = (0..N).map(|i| g[i].abs() * scene.wup[i]).sum();
         if !(slope > 0.0 && slope.is_finite() && m.is_finite()) {
             continue;
@@ -722,11 +867,18 @@ pub(crate) fn referee(a: &Natural, b: &Natural, target: &Counts) -> Referee {
             }
         });
         let away: [i8; N] = std::array::from_fn(|i| -toward[i]);
-        let base = if t > 0.0 { t } else { DEGENERATE_STEP };
+        // an undecided sign (its midpoint is rounding noise) or a zero:
+        // both ways, at a size of its own
+        let unknown = m == 0.0 || sign.is_none();
+        let base = if t > 0.0 && !unknown {
+            t
+        } else {
+            t.max(DEGENERATE_STEP)
+        };
         for f in [1.25, 2.0, 4.0] {
             let size = (f * base).max(f * lo_f);
             trials.push((size, toward));
-            if m == 0.0 {
+            if unknown {
                 trials.push((size, away));
             }
         }
@@ -747,9 +899,14 @@ pub(crate) fn referee(a: &Natural, b: &Natural, target: &Counts) -> Referee {
                 std::array::from_fn(|i| if movable[i] { d[i] } else { 0 }),
             ));
         }
-        size *= 4.0;
+        size *= 16.0;
     }
     trials.extend(random);
+    // nothing proved: the input may sit on the boundary, where any small
+    // move may change the answer — the small fixed directions first
+    if lo_j.is_none() {
+        trials.sort_by(|p, q| p.0.total_cmp(&q.0));
+    }
 
     // the exact answer at size t along dir, when it differs
     let differs = |t: &Q, dir: &[i8; N]| -> Option<NearbyPair> {
@@ -776,9 +933,53 @@ pub(crate) fn referee(a: &Natural, b: &Natural, target: &Counts) -> Referee {
             break;
         }
     }
+    // the exact degenerate configurations next to the input: a closer
+    // witness than the first-order search finds when the boundary is of
+    // higher codimension (coaxial: all of a cross product and an offset)
+    // (ordered by a double estimate of their distance: the exact one, a
+    // maximum of quotients of long rationals, only for the one kept)
+    let mut snapped: Vec<(f64, [Q; N])> = scene
+        .snaps()
+        .into_iter()
+        .filter_map(|y| {
+            let d = scene.distance_estimate(&y)?;
+            (d > lo_f && d <= HI_MAX).then_some((d, y))
+        })
+        .collect();
+    snapped.sort_by(|p, q| p.0.total_cmp(&q.0));
+    let mut snap_witness = None;
+    for (d, y) in snapped {
+        if witness
+            .as_ref()
+            .is_some_and(|(t, ..)| t.to_f64().is_some_and(|t| t < d * 0.5))
+        {
+            break;
+        }
+        crate::budget::check_now();
+        let Some((na, nb)) = scene.pair_of(&y) else {
+            continue;
+        };
+        let Some(d) = scene.distance_to(&y) else {
+            continue;
+        };
+        if let Ok(r) = classify_counts(&Prepared::new(&na), &Prepared::new(&nb))
+            && r.counts != *target
+            && r.counts.class != Class::Undecided
+        {
+            snap_witness = Some((
+                d,
+                NearbyPair {
+                    a: na,
+                    b: nb,
+                    counts: r.counts,
+                },
+            ));
+            break;
+        }
+    }
     // a closer witness on the same ray: bisection over the grid between
     // lo (or t/64) and t (every candidate checked exactly)
-    if let Some((t, _, dir)) = &witness {
+    if let Some((t, _, dir)) = witness.as_ref().filter(|_| lo_j.is_some()) {
         let tf = t.to_f64().unwrap_or(HI_MAX);
         let mut far = (0..=GRID_LAST).find(|&j| grid(j) < tf);
         let near_floor = (tf / 64.0).max(lo_f);
@@ -807,9 +1008,15 @@ pub(crate) fn referee(a: &Natural, b: &Natural, target: &Counts) -> Referee {
     }
     // lo again by the mean-value form, between the balls' lo and the
     // witness (nothing at or beyond hi can be proved): bisection
+    let mut witness = witness.map(|(t, n, _)| (t, n));
+    if let Some((d, n)) = snap_witness
+        && witness.as_ref().is_none_or(|(t, _)| d < *t)
+    {
+        witness = Some((d, n));
+    }
     let top = witness
         .as_ref()
-        .and_then(|(t, ..)| t.to_f64())
+        .and_then(|(t, _)| t.to_f64())
         .unwrap_or(HI_MAX * 2.0);
     // the largest grid size in (lower, top) where `proves` holds, given
     // that it holds at grid step `lower` (bisection)
@@ -844,7 +1051,7 @@ pub(crate) fn referee(a: &Natural, b: &Natural, target: &Counts) -> Referee {
     }
     let lo = lo_j.map_or_else(Q::zero, |j| Q::from_float(grid(j)).unwrap_or_else(Q::zero));
     let (hi, nearby, hi_reason) = match witness {
-        Some((t, n, _)) => (Some(t), Some(n), None),
+        Some((t, n)) => (Some(t), Some(n), None),
         None => (
             None,
             None,
@@ -888,18 +1095,7 @@ pub(crate) fn distance(a: &Natural, b: &Natural, c: &Natural, d: &Natural) -> Op
     if s.kinds != t.kinds {
         return None;
     }
-    let mut worst = Q::zero();
-    for i in 0..N {
-        let dx = (&t.x[i] - &s.x[i]).abs();
-        if s.w[i].is_zero() {
-            if !dx.is_zero() {
-                return None;
-            }
-        } else {
-            worst = worst.max(dx / &s.w[i]);
-        }
-    }
-    Some(worst)
+    s.distance_to(&t.x)
 }
 
 /// `x > 0` as a decimal of three significant digits rounded down
@@ -996,7 +1192,7 @@ mod tests {
             assert!(f.lo_reason().is_some());
             check_witness(a, b, &c, &f);
             assert!(
-                f.hi().unwrap() < &Q::new(1.into(), BigInt::from(1u64 << 40)),
+                f.hi().unwrap() < &Q::new(1.into(), BigInt::from(1u64 << 30)),
                 "{}",
                 f.hi().unwrap()
             );
