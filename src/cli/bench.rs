@@ -555,6 +555,7 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
         ),
     ];
     let no_components = crate::natural::ClassifyOptions::default().without_components();
+    let refereed = no_components.clone().with_referee();
     for (id, a, b) in families {
         let (a, b) = (parse_natural(a)?, parse_natural(b)?);
         let (m, n) = measure(|| {
@@ -564,6 +565,17 @@ pub fn natural_suite(rows: &mut Vec<Row>) -> Result<(), Error> {
             suite: "natural",
             id: format!("classify_fast_{id}"),
             desc: "fast route: class and counts, no components".into(),
+            median: m,
+            samples: n,
+            extra: Default::default(),
+        });
+        let (m, n) = measure(|| {
+            black_box(crate::natural::classify_with(&a, &b, &refereed).ok());
+        });
+        rows.push(Row {
+            suite: "natural",
+            id: format!("referee_{id}"),
+            desc: "class and counts with the referee (lo proved, hi witnessed)".into(),
             median: m,
             samples: n,
             extra: Default::default(),

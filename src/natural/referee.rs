@@ -25,8 +25,9 @@
 //!   in the direction that shrinks `|P|`).  Inputs a little beyond
 //!   (`1.25t`, `2t`, `4t`, sorted by size) are classified exactly; the first
 //!   whose answer differs is the witness.  Failing those, a few fixed
-//!   pseudo-random directions at sizes growing by 16 from `1.25·lo` (first,
-//!   by size, when nothing is proved).  The exact degenerate configurations
+//!   pseudo-random directions at sizes growing by 16 from `1.25·lo`, and
+//!   the quadrics pushed together or apart ([`Scene::approach`]) at sizes
+//!   growing by 4 (all by size when nothing is proved).  The exact degenerate configurations
 //!   next to the input (axes made parallel, coaxial or meeting, a common
 //!   vertex, equal parameters: [`Scene::snaps`]) compete, and a witness on
 //!   a ray is bisected toward the input.  No witness up to relative size
@@ -493,6 +494,25 @@ impl Scene {
         Some(worst)
     }
 
+    /// The direction moving the two points toward each other (`sign` 1;
+    /// apart for −1) coordinate by coordinate, the radii² and tan² growing
+    /// (shrinking), the axes kept.
+    fn approach(&self, sign: i8) -> [i8; N] {
+        let mut d = [0i8; N];
+        for q in 0..2 {
+            let (b, o) = (q * PER, (1 - q) * PER);
+            for k in 0..3 {
+                d[b + k] = match self.x[o + k].cmp(&self.x[b + k]) {
+                    std::cmp::Ordering::Greater => sign,
+                    std::cmp::Ordering::Less => -sign,
+                    std::cmp::Ordering::Equal => 0,
+                };
+            }
+            d[b + 6] = sign;
+        }
+        d
+    }
+
     /// Exact degenerate configurations next to the input, built by moving
     /// one quadric: its axis parallel to the other's (the same length),
     /// then its point onto the other's axis (coaxial); its axis moved
@@ -902,6 +922,16 @@ pub(crate) fn referee(a: &Natural, b: &Natural, target: &Counts) -> Referee {
         size *= 16.0;
     }
     trials.extend(random);
+    // the two quadrics pushed together (points toward each other, radii
+    // and angles growing) or apart: where a gap closes or opens
+    for (sign, extra) in [(1i8, 0), (-1i8, 1)] {
+        let dir = scene.approach(sign);
+        let mut size = start.max(1.0 / 1024.0) * 2f64.powi(extra);
+        while size <= HI_MAX {
+            trials.push((size, dir));
+            size *= 4.0;
+        }
+    }
     // nothing proved: the input may sit on the boundary, where any small
     // move may change the answer — the small fixed directions first
     if lo_j.is_none() {
