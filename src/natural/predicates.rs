@@ -1678,7 +1678,7 @@ pub fn classify_with(
             super::classify::add_reference_deciders(&mut r)?;
         }
         if options.referee && r.class != Class::Undecided {
-            r.referee = Some(super::referee::referee(a, b, &r.counts));
+            r.referee = Some(super::referee::referee_within(a, b, &r.counts));
         }
         Ok(r)
     })

@@ -1128,6 +1128,22 @@ pub(crate) fn distance(a: &Natural, b: &Natural, c: &Natural, d: &Natural) -> Op
     s.distance_to(&t.x)
 }
 
+/// [`referee`] under the running budget, which it may exhaust without
+/// taking the decided answer with it: the referee then proves nothing and
+/// names the budget (nested runs keep the outer deadline and limits).
+pub(crate) fn referee_within(a: &Natural, b: &Natural, target: &Counts) -> Referee {
+    crate::budget::run(&crate::budget::Budget::unlimited(), || {
+        referee(a, b, target)
+    })
+    .unwrap_or_else(|_| Referee {
+        lo: Q::zero(),
+        hi: None,
+        nearby: None,
+        lo_reason: Some("the compute budget ran out during the referee: nothing proved"),
+        hi_reason: Some("the compute budget ran out during the referee"),
+    })
+}
+
 /// `x > 0` as a decimal of three significant digits rounded down
 /// (`up = false`) or up: a printed bound stays a bound.
 pub(crate) fn decimal_bound(x: &Q, up: bool) -> String {
@@ -1243,6 +1259,24 @@ mod tests {
         if f.hi().is_some() {
             check_witness(a, b, &c, &f);
         }
+    }
+
+    #[test]
+    fn a_referee_out_of_budget_keeps_the_answer() {
+        let (a, b) = (
+            nat("sphere center=0,0,0 radius2=1"),
+            nat("sphere center=3/2,0,0 radius2=1"),
+        );
+        let target = Counts::new(Class::Conics, 1, 0, 0);
+        let zero =
+            crate::budget::Budget::default().with_time_limit(Some(std::time::Duration::ZERO));
+        // the outer run (the classification's) survives the referee's exhaustion
+        let f = crate::budget::run(&zero, || referee_within(&a, &b, &target)).unwrap();
+        assert!(f.lo().is_zero() && f.hi().is_none());
+        assert!(f.hi_reason().unwrap().contains("budget"));
+        // with time, the same call referees
+        let f = referee_within(&a, &b, &target);
+        assert!(f.hi().is_some());
     }
 
     #[test]
