@@ -361,21 +361,13 @@ impl Scene {
     /// True when the predicates decide `target` on every input within
     /// relative distance `eps`.
     fn proves(&self, eps: f64, target: &Counts) -> bool {
-        let [x, y] = self.balls(eps);
-        matches!(
-            program(&x, &y),
-            Some((Outcome::Counts(c, ..) | Outcome::Planar(c, ..), _)) if &c == target
-        )
+        decides(self.balls(eps), target)
     }
 
     /// [`Scene::proves`] by the mean-value form ([`Mv`]): slower (15
     /// balls a quantity), much tighter where the predicates cancel.
     fn proves_mv(&self, eps: f64, target: &Counts) -> bool {
-        let [x, y] = self.mv_inputs(eps);
-        matches!(
-            program(&x, &y),
-            Some((Outcome::Counts(c, ..) | Outcome::Planar(c, ..), _)) if &c == target
-        )
+        decides(self.mv_inputs(eps), target)
     }
 
     /// The mean-value inputs of the box of relative size `eps` (sets
@@ -419,7 +411,8 @@ impl Scene {
                 matches!(definite4(&member(&a, &b, &n, &d)), Some((true, _)))
             })
             .collect();
-        // the longest run (cyclically: θ and θ + π give opposite members)
+        // the longest run of definite members (θ and θ + π give opposite
+        // members, so the half-turn sampled covers every member up to sign)
         let mut best: Option<(usize, usize)> = None;
         let mut k = 0;
         while k < K {
@@ -603,6 +596,15 @@ impl Scene {
 
 /// `1 + 2^-48`: radii rounded up (see `number::filter`).
 const INFL: f64 = 1.0 + 1.0 / 281_474_976_710_656.0;
+
+/// True when the predicates, run in a tier of enclosures, certify every
+/// sign on their path and end at `target`.
+fn decides<R: SignRing>([x, y]: [QIn<R>; 2], target: &Counts) -> bool {
+    matches!(
+        program(&x, &y),
+        Some((Outcome::Counts(c, ..) | Outcome::Planar(c, ..), _)) if &c == target
+    )
+}
 
 /// The pair's inputs in a ring, number `i` given by `v(i)`.
 fn qin_pair<R: SignRing>(kinds: &[Kind; 2], v: impl Fn(usize) -> R) -> [QIn<R>; 2] {
@@ -1144,29 +1146,6 @@ pub(crate) fn referee_within(a: &Natural, b: &Natural, target: &Counts) -> Refer
     })
 }
 
-/// `x > 0` as a decimal of three significant digits rounded down
-/// (`up = false`) or up: a printed bound stays a bound.
-pub(crate) fn decimal_bound(x: &Q, up: bool) -> String {
-    if !x.is_positive() {
-        return "0".into();
-    }
-    let e10 = (x.to_f64().unwrap_or(1.0).log10().floor()) as i32;
-    let sh = 2 - e10;
-    let ten =
-        |k: i32| Q::from_integer(num_traits::pow(BigInt::from(10), k.unsigned_abs() as usize));
-    let scaled = if sh >= 0 { x * ten(sh) } else { x / ten(sh) };
-    let n = if up { scaled.ceil() } else { scaled.floor() }.to_integer();
-    let s = n.to_string();
-    let exp = -sh + s.len() as i32 - 1;
-    let mant = if s.len() > 1 {
-        format!("{}.{}", &s[..1], s[1..].trim_end_matches('0'))
-    } else {
-        s.clone()
-    };
-    let mant = mant.trim_end_matches('.').to_string();
-    format!("{mant}e{exp}")
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1277,17 +1256,6 @@ mod tests {
         // with time, the same call referees
         let f = referee_within(&a, &b, &target);
         assert!(f.hi().is_some());
-    }
-
-    #[test]
-    fn printed_bounds_round_the_right_way() {
-        let third = Q::new(1.into(), 3.into());
-        assert_eq!(decimal_bound(&third, false), "3.33e-1");
-        assert_eq!(decimal_bound(&third, true), "3.34e-1");
-        let x = Q::new(1.into(), BigInt::from(1u64 << 40));
-        assert_eq!(decimal_bound(&x, false), "9.09e-13");
-        assert_eq!(decimal_bound(&Q::from_integer(1.into()), true), "1e0");
-        assert_eq!(decimal_bound(&Q::zero(), true), "0");
     }
 
     #[test]

@@ -117,6 +117,29 @@ pub fn approx_decimal(x: &Q, digits: usize) -> String {
     approx_decimal_ratio(x.numer(), x.denom(), digits)
 }
 
+/// `x > 0` as a decimal of three significant digits rounded down
+/// (`up = false`) or up: a printed bound stays a bound.
+pub(crate) fn decimal_bound(x: &Q, up: bool) -> String {
+    if !x.is_positive() {
+        return "0".into();
+    }
+    let e10 = (x.to_f64().unwrap_or(1.0).log10().floor()) as i32;
+    let sh = 2 - e10;
+    let ten =
+        |k: i32| Q::from_integer(num_traits::pow(BigInt::from(10), k.unsigned_abs() as usize));
+    let scaled = if sh >= 0 { x * ten(sh) } else { x / ten(sh) };
+    let n = if up { scaled.ceil() } else { scaled.floor() }.to_integer();
+    let s = n.to_string();
+    let exp = -sh + s.len() as i32 - 1;
+    let mant = if s.len() > 1 {
+        format!("{}.{}", &s[..1], s[1..].trim_end_matches('0'))
+    } else {
+        s.clone()
+    };
+    let mant = mant.trim_end_matches('.').to_string();
+    format!("{mant}e{exp}")
+}
+
 /// [`approx_decimal`] of `n/d` (`d > 0`, not necessarily in lowest terms),
 /// in integers only: no reduction of the fraction.
 pub(crate) fn approx_decimal_ratio(n: &BigInt, d: &BigInt, digits: usize) -> String {
@@ -514,6 +537,17 @@ pub fn exact_sqrt_q(x: &Q) -> Option<Q> {
 mod tests {
     use super::*;
     use num_integer::Integer;
+
+    #[test]
+    fn printed_bounds_round_the_right_way() {
+        let third = Q::new(1.into(), 3.into());
+        assert_eq!(decimal_bound(&third, false), "3.33e-1");
+        assert_eq!(decimal_bound(&third, true), "3.34e-1");
+        let x = Q::new(1.into(), BigInt::from(1u64 << 40));
+        assert_eq!(decimal_bound(&x, false), "9.09e-13");
+        assert_eq!(decimal_bound(&Q::from_integer(1.into()), true), "1e0");
+        assert_eq!(decimal_bound(&Q::zero(), true), "0");
+    }
 
     #[test]
     fn approx_rounds_and_carries() {

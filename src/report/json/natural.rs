@@ -3,9 +3,10 @@
 use crate::geom::vec3::V3;
 use crate::natural::Natural;
 use crate::natural::numbers::{EPoint, Exact, normalize_axis_direction, normalize_plane};
-use crate::natural::referee::{Referee, decimal_bound};
+use crate::natural::referee::Referee;
 use crate::natural::result::{Component, NaturalReport, PlanarDeciders, Plane, Route};
 use crate::natural::tangency::Section7;
+use crate::number::decimal_bound;
 use crate::number::fmt_q;
 
 use super::write::{Json, Obj, W, arr, into_string, obj_w, to_value, wobj};

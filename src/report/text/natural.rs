@@ -193,7 +193,7 @@ pub fn natural_human(r: &NaturalReport) -> String {
 
 /// The referee's lines of the human summary.
 fn referee_human(f: &crate::natural::Referee) -> String {
-    use crate::natural::referee::decimal_bound;
+    use crate::number::decimal_bound;
     let mut s = format!(
         "referee   lo {} (proved: every input within this relative size has the same answer)\n",
         decimal_bound(&f.lo, false)
